@@ -1,0 +1,25 @@
+/*
+** compat.h -- the few Lua C API differences between 5.1 (and LuaJIT) and
+** 5.2-5.4 that the binding meets.  One source builds for every version.
+*/
+#ifndef ARCLEN_COMPAT_H
+#define ARCLEN_COMPAT_H
+
+#include "lua.h"
+#include "lauxlib.h"
+
+#if !defined(LUA_VERSION_NUM) || LUA_VERSION_NUM < 502
+#define lua_rawlen(L, i) lua_objlen(L, (i))
+#define luaL_newlibtable(L, l) lua_createtable(L, 0, sizeof(l) / sizeof((l)[0]) - 1)
+#define luaL_newlib(L, l) (luaL_newlibtable(L, l), luaL_setfuncs(L, l, 0))
+/* luaL_setfuncs as in 5.2's lauxlib.c, for nup == 0 only. */
+static inline void luaL_setfuncs(lua_State *L, const luaL_Reg *l, int nup) {
+  (void)nup;
+  for (; l->name != NULL; l++) {
+    lua_pushcfunction(L, l->func);
+    lua_setfield(L, -2, l->name);
+  }
+}
+#endif
+
+#endif

@@ -1,0 +1,41 @@
+/*
+** lua_arclen.h -- what the binding files share: argument checking in the
+** style of lauxlib (errors name the argument), and each area's opener.
+** Internal to the module; C users include arclen.h only.
+*/
+#ifndef LUA_ARCLEN_H
+#define LUA_ARCLEN_H
+
+#include "compat.h"
+#include "arclen.h"
+
+/* A curve argument: a table of 8 (2D) or 12 (3D) numbers, or of 4 points
+** {x, y} / {x, y, z}.  Fills c (room for 12) and returns the dimension;
+** raises "bad argument #arg to 'fn' (...)" on anything else. */
+int arclenL_checkcurve(lua_State *L, int arg, double *c);
+/* A finite number; what names it in the message ("length", "t", ...). */
+double arclenL_checkfinite(lua_State *L, int arg, const char *what);
+double arclenL_optfinite(lua_State *L, int arg, double def, const char *what);
+/* A relative tolerance in [ARCLEN_RTOL_MIN, ARCLEN_RTOL_MAX]. */
+double arclenL_checktol(lua_State *L, int arg, double v);
+
+/* The common options table at arg (absent or nil: defaults):
+** tol, method, t0, t1, steps, info.  Unknown keys are an error. */
+typedef struct arclenL_opts {
+  arclen_opts o;
+  const arclen_method *method;
+  int info;                 /* opts.info == true */
+} arclenL_opts;
+void arclenL_checkopts(lua_State *L, int arg, arclenL_opts *lo);
+
+/* Push an info table {evals=, pieces=, depth=, err=, branch=, calls=}. */
+void arclenL_pushinfo(lua_State *L, const arclen_info *info);
+/* Raise a Lua error for a C error code, naming the function's argument. */
+int arclenL_argcode(lua_State *L, int arg, int code);
+
+/* Each area registers its functions into the module table at the top of
+** the stack (lua_arclen.c calls them from luaopen_arclen). */
+void arclen_open_core(lua_State *L);
+/* new areas: one line each, above this line */
+
+#endif
