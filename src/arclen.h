@@ -103,6 +103,16 @@ int arclen_time_gauss(const double *c, int dim, double s,
 double arclen_length_gl(const double *c, int dim, int n);
 
 /* ---- carlson.c: Carlson's symmetric elliptic integrals -------------- */
+/* Carlson (1995) duplication.  Arguments >= 0 unless stated; NaN on a
+** domain error (negative argument, a non-finite one, or an infinite
+** integral: two zeros in R_F, x = y = 0 or z = 0 in R_D, y = 0 in R_C,
+** p = 0 or two zeros in R_J).  y < 0 in R_C and p < 0 in R_J give the
+** Cauchy principal values. */
+double arclen_rf(double x, double y, double z);
+double arclen_rd(double x, double y, double z);
+double arclen_rc(double x, double y);
+double arclen_rj(double x, double y, double z, double p);
+double arclen_rg(double x, double y, double z);
 
 /* ---- roots.c: real-coefficient polynomial roots --------------------- */
 
@@ -111,7 +121,111 @@ double arclen_length_gl(const double *c, int dim, int n);
 /* ---- gravesen.c, metapost.c, baseline.c: Henkel's other rows -------- */
 
 /* ---- lenfit.c: length-versus-t fits --------------------------------- */
+/* legendre.c: the n-point Gauss-Legendre rule on [0, 1], computed by
+** Newton's method on P_n (no tables): nodes x ascending, weights w
+** summing to 1.  n in [1, ARCLEN_GL_MAXN]; returns 0 or ARCLEN_EDOMAIN. */
+#define ARCLEN_GL_MAXN 64
+int arclen_gauss_legendre(int n, double *x, double *w);
+
+/* A fit of s(t)/s(1) by cubic functional Bezier spans: span i covers
+** [t0, t1] with x-controls t0, t0+h/3, t0+2h/3, t1 (so no root finding
+** in t) and ordinates y[0..3] (Walter & Fournier 1996, Eqns 3-5). */
+enum { ARCLEN_FIT_HERMITE = 0, ARCLEN_FIT_PAPER = 1 };
+#define ARCLEN_FIT_MAXSPANS 512    /* cap on adaptive refinement */
+#define ARCLEN_FIT_TOL_MIN 1e-10   /* below this, quadrature noise wins */
+typedef struct arclen_fit_opts {
+  int method;      /* ARCLEN_FIT_HERMITE (default) or ARCLEN_FIT_PAPER */
+  int n;           /* Gauss-Legendre points: per node (paper, default 10)
+                      or per piece (hermite, default 3); 0 = default */
+  double tol;      /* hermite: max error in s/s(1); 0 = fixed knots */
+} arclen_fit_opts;
+typedef struct arclen_fit_span {
+  double t0, t1;   /* parameter range */
+  double y[4];     /* Bezier ordinates of s/s(1) */
+} arclen_fit_span;
+typedef struct arclen_fit {
+  int dim, method, n;
+  int ncrit;             /* speed's critical points in (0,1) */
+  double crit[3];        /* ("inflexion points" of s(t) in the paper) */
+  double total;          /* s(1) used for normalising, curve units */
+  int scale_exp;         /* curve units = 2^scale_exp internal units */
+  double tol;            /* requested tolerance (0: fixed knots) */
+  long evals;            /* speed evaluations spent building */
+  double c[12];          /* the curve, as given */
+  double cs[12];         /* (c - P0) / 2^scale_exp: magnitudes <= 1 */
+  double hod[9];         /* hodograph of cs: a2, a1, a0 (3 each) */
+  int nspans;
+  arclen_fit_span *span; /* nspans spans, ascending in t */
+} arclen_fit;
+void arclen_fit_opts_init(arclen_fit_opts *o);
+/* Build the fit of c into f, with room for cap spans at spans (f->span
+** points there).  Returns 0, ARCLEN_EINVAL, ARCLEN_EDIM, ARCLEN_EDOMAIN
+** (bad n or method), ARCLEN_ETOL, or ARCLEN_ENOCONV (tol needs > cap). */
+int arclen_fit_build(const double *c, int dim, const arclen_fit_opts *o,
+                     arclen_fit *f, arclen_fit_span *spans, int cap);
+/* The speed of cs at t (times 2^scale_exp: curve units). */
+double arclen_fit_speed(const arclen_fit *f, double t);
+/* lenfit_eval.c: O(1) evaluation.  t is clamped to [0, 1]; s to
+** [0, total]. */
+double arclen_fit_value(const arclen_fit *f, double t);   /* ~ s(t)/s(1) */
+double arclen_fit_slope(const arclen_fit *f, double t);   /* d/dt of it */
+double arclen_fit_length(const arclen_fit *f, double t);  /* ~ s(t) */
+double arclen_fit_time(const arclen_fit *f, double s);    /* inverse */
+/* 1 when every span is non-decreasing (exact Bernstein test). */
+int arclen_fit_monotone(const arclen_fit *f);
+int arclen_fit_span_monotone(const arclen_fit_span *sp);
+/* lenfit_error.c: the paper's error measurement (Eqn 9).
+** Truth: Numerical Recipes' qsimp at fractional accuracy 1e-4 (as the
+** paper), or the accurate length (arclen_length_gauss, rtol 1e-13).
+** Grid: npts = 0 is the paper's t = 0, 0.05, ..., 0.95 (its loop
+** "t += 0.05" in double); npts > 0 is t = k/npts, k = 0..npts.
+** inverse = 1 measures |s_true(t_fit(u))/s(1) - u| at the grid's u
+** instead.  Fills max, mean and the grid point of the max. */
+enum { ARCLEN_TRUTH_SIMPSON = 0, ARCLEN_TRUTH_EXACT = 1 };
+double arclen_length_qsimp(const arclen_fit *f, double t0, double t1,
+                           double eps, long *evals);
+int arclen_fit_error(const arclen_fit *f, int truth, int inverse, int npts,
+                     double *max, double *mean, double *argmax);
 
 /* ---- conic.c: cubic approximation of conics ------------------------- */
+/* Floater (1996).  A conic is the rational quadratic Bezier curve with
+** control points p[6] = x0 y0 x1 y1 x2 y2 and weight w > 0 (eq. 1):
+** ellipse w < 1, parabola w = 1, hyperbola w > 1.  Level r: the 2^r pieces
+** of the subdivision scheme (eq. 4), each replaced by one cubic. */
+enum {
+  ARCLEN_CONIC_QUADRATIC,   /* Prop 3: lambda = 2/3 */
+  ARCLEN_CONIC_G2,          /* Prop 4: G2 Hermite */
+  ARCLEN_CONIC_MIDPOINT,    /* Prop 5: mid-point Hermite (the default) */
+  ARCLEN_CONIC_C2,          /* Prop 8: C2 spline */
+  ARCLEN_CONIC_G4,          /* Props 9-10: G4 spline */
+  ARCLEN_CONIC_NSCHEMES
+};
+#define ARCLEN_CONIC_MAXLEVEL 16   /* 65536 pieces */
+int arclen_conic_scheme(const char *name);          /* -1 when unknown */
+const char *arclen_conic_scheme_name(int scheme);   /* NULL when out of range */
+double arclen_conic_lambda(int scheme, double w);
+/* Prop 2's A, B for w and delta = lambda - 2/3 (cancellation-free near 1). */
+void arclen_conic_AB(double w, double delta, double *A, double *B);
+void arclen_conic_scheme_AB(int scheme, double w, double *A, double *B);
+double arclen_conic_gnorm(double A, double B);       /* Prop 13 */
+double arclen_conic_weight(double w, int level);     /* w_r of eq. (4) */
+/* 1 when p0 = p1, p1 = p2 or the three are collinear (to rounding). */
+int arclen_conic_degenerate(const double p[6]);
+/* ARCLEN_OK, EINVAL (non-finite point) or EDOMAIN (bad w, degenerate). */
+int arclen_conic_check(const double p[6], double w);
+/* Theorem 1 / eq. (18) at a level: +inf when lambda(w_r) > 1 (the theorem
+** does not apply).  Return 0, EINVAL, EDOMAIN, ERANGE (level outside
+** [0, MAXLEVEL]) or EINVAL (unknown scheme). */
+int arclen_conic_bound(const double p[6], double w, int scheme, int level,
+                       double *bound);
+/* Smallest level whose bound is <= tol (absolute distance); ENOCONV when
+** even MAXLEVEL's is not (then *level = MAXLEVEL). */
+int arclen_conic_level(const double p[6], double w, int scheme, double tol,
+                       int *level, double *bound);
+/* The 2^level cubics of eq. (6) into out[8 << level]; *bound (may be NULL)
+** as arclen_conic_bound.  The first and last points are p0, p2 exactly. */
+int arclen_conic_cubics(const double p[6], double w, int scheme, int level,
+                        double *out, double *bound);
+void arclen_conic_point(const double p[6], double w, double t, double pt[2]);
 
 #endif

@@ -1,0 +1,131 @@
+/*
+** branch.c -- where the speed |z'(t)| stops being analytic.
+**
+** The speed is sqrt(Q(t)), Q = |z'|^2 a real polynomial of degree <= 4 that
+** is >= 0 on the real line.  Its analytic continuation has branch points at
+** the simple complex zeros of Q; they set the Bernstein ellipse in which
+** Gauss-Legendre converges, so the quadrature reads its error bound off them.
+*/
+#include <complex.h>
+#include <math.h>
+#include <string.h>
+
+#include "cubic.h"
+
+/* Roots of a real double root count as no branch point: |t - r| continues
+** analytically as +-(t - r).  A computed imaginary part below this relative
+** size is rounding noise of the root formula. */
+#define REAL_ROOT_RTOL 1e-14
+
+#define TWO_PI 6.283185307179586476925286766559
+
+static void add_root(arclen_branch *b, double complex z, int mult) {
+  double re = creal(z), im = fabs(cimag(z));
+  if (b->n >= 4 || !isfinite(re) || !isfinite(im)) return;
+  if (im <= REAL_ROOT_RTOL * (1 + fabs(re))) { im = 0; mult = 2; }
+  b->re[b->n] = re;
+  b->im[b->n] = im;
+  b->mult[b->n] = mult;
+  b->n++;
+}
+
+/* 2D: z' = A2 t^2 + A1 t + A0 as a complex quadratic with roots s1, s2, so
+** Q = |A2|^2 |t - s1|^2 |t - s2|^2 exactly and the branch points are s_k and
+** their conjugates.  The root formula avoids cancellation: d is the square
+** root of the discriminant on the side of A1, q = -(A1 + d)/2, roots q/A2
+** and A0/q (see notes/elliptic.md). */
+static void branch2(const arclen_hodo *h, arclen_branch *b) {
+  double complex A2 = h->a2[0] + I * h->a2[1];
+  double complex A1 = h->a1[0] + I * h->a1[1];
+  double complex A0 = h->a0[0] + I * h->a0[1];
+  if (cabs(A2) > 0) {
+    double complex d = csqrt(A1 * A1 - 4 * A2 * A0);
+    double complex q;
+    if (creal(conj(A1) * d) < 0) d = -d;
+    q = -(A1 + d) / 2;
+    b->lead = cabs(A2);
+    if (cabs(q) == 0) {                  /* A1 = A0 = 0: double root at 0 */
+      add_root(b, 0, 2);
+      return;
+    }
+    add_root(b, q / A2, 1);
+    add_root(b, A0 / q, 1);
+    if (b->n == 2 && b->re[0] == b->re[1] && b->im[0] == b->im[1]) {
+      b->n = 1;                          /* a double zero of z': no branch */
+      b->mult[0] = 2;
+    }
+  } else if (cabs(A1) > 0) {
+    b->lead = cabs(A1);
+    add_root(b, -A0 / A1, 1);
+  } else {
+    b->lead = cabs(A0);
+  }
+}
+
+/* Aberth-Ehrlich iteration for the roots of a monic real polynomial of
+** degree n <= 4 (coefficients c[0..n-1] of t^0..t^(n-1)).  Converges
+** cubically to simple roots, linearly to multiple ones; capped. */
+static void aberth(const double *c, int n, double complex *z) {
+  double radius = 0;
+  int i, j, it;
+  for (i = 0; i < n; i++) radius = fmax(radius, pow(fabs(c[i]), 1.0 / (n - i)));
+  radius = 2 * radius + 1e-300;   /* Fujiwara's bound: every root lies inside */
+  for (i = 0; i < n; i++)          /* off-axis start, avoiding symmetry */
+    z[i] = radius * cexp(I * (TWO_PI * i / n + 0.4));
+  for (it = 0; it < 200; it++) {
+    double change = 0;
+    for (i = 0; i < n; i++) {
+      double complex p = 1, dp = 0, s = 0, w;
+      for (j = n - 1; j >= 0; j--) {     /* Horner for p and p' */
+        dp = dp * z[i] + p;
+        p = p * z[i] + c[j];
+      }
+      if (p == 0) continue;
+      for (j = 0; j < n; j++)
+        if (j != i) s += 1 / (z[i] - z[j]);
+      w = (p / dp) / (1 - (p / dp) * s);
+      if (!isfinite(creal(w)) || !isfinite(cimag(w))) continue;
+      z[i] -= w;
+      change = fmax(change, cabs(w) / (cabs(z[i]) + 1e-300));
+    }
+    if (change < 1e-16) break;
+  }
+}
+
+/* 3D: Q = |a2|^2 t^4 + 2 a2.a1 t^3 + (|a1|^2 + 2 a2.a0) t^2 + 2 a1.a0 t + |a0|^2
+** has no complex factorisation; its roots come from Aberth's iteration
+** (cusps give near-double roots, reported as close conjugate pairs: this
+** only makes the quadrature more careful). */
+static void branch3(const arclen_hodo *h, arclen_branch *b) {
+  double q[5] = {0, 0, 0, 0, 0}, m[4];
+  double complex z[4];
+  int k, deg = 4;
+  for (k = 0; k < 3; k++) {
+    q[4] += h->a2[k] * h->a2[k];
+    q[3] += 2 * h->a2[k] * h->a1[k];
+    q[2] += h->a1[k] * h->a1[k] + 2 * h->a2[k] * h->a0[k];
+    q[1] += 2 * h->a1[k] * h->a0[k];
+    q[0] += h->a0[k] * h->a0[k];
+  }
+  while (deg > 0 && q[deg] == 0) deg--;
+  b->lead = sqrt(q[deg]);
+  if (deg == 0) return;
+  for (k = 0; k < deg; k++) m[k] = q[k] / q[deg];
+  aberth(m, deg, z);
+  for (k = 0; k < deg; k++) {
+    int j, dup = 0;
+    if (cimag(z[k]) < 0) continue;       /* keep one of each conjugate pair */
+    for (j = 0; j < b->n; j++)
+      if (fabs(b->re[j] - creal(z[k])) <= REAL_ROOT_RTOL * (1 + fabs(b->re[j])) &&
+          fabs(b->im[j] - cimag(z[k])) <= REAL_ROOT_RTOL * (1 + fabs(b->re[j])))
+        dup = 1;
+    if (!dup) add_root(b, z[k], 1);
+  }
+}
+
+void arclen_branch_points(const arclen_hodo *h, arclen_branch *b) {
+  memset(b, 0, sizeof *b);
+  if (h->zero) return;
+  if (h->dim == 2) branch2(h, b);
+  else branch3(h, b);
+}

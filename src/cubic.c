@@ -1,0 +1,232 @@
+/*
+** cubic.c -- the geometry of one cubic Bezier curve: points, derivative,
+** de Casteljau splitting, the hodograph and the speed's critical points.
+*/
+#include <math.h>
+#include <string.h>
+
+#include "arclen.h"
+#include "cubic.h"
+
+int arclen_check_curve(const double *c, int dim) {
+  int i;
+  if (dim != 2 && dim != 3) return ARCLEN_EDIM;
+  for (i = 0; i < 4 * dim; i++)
+    if (!isfinite(c[i])) return ARCLEN_EINVAL;
+  return ARCLEN_OK;
+}
+
+/* Bernstein form: stable for t in [0, 1], exact at both ends. */
+void arclen_point(const double *c, int dim, double t, double *p) {
+  double s = 1 - t;
+  double b0 = s * s * s, b1 = 3 * t * s * s, b2 = 3 * t * t * s, b3 = t * t * t;
+  int k;
+  for (k = 0; k < dim; k++)
+    p[k] = b0 * c[k] + b1 * c[dim + k] + b2 * c[2 * dim + k] + b3 * c[3 * dim + k];
+}
+
+/* z'(t) = 3 [(1-t)^2 (P1-P0) + 2t(1-t) (P2-P1) + t^2 (P3-P2)] */
+void arclen_derivative(const double *c, int dim, double t, double *d) {
+  double s = 1 - t;
+  int k;
+  for (k = 0; k < dim; k++) {
+    double d0 = c[dim + k] - c[k];
+    double d1 = c[2 * dim + k] - c[dim + k];
+    double d2 = c[3 * dim + k] - c[2 * dim + k];
+    d[k] = 3 * (s * s * d0 + 2 * t * s * d1 + t * t * d2);
+  }
+}
+
+/* The blossom (polar form) b(u1, u2, u3) by three de Casteljau steps with
+** different parameters; b(t,t,t) is the point at t. */
+static void blossom(const double *c, int dim, double u1, double u2, double u3,
+                    double *out) {
+  int k;
+  for (k = 0; k < dim; k++) {
+    double p0 = c[k], p1 = c[dim + k], p2 = c[2 * dim + k], p3 = c[3 * dim + k];
+    double q0 = p0 + u1 * (p1 - p0), q1 = p1 + u1 * (p2 - p1), q2 = p2 + u1 * (p3 - p2);
+    double r0 = q0 + u2 * (q1 - q0), r1 = q1 + u2 * (q2 - q1);
+    out[k] = r0 + u3 * (r1 - r0);
+  }
+}
+
+/* The control points of the curve restricted to [t0, t1], reparametrised
+** to [0, 1]: b(t0,t0,t0), b(t0,t0,t1), b(t0,t1,t1), b(t1,t1,t1). */
+void arclen_subcurve(const double *c, int dim, double t0, double t1,
+                     double *out) {
+  double tmp[12];
+  blossom(c, dim, t0, t0, t0, tmp);
+  blossom(c, dim, t0, t0, t1, tmp + dim);
+  blossom(c, dim, t0, t1, t1, tmp + 2 * dim);
+  blossom(c, dim, t1, t1, t1, tmp + 3 * dim);
+  if (t0 == 0) memcpy(tmp, c, dim * sizeof(double));   /* keep ends exact */
+  if (t1 == 1) memcpy(tmp + 3 * dim, c + 3 * dim, dim * sizeof(double));
+  memcpy(out, tmp, 4 * dim * sizeof(double));
+}
+
+void arclen_split(const double *c, int dim, double t, double *left,
+                  double *right) {
+  double l[12], r[12];
+  int k;
+  for (k = 0; k < dim; k++) {
+    double p0 = c[k], p1 = c[dim + k], p2 = c[2 * dim + k], p3 = c[3 * dim + k];
+    double q0 = p0 + t * (p1 - p0), q1 = p1 + t * (p2 - p1), q2 = p2 + t * (p3 - p2);
+    double r0 = q0 + t * (q1 - q0), r1 = q1 + t * (q2 - q1);
+    double s = r0 + t * (r1 - r0);
+    l[k] = p0; l[dim + k] = q0; l[2 * dim + k] = r0; l[3 * dim + k] = s;
+    r[k] = s; r[dim + k] = r1; r[2 * dim + k] = q2; r[3 * dim + k] = p3;
+  }
+  if (left) memcpy(left, l, 4 * dim * sizeof(double));
+  if (right) memcpy(right, r, 4 * dim * sizeof(double));
+}
+
+/* Power form of z'(t) from the control-point differences (which are exact
+** or correctly rounded wherever the curve sits): Henkel Eqn 4 differentiated,
+** A0 = 3(P1-P0), A1 = 6((P2-P1)-(P1-P0)), A2 = 3((P3-P2)-2(P2-P1)+(P1-P0)). */
+void arclen_hodograph(const double *c, int dim, double a2[3], double a1[3],
+                      double a0[3]) {
+  int k;
+  for (k = 0; k < dim; k++) {
+    double d0 = c[dim + k] - c[k];
+    double d1 = c[2 * dim + k] - c[dim + k];
+    double d2 = c[3 * dim + k] - c[2 * dim + k];
+    a0[k] = 3 * d0;
+    a1[k] = 6 * (d1 - d0);
+    a2[k] = 3 * ((d2 - d1) - (d1 - d0));
+  }
+}
+
+void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h) {
+  double big = 0;
+  int k, e;
+  memset(h, 0, sizeof *h);
+  h->dim = dim;
+  arclen_hodograph(c, dim, h->a2, h->a1, h->a0);
+  for (k = 0; k < dim; k++) {
+    big = fmax(big, fabs(h->a2[k]));
+    big = fmax(big, fabs(h->a1[k]));
+    big = fmax(big, fabs(h->a0[k]));
+  }
+  if (big == 0 || !isfinite(big)) {
+    h->scale = big == 0 ? 1 : big;
+    h->zero = big == 0;
+    return;
+  }
+  /* Scale by a power of two so that products cannot over/underflow and
+  ** every scaled value is exact (frexp gives big = m 2^e, 0.5 <= m < 1). */
+  frexp(big, &e);
+  h->scale = ldexp(1.0, e);
+  for (k = 0; k < dim; k++) {
+    h->a2[k] = ldexp(h->a2[k], -e);
+    h->a1[k] = ldexp(h->a1[k], -e);
+    h->a0[k] = ldexp(h->a0[k], -e);
+  }
+}
+
+/* Speed in scaled units, |a2 t^2 + a1 t + a0| by Horner per coordinate. */
+double arclen_hodo_speed(const arclen_hodo *h, double t) {
+  double s = 0;
+  int k;
+  for (k = 0; k < h->dim; k++) {
+    double v = (h->a2[k] * t + h->a1[k]) * t + h->a0[k];
+    s += v * v;
+  }
+  return sqrt(s);
+}
+
+/* Chord |z(b) - z(a)| in scaled units, from the antiderivative of the
+** hodograph (z(t) - P0 = a2 t^3/3 + a1 t^2/2 + a0 t). */
+double arclen_hodo_chord(const arclen_hodo *h, double a, double b) {
+  double s = 0;
+  int k;
+  for (k = 0; k < h->dim; k++) {
+    double za = ((h->a2[k] / 3 * a + h->a1[k] / 2) * a + h->a0[k]) * a;
+    double zb = ((h->a2[k] / 3 * b + h->a1[k] / 2) * b + h->a0[k]) * b;
+    s += (zb - za) * (zb - za);
+  }
+  return sqrt(s);
+}
+
+/* Value of the cubic p[3] t^3 + p[2] t^2 + p[1] t + p[0]. */
+static double cubic_at(const double p[4], double t) {
+  return ((p[3] * t + p[2]) * t + p[1]) * t + p[0];
+}
+
+/* A root of the cubic in [lo, hi], where it changes sign (f(lo) f(hi) <= 0):
+** bisection, which halves the bracket every step and so ends within 1100
+** steps in double whatever the input (here capped at 200: [0, 1] is
+** exhausted after ~1075 halvings only for subnormal brackets, and 200 steps
+** already shrink it below 2^-200). */
+static double bracketed_root(const double p[4], double lo, double hi) {
+  double flo = cubic_at(p, lo);
+  int i;
+  for (i = 0; i < 200; i++) {
+    double mid = lo + (hi - lo) / 2;
+    double fm;
+    if (mid <= lo || mid >= hi) break;
+    fm = cubic_at(p, mid);
+    if (fm == 0) return mid;
+    if ((fm < 0) == (flo < 0)) { lo = mid; flo = fm; }
+    else hi = mid;
+  }
+  return lo + (hi - lo) / 2;
+}
+
+/* Real roots in (0, 1) of p, ascending.  The interval is cut at the roots
+** of p' (where p is monotone between them) and each monotone piece with a
+** sign change is bisected: no root is lost to a bad initial guess. */
+int arclen_cubic_roots01(const double p[4], double roots[3]) {
+  double cut[4], dq[3];
+  int ncut = 0, n = 0, i;
+  cut[ncut++] = 0;
+  /* p'(t) = 3 p3 t^2 + 2 p2 t + p1 */
+  dq[2] = 3 * p[3]; dq[1] = 2 * p[2]; dq[0] = p[1];
+  if (dq[2] != 0) {
+    double disc = dq[1] * dq[1] - 4 * dq[2] * dq[0];
+    if (disc > 0) {
+      double q = -(dq[1] + copysign(sqrt(disc), dq[1])) / 2;
+      double r1 = q / dq[2], r2 = q != 0 ? dq[0] / q : r1;
+      if (r1 > r2) { double tmp = r1; r1 = r2; r2 = tmp; }
+      if (r1 > 0 && r1 < 1) cut[ncut++] = r1;
+      if (r2 > 0 && r2 < 1 && r2 != r1) cut[ncut++] = r2;
+    }
+  } else if (dq[1] != 0) {
+    double r = -dq[0] / dq[1];
+    if (r > 0 && r < 1) cut[ncut++] = r;
+  }
+  cut[ncut++] = 1;
+  for (i = 0; i + 1 < ncut; i++) {
+    double lo = cut[i], hi = cut[i + 1];
+    double flo = cubic_at(p, lo), fhi = cubic_at(p, hi);
+    double r;
+    if (flo == 0 || fhi == 0) {       /* a root exactly on a cut */
+      r = flo == 0 ? lo : hi;
+    } else if ((flo < 0) != (fhi < 0)) {
+      r = bracketed_root(p, lo, hi);
+    } else continue;
+    if (r > 0 && r < 1 && (n == 0 || r > roots[n - 1])) roots[n++] = r;
+  }
+  return n;
+}
+
+/* The speed's critical points: real roots in (0, 1) of
+** Q'.Q'' = 2|A2|^2 t^3 + 3 (A2.A1) t^2 + (|A1|^2 + 2 A2.A0) t + A1.A0
+** (Walter & Fournier Eqn 8's numerator; computed on the scaled hodograph). */
+int arclen_critical_points(const double *c, int dim, double roots[3]) {
+  arclen_hodo h;
+  arclen_hodo_scaled(c, dim, &h);
+  if (h.zero || !isfinite(h.scale)) return 0;
+  return arclen_hodo_critical(&h, roots);
+}
+
+int arclen_hodo_critical(const arclen_hodo *h, double roots[3]) {
+  double p[4] = {0, 0, 0, 0};
+  int k;
+  for (k = 0; k < h->dim; k++) {
+    p[3] += 2 * h->a2[k] * h->a2[k];
+    p[2] += 3 * h->a2[k] * h->a1[k];
+    p[1] += h->a1[k] * h->a1[k] + 2 * h->a2[k] * h->a0[k];
+    p[0] += h->a1[k] * h->a0[k];
+  }
+  return arclen_cubic_roots01(p, roots);
+}

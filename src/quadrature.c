@@ -1,0 +1,336 @@
+/*
+** quadrature.c -- the default length method ("gauss"): Gauss-Legendre on
+** pieces whose order is chosen from an a priori error bound.
+**
+** The speed f = sqrt(Q) is analytic inside the Bernstein ellipse E_rho of a
+** piece that reaches up to the nearest branch point (branch.c).  For such f,
+** |f| <= M on E_rho, the n-point rule errs by at most
+**     (64/15) M rho^(-2n) / (rho^2 - 1)      on [-1, 1]
+** (Trefethen, "Approximation Theory and Approximation Practice", Thm 19.3).
+** The bound cannot be fooled by two rules agreeing by accident: it is read
+** off the geometry.  [t0, t1] is first cut at the speed's critical points
+** (where near-cusps sit), then pieces are bisected while no order up to
+** NMAX meets their share of the tolerance.
+*/
+#include <math.h>
+#include <string.h>
+
+#include "arclen.h"
+#include "cubic.h"
+#include "gauss_tables.h"
+
+#define NMAX 32          /* highest order used before bisecting instead */
+#define MAXDEPTH 60      /* bisection levels below a critical piece */
+#define MAXSTACK (4 + 2 * MAXDEPTH)  /* pending pieces: depth-first search */
+#define RHO_CAP 64.0     /* a larger ellipse only inflates M */
+
+/* The rule with n points, or the smallest one with more. */
+static const arclen_gauss_rule *rule_at_least(int n) {
+  const arclen_gauss_rule *r = arclen_gauss_rules;
+  while (r[1].n != 0 && r->n < n) r++;
+  return r;
+}
+
+/* hh * sum w_i f(c + hh x_i): the rule on [c - hh, c + hh]. */
+static double apply_rule(const arclen_hodo *h, const arclen_gauss_rule *r,
+                         double c, double hh) {
+  double s = 0;
+  int i = 0;
+  if (r->n % 2) {
+    s = r->w[0] * arclen_hodo_speed(h, c);
+    i = 1;
+  }
+  for (; i < r->half; i++)
+    s += r->w[i] * (arclen_hodo_speed(h, c - hh * r->x[i]) +
+                    arclen_hodo_speed(h, c + hh * r->x[i]));
+  return hh * s;
+}
+
+/* rho of the Bernstein ellipse with foci c -+ hh through the point z:
+** the semi-axis sum a + b = rho, with a = (|z - f1| + |z - f2|) / 2. */
+static double ellipse_rho(double c, double hh, double re, double im) {
+  double u = (re - c) / hh, v = im / hh;
+  double a = (hypot(u - 1, v) + hypot(u + 1, v)) / 2;
+  return a + sqrt((a - 1) * (a + 1));
+}
+
+typedef struct piece_bound {
+  double rho;         /* reach of analyticity, capped at RHO_CAP */
+  double logc;        /* log of hh * (64/15) M / (rho^2 - 1) */
+  int inside;         /* a real (double) root strictly inside: must split */
+} piece_bound;
+
+static void bound_piece(const arclen_branch *br, double c, double hh,
+                        piece_bound *pb) {
+  double rho = HUGE_VAL, m, alpha;
+  int k;
+  pb->inside = 0;
+  for (k = 0; k < br->n; k++) {
+    if (br->mult[k] == 2) {          /* no branch point, but a kink inside */
+      if (fabs(br->re[k] - c) < hh * (1 - 1e-12)) pb->inside = 1;
+      continue;
+    }
+    rho = fmin(rho, ellipse_rho(c, hh, br->re[k], br->im[k]));
+  }
+  rho = fmin(rho, RHO_CAP);
+  pb->rho = rho;
+  /* M <= lead * prod (|c - r_k| + alpha), alpha the ellipse's semi-major
+  ** axis in t units: every factor |z - r_k| of |f(z)| is at most that. */
+  alpha = hh * (rho + 1 / rho) / 2;
+  m = br->lead;
+  for (k = 0; k < br->n; k++)
+    m *= hypot(br->re[k] - c, br->im[k]) + alpha;
+  pb->logc = log(hh * (64.0 / 15.0) * m / ((rho - 1) * (rho + 1)));
+}
+
+/* The smallest order whose bound is <= target (log), or NULL past NMAX. */
+static const arclen_gauss_rule *choose_rule(const piece_bound *pb,
+                                            double logtarget, double *logerr) {
+  double n;
+  const arclen_gauss_rule *r;
+  if (pb->rho >= RHO_CAP && pb->logc < logtarget - 2 * 2 * log(RHO_CAP)) {
+    r = rule_at_least(2);
+  } else {
+    n = (pb->logc - logtarget) / (2 * log(pb->rho));
+    if (!(n <= NMAX)) return NULL;          /* also catches NaN */
+    r = rule_at_least(n < 2 ? 2 : (int)ceil(n));
+  }
+  *logerr = pb->logc - 2 * r->n * log(pb->rho);
+  return r;
+}
+
+typedef struct span { double a, b; int depth; } span;
+
+/* The state of one adaptive integration over [t0, t1] (t0 < t1). */
+typedef struct integrator {
+  arclen_hodo h;
+  arclen_branch br;
+  double rtol, lest, width;   /* tolerance, lower bound of L, t1 - t0 */
+  span stack[MAXSTACK];
+  int top;
+  long evals, pieces;
+  int depth;
+  double err;                 /* sum of accepted pieces' bounds */
+} integrator;
+
+static void push(integrator *in, double a, double b, int depth) {
+  if (in->top < MAXSTACK) {
+    in->stack[in->top].a = a;
+    in->stack[in->top].b = b;
+    in->stack[in->top].depth = depth;
+    in->top++;
+  }
+}
+
+/* Set up: cut [t0, t1] at the critical points and bound L from below by
+** the sum of chords between cuts (so every piece's share of the
+** tolerance is safe). */
+static void start(integrator *in, const double *c, int dim, double t0,
+                  double t1, double rtol) {
+  double cuts[5], crit[3];
+  int nc = 0, ncrit, i;
+  memset(in, 0, sizeof *in);
+  arclen_hodo_scaled(c, dim, &in->h);
+  arclen_branch_points(&in->h, &in->br);
+  in->rtol = rtol;
+  in->width = t1 - t0;
+  ncrit = arclen_hodo_critical(&in->h, crit);
+  cuts[nc++] = t0;
+  for (i = 0; i < ncrit; i++)
+    if (crit[i] > t0 && crit[i] < t1) cuts[nc++] = crit[i];
+  cuts[nc++] = t1;
+  for (i = 0; i + 1 < nc; i++)
+    in->lest += arclen_hodo_chord(&in->h, cuts[i], cuts[i + 1]);
+  for (i = nc - 1; i > 0; i--)    /* pushed in reverse: popped in order */
+    push(in, cuts[i - 1], cuts[i], 0);
+}
+
+/* Pop the next piece (in increasing t) and integrate it, bisecting until
+** its bound meets its share rtol * lest * (b - a) / width.  Returns 0 when
+** no piece is left; else stores the accepted piece. */
+static int next_piece(integrator *in, double *pa, double *pb_, double *len,
+                      const arclen_gauss_rule **rule) {
+  while (in->top > 0) {
+    span s = in->stack[--in->top];
+    double c = s.a + (s.b - s.a) / 2, hh = (s.b - s.a) / 2;
+    double share = in->rtol * in->lest * (s.b - s.a) / in->width;
+    double logerr = 0;
+    const arclen_gauss_rule *r = NULL;
+    piece_bound pb;
+    bound_piece(&in->br, c, hh, &pb);
+    if (!pb.inside) r = choose_rule(&pb, log(share), &logerr);
+    if (r == NULL && s.depth < MAXDEPTH && c > s.a && c < s.b) {
+      push(in, c, s.b, s.depth + 1);
+      push(in, s.a, c, s.depth + 1);
+      continue;
+    }
+    if (r == NULL) {          /* bisection floor: a piece of ~1e-18 width */
+      r = rule_at_least(NMAX);
+      logerr = log(2 * hh) + log(in->br.lead) + 8;  /* crude: width x max f */
+    }
+    *len = apply_rule(&in->h, r, c, hh);
+    in->evals += r->n;
+    in->pieces++;
+    if (s.depth > in->depth) in->depth = s.depth;
+    in->err += exp(logerr);
+    *pa = s.a;
+    *pb_ = s.b;
+    if (rule) *rule = r;
+    return 1;
+  }
+  return 0;
+}
+
+static int check_args(const double *c, int dim, const arclen_opts *o) {
+  int e = arclen_check_curve(c, dim);
+  if (e) return e;
+  if (!(o->rtol >= ARCLEN_RTOL_MIN && o->rtol <= ARCLEN_RTOL_MAX))
+    return ARCLEN_ETOL;
+  if (!(o->t0 >= 0 && o->t0 <= 1 && o->t1 >= 0 && o->t1 <= 1))
+    return ARCLEN_ERANGE;
+  return ARCLEN_OK;
+}
+
+static void fill_info(arclen_info *info, const integrator *in, double scale) {
+  if (!info) return;
+  info->evals = in->evals;
+  info->pieces = in->pieces;
+  info->depth = in->depth;
+  info->err = in->err * scale;
+  info->branch = NULL;
+  info->calls = 0;
+}
+
+int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
+                        double *len, arclen_info *info) {
+  integrator in;
+  double a = o->t0, b = o->t1, sum = 0, pa, pb, piece;
+  int e = check_args(c, dim, o);
+  *len = NAN;
+  if (info) arclen_info_init(info);
+  if (e) return e;
+  if (a == b) { *len = 0; return ARCLEN_OK; }
+  if (a > b) { double t = a; a = b; b = t; }
+  start(&in, c, dim, a, b, o->rtol * 0.5);  /* half for rounding */
+  if (!in.h.zero && in.lest > 0) {
+    while (next_piece(&in, &pa, &pb, &piece, NULL)) sum += piece;
+  } else if (!in.h.zero) {
+    /* Zero chords between every pair of cuts but a moving point: the
+    ** curve returns to where it was; bound L below by a coarse rule. */
+    in.lest = 0.5 * arclen_length_gl(c, dim, 8) / in.h.scale * in.width;
+    if (in.lest > 0)
+      while (next_piece(&in, &pa, &pb, &piece, NULL)) sum += piece;
+  }
+  *len = (o->t0 > o->t1 ? -sum : sum) * in.h.scale;
+  fill_info(info, &in, in.h.scale);
+  return ARCLEN_OK;
+}
+
+/* Safeguarded Newton for s(t) = goal inside an accepted piece [a, b] whose
+** length is plen (goal in [0, plen]): s(t) is increasing, so [lo, hi]
+** always brackets the answer, and a step leaving it is replaced by
+** bisection.  Each s(t) is the piece's rule on [a, t] (a sub-interval keeps
+** the piece's branch-point distance or better). */
+static double solve_in_piece(integrator *in, double a, double b, double plen,
+                             double goal, double tol,
+                             const arclen_gauss_rule *r) {
+  double lo = a, hi = b, t = a + (b - a) * (goal / plen);
+  int it;
+  for (it = 0; it < 100; it++) {
+    double g = apply_rule(&in->h, r, a + (t - a) / 2, (t - a) / 2) - goal;
+    double f = arclen_hodo_speed(&in->h, t), next;
+    in->evals += r->n + 1;
+    if (fabs(g) <= tol) break;
+    if (g < 0) lo = t; else hi = t;
+    next = f > 0 ? t - g / f : lo + (hi - lo) / 2;
+    if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;
+    if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) break;
+    t = next;
+  }
+  return t;
+}
+
+int arclen_time_gauss(const double *c, int dim, double s,
+                      const arclen_opts *o, double *t, arclen_info *info) {
+  integrator in;
+  arclen_opts full = *o;
+  double cum = 0, pa, pb, piece, goal;
+  const arclen_gauss_rule *r;
+  int e;
+  full.t0 = 0;
+  full.t1 = 1;
+  e = check_args(c, dim, &full);
+  *t = NAN;
+  if (info) arclen_info_init(info);
+  if (e) return e;
+  if (isnan(s)) return ARCLEN_EINVAL;
+  if (s <= 0) { *t = 0; return ARCLEN_OK; }
+  start(&in, c, dim, 0, 1, o->rtol * 0.25);
+  if (in.h.zero) { *t = 1; return ARCLEN_OK; }
+  if (!(in.lest > 0))
+    in.lest = 0.5 * arclen_length_gl(c, dim, 8) / in.h.scale;
+  goal = s / in.h.scale;
+  *t = 1;
+  while (next_piece(&in, &pa, &pb, &piece, &r)) {
+    if (cum + piece >= goal) {
+      if (in.top == 0 && goal >= cum + piece) break;   /* s >= L: t = 1 */
+      *t = solve_in_piece(&in, pa, pb, piece, goal - cum,
+                          o->rtol * 0.25 * in.lest, r);
+      break;
+    }
+    cum += piece;
+  }
+  fill_info(info, &in, in.h.scale);
+  return ARCLEN_OK;
+}
+
+double arclen_length_gl(const double *c, int dim, int n) {
+  arclen_hodo h;
+  arclen_hodo_scaled(c, dim, &h);
+  if (h.zero) return 0;
+  return apply_rule(&h, rule_at_least(n), 0.5, 0.5) * h.scale;
+}
+
+/* ---- the plain API ---------------------------------------------------- */
+
+static double length_of(const double *c, int dim, double t0, double t1,
+                        double rtol) {
+  arclen_opts o;
+  double len;
+  arclen_opts_init(&o);
+  o.rtol = rtol;
+  o.t0 = t0;
+  o.t1 = t1;
+  arclen_length_gauss(c, dim, &o, &len, NULL);
+  return len;
+}
+
+static double time_of(const double *c, int dim, double s, double rtol) {
+  arclen_opts o;
+  double t;
+  arclen_opts_init(&o);
+  o.rtol = rtol;
+  arclen_time_gauss(c, dim, s, &o, &t, NULL);
+  return t;
+}
+
+double arclen_length(const double c[8], double rtol) {
+  return length_of(c, 2, 0, 1, rtol);
+}
+double arclen_length_range(const double c[8], double t0, double t1,
+                           double rtol) {
+  return length_of(c, 2, t0, t1, rtol);
+}
+double arclen_time(const double c[8], double s, double rtol) {
+  return time_of(c, 2, s, rtol);
+}
+double arclen_length3(const double c[12], double rtol) {
+  return length_of(c, 3, 0, 1, rtol);
+}
+double arclen_length3_range(const double c[12], double t0, double t1,
+                            double rtol) {
+  return length_of(c, 3, t0, t1, rtol);
+}
+double arclen_time3(const double c[12], double s, double rtol) {
+  return time_of(c, 3, s, rtol);
+}
