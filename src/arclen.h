@@ -227,5 +227,18 @@ int arclen_conic_level(const double p[6], double w, int scheme, double tol,
 int arclen_conic_cubics(const double p[6], double w, int scheme, int level,
                         double *out, double *bound);
 void arclen_conic_point(const double p[6], double w, double t, double pt[2]);
+/* conic_arc.c: other descriptions reduced to (p0, p1, p2; w). */
+int arclen_conic_normal_weight(double w0, double w1, double w2, double *w);
+/* Elliptic arc: centre, semi-axes, rotation phi, parametric angles theta
+** .. theta + dtheta (radians, |dtheta| <= 2 pi) -> n <= 4 conics of at
+** most 90 degrees, 7 numbers each (p0 p1 p2 w); returns n or an error. */
+int arclen_ellipse_conics(double cx, double cy, double rx, double ry,
+                          double phi, double theta, double dtheta,
+                          double out[28]);
+/* SVG 1.1 F.6.5 with F.6.6: c = cx cy rx ry phi(radians) theta1 dtheta. */
+enum { ARCLEN_SVGARC_NONE, ARCLEN_SVGARC_LINE, ARCLEN_SVGARC_ARC };
+int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
+                          double phi_deg, int large, int sweep, double x2,
+                          double y2, double c[7]);
 
 #endif

@@ -1,0 +1,265 @@
+/*
+** conic.c -- Floater's cubic approximation of a conic section.
+**
+** M. S. Floater, "An analysis of cubic approximation schemes for conic
+** sections" (1996).  The conic is the rational quadratic Bezier curve
+** (p0, p1, p2; weight w) of eq. (1); one cubic piece has the control points
+** p0, (1-lambda) p0 + lambda p1, (1-lambda) p2 + lambda p1, p2 (eq. 2), and
+** a scheme is a function lambda(w).  A spline of level r approximates the
+** 2^r pieces of the subdivision scheme (eq. 4), which all share the weight
+** w_r.  Theorem 1 with Prop 13's closed form bounds the Hausdorff distance.
+** Corrections to the paper's text: /work/shared/notes/conic.md.
+*/
+#include <float.h>
+#include <math.h>
+#include <string.h>
+
+#include "arclen.h"
+
+static const char *const scheme_names[ARCLEN_CONIC_NSCHEMES] = {
+  "quadratic", "g2", "midpoint", "c2", "g4"
+};
+
+int arclen_conic_scheme(const char *name) {
+  int s;
+  for (s = 0; s < ARCLEN_CONIC_NSCHEMES; s++)
+    if (strcmp(name, scheme_names[s]) == 0) return s;
+  return -1;
+}
+
+const char *arclen_conic_scheme_name(int scheme) {
+  if (scheme < 0 || scheme >= ARCLEN_CONIC_NSCHEMES) return NULL;
+  return scheme_names[scheme];
+}
+
+/* delta = lambda(w) - 2/3, in forms without cancellation near w = 1, where
+** every scheme has lambda = 2/3 and the error terms A, B of Prop 2 are
+** differences of O(w - 1) quantities.  u = w^2 - 1. */
+static double lambda_delta(int scheme, double w) {
+  double u = (w - 1) * (w + 1);
+  switch (scheme) {
+  case ARCLEN_CONIC_QUADRATIC:      /* Prop 3: lambda = 2/3 */
+    return 0;
+  case ARCLEN_CONIC_G2: {           /* Prop 4: (2/3) w (sqrt(w^2+3) - w) */
+    double s = sqrt(w * w + 3);
+    return 2 * u / ((s + w) * (2 * w + s));
+  }
+  case ARCLEN_CONIC_MIDPOINT:       /* Prop 5: (4/3) w / (1 + w) */
+    return 2 * (w - 1) / (3 * (1 + w));
+  case ARCLEN_CONIC_C2:             /* Prop 8: 2 w^2 / (1 + 2 w^2) */
+    return 2 * u / (3 * (1 + 2 * w * w));
+  case ARCLEN_CONIC_G4: {           /* Props 9-10, negative root */
+    double r = sqrt(3 * w * w + 1), d = 6 * w * w + 1 + r;
+    if (3 * w * w > 1)  /* 3w^2 - 1 - r = 9u(u+1)/(3w^2 - 1 + r) */
+      return 2 * (9 * u * (u + 1) / (3 * w * w - 1 + r)) / (3 * d);
+    return 6 * w * w / d - 2.0 / 3;
+  }
+  default:
+    return NAN;
+  }
+}
+
+double arclen_conic_lambda(int scheme, double w) {
+  switch (scheme) {
+  case ARCLEN_CONIC_QUADRATIC: return 2.0 / 3;
+  /* 2w/(sqrt(w^2+3) + w): Prop 4's form without cancellation at large w */
+  case ARCLEN_CONIC_G2: return 2 * w / (sqrt(w * w + 3) + w);
+  case ARCLEN_CONIC_MIDPOINT: return 4 * w / (3 * (1 + w));
+  case ARCLEN_CONIC_C2: return 2 * w * w / (1 + 2 * w * w);
+  /* Prop 9's 2(6w^2+1 - sqrt(3w^2+1))/(12w^2+3), rationalised:
+  ** 6w^2 / (6w^2 + 1 + sqrt(3w^2+1)) (no cancellation at small w) */
+  case ARCLEN_CONIC_G4:
+    return 6 * w * w / (6 * w * w + 1 + sqrt(3 * w * w + 1));
+  default: return NAN;
+  }
+}
+
+/* Prop 2's A and B with lambda = 2/3 + delta expanded:
+** A = 9 lambda^2 - 12 w^2 (1 - lambda) = -4u + 12 delta (1 + w^2) + 9 delta^2
+** B = 18 lambda^2 - 4 w^2 (9 (1 - lambda)^2 + 1)
+**   = -8u + 24 delta (1 + w^2) + 18 delta^2 (1 - 2 w^2),   u = w^2 - 1. */
+void arclen_conic_AB(double w, double delta, double *A, double *B) {
+  double u = (w - 1) * (w + 1), v = 1 + w * w;
+  *A = -4 * u + 12 * delta * v + 9 * delta * delta;
+  *B = -8 * u + 24 * delta * v + 18 * delta * delta * (1 - 2 * w * w);
+}
+
+void arclen_conic_scheme_AB(int scheme, double w, double *A, double *B) {
+  arclen_conic_AB(w, lambda_delta(scheme, w), A, B);
+}
+
+/* Prop 13: max over [0,1] of |g(t)|, g(t) = (1-t)^2 t^2 (A(1-t)^2 +
+** B(1-t)t + A t^2).  The interior critical point u1 (u = t - 1/2) exists
+** iff 3B < -2A < 0 or 3B > -2A > 0. */
+double arclen_conic_gnorm(double A, double B) {
+  double m = fabs(2 * A + B) / 64;
+  if ((3 * B < -2 * A && -2 * A < 0) || (3 * B > -2 * A && -2 * A > 0)) {
+    double d = 2 * A - B;
+    double m1 = 4 * fabs(A) * A * A / (27 * d * d);
+    if (m1 > m) m = m1;
+  }
+  return m;
+}
+
+double arclen_conic_weight(double w, int level) {
+  int r;
+  for (r = 0; r < level; r++) w = sqrt((1 + w) / 2);   /* w_r, eq. (4) */
+  return w;
+}
+
+/* Theorem 1's factor for one level: (1/4) max(1/w^2, 1) ||g||, or +inf
+** when lambda > 1 (the cubic leaves the triangle: Theorem 1 does not
+** apply).  Multiply by |p0 - 2 p1 + p2|. */
+static double level_factor(int scheme, double w) {
+  double A, B;
+  if (arclen_conic_lambda(scheme, w) > 1) return HUGE_VAL;
+  arclen_conic_scheme_AB(scheme, w, &A, &B);
+  return 0.25 * (w < 1 ? 1 / (w * w) : 1) * arclen_conic_gnorm(A, B);
+}
+
+int arclen_conic_degenerate(const double p[6]) {
+  double e1x, e1y, e2x, e2y, l1, l2, s;
+  e1x = p[2] - p[0]; e1y = p[3] - p[1];
+  e2x = p[4] - p[2]; e2y = p[5] - p[3];
+  l1 = hypot(e1x, e1y); l2 = hypot(e2x, e2y);
+  if (!(l1 > 0) || !(l2 > 0) || !isfinite(l1) || !isfinite(l2))
+    return 1;
+  /* sine of the turning angle at p1; below a few rounding errors the
+  ** triangle is flat and the conic degenerates to a segment */
+  s = (e1x / l1) * (e2y / l2) - (e1y / l1) * (e2x / l2);
+  return !(fabs(s) > 16 * DBL_EPSILON);
+}
+
+int arclen_conic_check(const double p[6], double w) {
+  int i;
+  for (i = 0; i < 6; i++)
+    if (!isfinite(p[i])) return ARCLEN_EINVAL;
+  if (!isfinite(w) || !(w > 0) || arclen_conic_degenerate(p))
+    return ARCLEN_EDOMAIN;
+  return ARCLEN_OK;
+}
+
+/* Split the conic piece t[6] = (a, b, c) with weight w at its mid-point
+** (eq. 4): left (a, (a + w b)/(1 + w), m), right (m, (w b + c)/(1 + w), c). */
+static void split_half(const double t[6], double w, int right, double out[6]) {
+  double l1x = (t[0] + w * t[2]) / (1 + w), l1y = (t[1] + w * t[3]) / (1 + w);
+  double r1x = (w * t[2] + t[4]) / (1 + w), r1y = (w * t[3] + t[5]) / (1 + w);
+  double mx = (l1x + r1x) / 2, my = (l1y + r1y) / 2;
+  if (!right) {
+    out[0] = t[0]; out[1] = t[1]; out[2] = l1x; out[3] = l1y;
+    out[4] = mx; out[5] = my;
+  } else {
+    out[0] = mx; out[1] = my; out[2] = r1x; out[3] = r1y;
+    out[4] = t[4]; out[5] = t[5];
+  }
+}
+
+/* Walk the 2^level pieces of level `level` in order, keeping the path from
+** the root (no allocation: one triangle per depth).  Coordinates are
+** relative to p0 so that far-from-origin conics keep their digits.  For
+** each piece: the second difference |a - 2b + c| enters the bound; when out
+** is not NULL, the cubic of eq. (6) is written (absolute coordinates).
+** Returns max |a - 2b + c|. */
+static double walk(const double p[6], double w, int level, double lambda,
+                   double *out) {
+  double tri[ARCLEN_CONIC_MAXLEVEL + 1][6], wd[ARCLEN_CONIC_MAXLEVEL + 1];
+  double ox = p[0], oy = p[1], dmax = 0;
+  long n = 1L << level, i;
+  int d;
+  for (d = 0; d < 3; d++) {
+    tri[0][2 * d] = p[2 * d] - ox;
+    tri[0][2 * d + 1] = p[2 * d + 1] - oy;
+  }
+  tri[0][0] = tri[0][1] = 0;
+  wd[0] = w;
+  for (d = 1; d <= level; d++) wd[d] = sqrt((1 + wd[d - 1]) / 2);
+  for (i = 0; i < n; i++) {
+    const double *t;
+    double dx, dy;
+    /* the leaves i-1 and i share the path down to depth level-1-ctz(i) */
+    int d0 = 0;
+    if (i > 0) {
+      int z = 0;
+      while (!((i >> z) & 1)) z++;
+      d0 = level - 1 - z;
+    }
+    for (d = d0; d < level; d++)
+      split_half(tri[d], wd[d], (int)((i >> (level - 1 - d)) & 1), tri[d + 1]);
+    t = tri[level];
+    dx = t[0] - 2 * t[2] + t[4];
+    dy = t[1] - 2 * t[3] + t[5];
+    if (hypot(dx, dy) > dmax) dmax = hypot(dx, dy);
+    if (out != NULL) {
+      double *c = out + 8 * i;
+      c[0] = t[0] + ox; c[1] = t[1] + oy;
+      c[2] = (t[0] + lambda * (t[2] - t[0])) + ox;
+      c[3] = (t[1] + lambda * (t[3] - t[1])) + oy;
+      c[4] = (t[4] + lambda * (t[2] - t[4])) + ox;
+      c[5] = (t[5] + lambda * (t[3] - t[5])) + oy;
+      c[6] = t[4] + ox; c[7] = t[5] + oy;
+    }
+  }
+  if (out != NULL) {  /* the ends are the conic's ends, exactly */
+    out[0] = p[0]; out[1] = p[1];
+    out[8 * n - 2] = p[4]; out[8 * n - 1] = p[5];
+  }
+  return dmax;
+}
+
+static int check_args(const double p[6], double w, int scheme, int level) {
+  int rc = arclen_conic_check(p, w);
+  if (rc != ARCLEN_OK) return rc;
+  if (scheme < 0 || scheme >= ARCLEN_CONIC_NSCHEMES) return ARCLEN_EINVAL;
+  if (level < 0 || level > ARCLEN_CONIC_MAXLEVEL) return ARCLEN_ERANGE;
+  return ARCLEN_OK;
+}
+
+/* Eq. (18): the bound of level r. */
+int arclen_conic_bound(const double p[6], double w, int scheme, int level,
+                       double *bound) {
+  int rc = check_args(p, w, scheme, level);
+  double wr;
+  *bound = NAN;
+  if (rc != ARCLEN_OK) return rc;
+  wr = arclen_conic_weight(w, level);
+  *bound = level_factor(scheme, wr) * walk(p, w, level, 0, NULL);
+  if (isnan(*bound)) *bound = HUGE_VAL;   /* inf * 0 cannot happen; be safe */
+  return ARCLEN_OK;
+}
+
+int arclen_conic_level(const double p[6], double w, int scheme, double tol,
+                       int *level, double *bound) {
+  int r, rc = check_args(p, w, scheme, 0);
+  *level = -1;
+  *bound = NAN;
+  if (rc != ARCLEN_OK) return rc;
+  if (!(tol > 0) || !isfinite(tol)) return ARCLEN_ETOL;
+  for (r = 0; r <= ARCLEN_CONIC_MAXLEVEL; r++) {
+    arclen_conic_bound(p, w, scheme, r, bound);
+    *level = r;
+    if (*bound <= tol) return ARCLEN_OK;
+  }
+  return ARCLEN_ENOCONV;
+}
+
+int arclen_conic_cubics(const double p[6], double w, int scheme, int level,
+                        double *out, double *bound) {
+  int rc = check_args(p, w, scheme, level);
+  double wr;
+  if (bound != NULL) *bound = NAN;
+  if (rc != ARCLEN_OK) return rc;
+  wr = arclen_conic_weight(w, level);
+  {
+    double dmax = walk(p, w, level, arclen_conic_lambda(scheme, wr), out);
+    if (bound != NULL) *bound = level_factor(scheme, wr) * dmax;
+  }
+  return ARCLEN_OK;
+}
+
+/* A point of the conic, eq. (1), relative to p0 then shifted back. */
+void arclen_conic_point(const double p[6], double w, double t, double pt[2]) {
+  double b0 = (1 - t) * (1 - t), b1 = 2 * t * (1 - t) * w, b2 = t * t;
+  double den = b0 + b1 + b2;
+  pt[0] = p[0] + (b1 * (p[2] - p[0]) + b2 * (p[4] - p[0])) / den;
+  pt[1] = p[1] + (b1 * (p[3] - p[1]) + b2 * (p[5] - p[1])) / den;
+}

@@ -1,0 +1,119 @@
+/*
+** conic_arc.c -- other descriptions of a conic arc, reduced to the standard
+** form (p0, p1, p2; w) of Floater's eq. (1): three weights, an elliptic arc
+** by centre and angles, and SVG's endpoint arc parameters.
+*/
+#include <float.h>
+#include <math.h>
+
+#include "arclen.h"
+
+#define PI 3.14159265358979323846
+
+/* A rational quadratic with weights (w0, w1, w2) is the standard form with
+** w = w1 / sqrt(w0 w2) (Farin's reparametrisation t -> t/(t + c(1-t))).
+** All three weights must have the same sign. */
+int arclen_conic_normal_weight(double w0, double w1, double w2, double *w) {
+  *w = NAN;
+  if (!isfinite(w0) || !isfinite(w1) || !isfinite(w2)) return ARCLEN_EINVAL;
+  if (w0 < 0 && w1 < 0 && w2 < 0) { w0 = -w0; w1 = -w1; w2 = -w2; }
+  if (!(w0 > 0 && w1 > 0 && w2 > 0)) return ARCLEN_EDOMAIN;
+  *w = w1 / (sqrt(w0) * sqrt(w2));   /* no overflow in w0 * w2 */
+  return isfinite(*w) && *w > 0 ? ARCLEN_OK : ARCLEN_EDOMAIN;
+}
+
+/* The point of the ellipse at unit-frame coordinates (X, Y). */
+static void ellipse_map(const double e[5], double X, double Y, double *x,
+                        double *y) {
+  double cp = cos(e[4]), sp = sin(e[4]);
+  *x = e[0] + (e[2] * X) * cp - (e[3] * Y) * sp;
+  *y = e[1] + (e[2] * X) * sp + (e[3] * Y) * cp;
+}
+
+/* The arc of the ellipse centre (cx, cy), semi-axes rx, ry, rotated by phi
+** (radians), from parametric angle theta to theta + dtheta (radians,
+** |dtheta| <= 2 pi), in n equal pieces of at most 90 degrees.  Each piece
+** of angle 2h is the image of a circular arc: w = cos h, and p1 the image
+** of the tangents' intersection (cos m, sin m) / cos h.  Writes n conics
+** of 7 numbers (p0, p1, p2, w) into out[28]; returns n (0 for dtheta = 0)
+** or an error code. */
+int arclen_ellipse_conics(double cx, double cy, double rx, double ry,
+                          double phi, double theta, double dtheta,
+                          double out[28]) {
+  double e[5];
+  int n, k;
+  if (!isfinite(cx) || !isfinite(cy) || !isfinite(rx) || !isfinite(ry) ||
+      !isfinite(phi) || !isfinite(theta) || !isfinite(dtheta))
+    return ARCLEN_EINVAL;
+  if (!(rx > 0) || !(ry > 0)) return ARCLEN_EDOMAIN;
+  /* a few ulps of slack so that a full turn computed as 2 pi + rounding
+  ** is still four quarters */
+  if (fabs(dtheta) > 2 * PI * (1 + 8 * DBL_EPSILON)) return ARCLEN_ERANGE;
+  if (dtheta == 0) return 0;
+  n = (int)ceil(fabs(dtheta) / (PI / 2) * (1 - 8 * DBL_EPSILON));
+  if (n < 1) n = 1;
+  if (n > 4) n = 4;
+  e[0] = cx; e[1] = cy; e[2] = rx; e[3] = ry; e[4] = phi;
+  for (k = 0; k < n; k++) {
+    double h = dtheta / (2 * n);
+    double a = theta + 2 * k * h, m = a + h, b = a + 2 * h;
+    double w = cos(h), *o = out + 7 * k;
+    ellipse_map(e, cos(a), sin(a), &o[0], &o[1]);
+    ellipse_map(e, cos(m) / w, sin(m) / w, &o[2], &o[3]);
+    ellipse_map(e, cos(b), sin(b), &o[4], &o[5]);
+    o[6] = w;
+  }
+  return n;
+}
+
+/* The angle from u to v, in (-pi, pi]. */
+static double vec_angle(double ux, double uy, double vx, double vy) {
+  return atan2(ux * vy - uy * vx, ux * vx + uy * vy);
+}
+
+/* SVG 1.1 Appendix F.6.5 (endpoint to centre parameterisation) with the
+** out-of-range radius correction of F.6.6.  phi in degrees; large, sweep
+** are the flags.  Returns ARCLEN_SVGARC_NONE (endpoints equal: the arc is
+** omitted, F.6.2), ARCLEN_SVGARC_LINE (rx or ry is 0: a straight segment)
+** or ARCLEN_SVGARC_ARC with c = cx cy rx ry phi(radians) theta1 dtheta;
+** or a negative error code (non-finite input). */
+int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
+                          double phi_deg, int large, int sweep, double x2,
+                          double y2, double c[7]) {
+  double phi, cp, sp, dx, dy, x1p, y1p, lam, coef, cxp, cyp, ux, uy, vx, vy;
+  double t1, dt;
+  if (!isfinite(x1) || !isfinite(y1) || !isfinite(x2) || !isfinite(y2) ||
+      !isfinite(rx) || !isfinite(ry) || !isfinite(phi_deg))
+    return ARCLEN_EINVAL;
+  if (x1 == x2 && y1 == y2) return ARCLEN_SVGARC_NONE;      /* F.6.2 */
+  rx = fabs(rx); ry = fabs(ry);                              /* F.6.6 step 1 */
+  if (rx == 0 || ry == 0) return ARCLEN_SVGARC_LINE;         /* F.6.2 */
+  phi = fmod(phi_deg, 360.0) * (PI / 180);
+  cp = cos(phi); sp = sin(phi);
+  dx = (x1 - x2) / 2; dy = (y1 - y2) / 2;
+  x1p = cp * dx + sp * dy;                                   /* F.6.5.1 */
+  y1p = -sp * dx + cp * dy;
+  /* F.6.6.2: Lambda = x1'^2/rx^2 + y1'^2/ry^2 (as ratios: no overflow) */
+  lam = (x1p / rx) * (x1p / rx) + (y1p / ry) * (y1p / ry);
+  if (lam > 1) {                                             /* F.6.6.3 */
+    double s = sqrt(lam);
+    rx *= s; ry *= s;
+    coef = 0;
+  } else {
+    /* F.6.5.2's radicand, divided through by rx^2 ry^2: (1 - Lambda)/Lambda */
+    coef = sqrt((1 - lam) / lam);
+    if (large == sweep) coef = -coef;
+  }
+  cxp = coef * (rx * y1p / ry);
+  cyp = coef * -(ry * x1p / rx);
+  c[0] = cp * cxp - sp * cyp + (x1 + x2) / 2;                /* F.6.5.3 */
+  c[1] = sp * cxp + cp * cyp + (y1 + y2) / 2;
+  ux = (x1p - cxp) / rx; uy = (y1p - cyp) / ry;              /* F.6.5.5-6 */
+  vx = (-x1p - cxp) / rx; vy = (-y1p - cyp) / ry;
+  t1 = vec_angle(1, 0, ux, uy);
+  dt = vec_angle(ux, uy, vx, vy);
+  if (!sweep && dt > 0) dt -= 2 * PI;
+  else if (sweep && dt < 0) dt += 2 * PI;
+  c[2] = rx; c[3] = ry; c[4] = phi; c[5] = t1; c[6] = dt;
+  return ARCLEN_SVGARC_ARC;
+}
