@@ -55,8 +55,11 @@ int arclen_ellipse_conics(double cx, double cy, double rx, double ry,
   if (n > 4) n = 4;
   e[0] = cx; e[1] = cy; e[2] = rx; e[3] = ry; e[4] = phi;
   for (k = 0; k < n; k++) {
-    double h = dtheta / (2 * n);
-    double a = theta + 2 * k * h, m = a + h, b = a + 2 * h;
+    /* neighbours compute their shared end from the same angle, so the
+    ** pieces join exactly */
+    double a = theta + dtheta * k / n;
+    double b = k + 1 == n ? theta + dtheta : theta + dtheta * (k + 1) / n;
+    double h = (b - a) / 2, m = a + h;
     double w = cos(h), *o = out + 7 * k;
     ellipse_map(e, cos(a), sin(a), &o[0], &o[1]);
     ellipse_map(e, cos(m) / w, sin(m) / w, &o[2], &o[3]);
