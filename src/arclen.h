@@ -119,6 +119,52 @@ double arclen_rg(double x, double y, double z);
 /* ---- elliptic.c: exact length by Carlson's [1,1,1,1] ---------------- */
 
 /* ---- gravesen.c, metapost.c, baseline.c: Henkel's other rows -------- */
+/* Gravesen (1997) adaptive subdivision: on de Casteljau halves the length
+** estimate (2 chord + (n-1) polygon)/(n+1), n = 3; info->pieces counts
+** subdivisions (Henkel's "Steps").  2D and 3D. */
+int arclen_length_gravesen(const double *c, int dim, const arclen_opts *o,
+                           double *len, arclen_info *info);
+/* The same with Richardson's extrapolation (16 S_{k+1} - S_k)/15, since the
+** estimate's error falls 16-fold per halving. */
+int arclen_length_gravesen_richardson(const double *c, int dim,
+                                      const arclen_opts *o, double *len,
+                                      arclen_info *info);
+
+/* MetaPost's arclength and arctime (mp.w arc_test) in mpost's double number
+** system, bit-identical to `mpost -numbersystem=double`.  2D only.  A leg
+** |P1-P0|, |P2-P1| or |P3-P2| >= 16384 gives ARCLEN_EOVERFLOW where mpost
+** reports "Arithmetic overflow".  info: evals = arc_test calls, pieces =
+** Simpson leaves, depth = deepest bisection. */
+int arclen_mp_arclength(const double c[8], double *len, arclen_info *info);
+int arclen_mp_arctime(const double c[8], double goal, double *t,
+                      arclen_info *info);
+/* A MetaPost path of n >= 1 cubic segments, 8 numbers each (segment k ends
+** where k+1 starts); cyclic != 0 when the last segment closes the path.
+** Times are MetaPost's: segment index + parameter; negative goals, goals
+** beyond the end and turns around a cycle as MetaPost 2.11. */
+int arclen_mp_path_arclength(const double *seg, int n, int cyclic,
+                             double *len, arclen_info *info);
+int arclen_mp_path_arctime(const double *seg, int n, int cyclic, double goal,
+                           double *t, arclen_info *info);
+/* As the method "metapost" (a sub-range is cut out with arclen_subcurve). */
+int arclen_length_metapost(const double *c, int dim, const arclen_opts *o,
+                           double *len, arclen_info *info);
+int arclen_time_metapost(const double *c, int dim, double s,
+                         const arclen_opts *o, double *t, arclen_info *info);
+
+/* Henkel's fixed-step rows with N = o->steps (0: ARCLEN_BASELINE_STEPS). */
+#define ARCLEN_BASELINE_STEPS 1000000L
+/* Sum of the N chords ("hypotenuse sum", Henkel's Eqn 3).  2D and 3D. */
+int arclen_length_polyline(const double *c, int dim, const arclen_opts *o,
+                           double *len, arclen_info *info);
+/* Trapezoid rule on sqrt of the quartic radicand (Eqn 7).  2D and 3D. */
+int arclen_length_trapezoid(const double *c, int dim, const arclen_opts *o,
+                            double *len, arclen_info *info);
+/* Trapezoid rule on the factored speed |A2| |t - s1| |t - s2| (Eqn 10), with
+** s1, s2 the complex roots of z'(t).  2D only. */
+int arclen_length_trapezoid_factored(const double *c, int dim,
+                                     const arclen_opts *o, double *len,
+                                     arclen_info *info);
 
 /* ---- lenfit.c: length-versus-t fits --------------------------------- */
 /* legendre.c: the n-point Gauss-Legendre rule on [0, 1], computed by
