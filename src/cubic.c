@@ -117,9 +117,16 @@ void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h) {
   frexp(big, &e);
   h->scale = ldexp(1.0, e);
   for (k = 0; k < dim; k++) {
-    h->a2[k] = ldexp(h->a2[k], -e);
-    h->a1[k] = ldexp(h->a1[k], -e);
-    h->a0[k] = ldexp(h->a0[k], -e);
+    if (e > -1000 && e < 1000) {    /* 2^-e is a normal double: multiply */
+      double inv = 1 / h->scale;
+      h->a2[k] *= inv;
+      h->a1[k] *= inv;
+      h->a0[k] *= inv;
+    } else {
+      h->a2[k] = ldexp(h->a2[k], -e);
+      h->a1[k] = ldexp(h->a1[k], -e);
+      h->a0[k] = ldexp(h->a0[k], -e);
+    }
   }
 }
 
@@ -152,24 +159,26 @@ static double cubic_at(const double p[4], double t) {
   return ((p[3] * t + p[2]) * t + p[1]) * t + p[0];
 }
 
-/* A root of the cubic in [lo, hi], where it changes sign (f(lo) f(hi) <= 0):
-** bisection, which halves the bracket every step and so ends within 1100
-** steps in double whatever the input (here capped at 200: [0, 1] is
-** exhausted after ~1075 halvings only for subnormal brackets, and 200 steps
-** already shrink it below 2^-200). */
+/* A root of the cubic in [lo, hi], where it changes sign and is monotone:
+** Newton from the secant point, kept inside the bracket (a step leaving it
+** is replaced by bisection).  Bisection alone would settle within ~1100
+** halvings; the cap of 100 steps is far above what Newton needs. */
 static double bracketed_root(const double p[4], double lo, double hi) {
-  double flo = cubic_at(p, lo);
+  double flo = cubic_at(p, lo), fhi = cubic_at(p, hi);
+  double t = lo - flo * (hi - lo) / (fhi - flo);
   int i;
-  for (i = 0; i < 200; i++) {
-    double mid = lo + (hi - lo) / 2;
-    double fm;
-    if (mid <= lo || mid >= hi) break;
-    fm = cubic_at(p, mid);
-    if (fm == 0) return mid;
-    if ((fm < 0) == (flo < 0)) { lo = mid; flo = fm; }
-    else hi = mid;
+  if (!(t > lo && t < hi)) t = lo + (hi - lo) / 2;
+  for (i = 0; i < 100; i++) {
+    double f = cubic_at(p, t);
+    double df = (3 * p[3] * t + 2 * p[2]) * t + p[1], next;
+    if (f == 0) return t;
+    if ((f < 0) == (flo < 0)) lo = t; else hi = t;
+    next = df != 0 ? t - f / df : lo + (hi - lo) / 2;
+    if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;
+    if (fabs(next - t) <= 2.3e-16 * t || next == lo || next == hi) return next;
+    t = next;
   }
-  return lo + (hi - lo) / 2;
+  return t;
 }
 
 /* Real roots in (0, 1) of p, ascending.  The interval is cut at the roots

@@ -1,0 +1,179 @@
+-- The default method ("gauss") against the 40-digit references of
+-- tools/ref_lengths.py.  The bounds are the issue's contract: relative
+-- error <= rtol at rtol = 1e-12, <= 1e-14 at "full precision" rtol = 1e-15.
+local arclen = require("arclen")
+local H = require("helpers")
+
+local function families(rows)
+  local seen, list = {}, {}
+  for _, row in ipairs(rows) do
+    if not seen[row.family] then
+      seen[row.family] = true
+      list[#list + 1] = row.family
+    end
+  end
+  return list
+end
+
+-- Bound of the relative error for a requested tolerance.
+local function bound(tol) return tol < 1e-14 and 1e-14 or tol end
+
+local function check_lengths(file)
+  local rows = H.tsv(file)
+  for _, family in ipairs(families(rows)) do
+    for _, tol in ipairs({1e-12, 1e-15}) do
+      it(family .. ": length at t = 1/4, 1/2, 3/4, 1 within " .. bound(tol) .. " (tol " .. tol .. ")", function()
+        local worst = H.worst()
+        for _, row in ipairs(rows) do
+          if row.family == family then
+            local c = H.curve(row)
+            for _, p in ipairs({{0.25, "L25"}, {0.5, "L50"}, {0.75, "L75"}, {1, "L"}}) do
+              local want = tonumber(row[p[2]])
+              local got = arclen.length(c, {tol = tol, t1 = p[1]})
+              if want == 0 then
+                assert.are.equal(0, got, row.id .. ": a point has length 0 exactly")
+              else
+                worst:add(H.relerr(got, want), row.id .. " t=" .. p[1])
+              end
+            end
+          end
+        end
+        assert.is_true(worst.err <= bound(tol),
+          ("worst %s: %.3g > %.3g"):format(tostring(worst.id), worst.err, bound(tol)))
+      end)
+    end
+  end
+end
+
+-- |s(t) - s| for the computed t, from the reference parameter T: s is
+-- monotone, so |s(t) - s(T)| <= |t - T| * max speed between them, and the
+-- speed is a quadratic's norm, bounded on [t, T] by its values at the ends
+-- plus the hodograph's curvature term (tiny for |t - T| ~ 1e-12).
+local function speed(c, t)
+  local d = {arclen.derivative(c, t)}
+  local s = 0
+  for _, v in ipairs(d) do s = s + v * v end
+  return math.sqrt(s)
+end
+
+local function check_times(file)
+  local rows = H.tsv(file)
+  for _, family in ipairs(families(rows)) do
+    for _, tol in ipairs({1e-12, 1e-15}) do
+      it(family .. ": time at L/4, L/2, 3L/4 with |s(t) - s| <= " .. bound(tol) .. " L (tol " .. tol .. ")", function()
+        local worst = H.worst()
+        for _, row in ipairs(rows) do
+          local L = tonumber(row.L)
+          if row.family == family and L > 0 then
+            local c = H.curve(row)
+            for _, p in ipairs({{0.25, "T25"}, {0.5, "T50"}, {0.75, "T75"}}) do
+              local T = tonumber(row[p[2]])
+              local t = arclen.time(c, p[1] * L, {tol = tol})
+              assert.is_true(t >= 0 and t <= 1, row.id)
+              local ds = math.abs(t - T) * math.max(speed(c, t), speed(c, T))
+              worst:add(ds / L, row.id .. " s=" .. p[1] .. "L")
+            end
+          end
+        end
+        assert.is_true(worst.err <= bound(tol),
+          ("worst %s: %.3g > %.3g"):format(tostring(worst.id), worst.err, bound(tol)))
+      end)
+    end
+  end
+end
+
+describe("length (default method) against mpmath, 2D", function()
+  check_lengths("curves2d.tsv")
+end)
+
+describe("length (default method) against mpmath, 3D", function()
+  check_lengths("curves3d.tsv")
+end)
+
+describe("time (default method) against mpmath, 2D", function()
+  check_times("curves2d.tsv")
+end)
+
+describe("time (default method) against mpmath, 3D", function()
+  check_times("curves3d.tsv")
+end)
+
+describe("time at the ends", function()
+  local c = {0, 0, 10, 0, 10, 10, 0, 0}
+  local L = arclen.length(c)
+  it("s <= 0 gives 0", function()
+    assert.are.equal(0, arclen.time(c, 0))
+    assert.are.equal(0, arclen.time(c, -5))
+    assert.are.equal(0, arclen.time(c, -math.huge))
+  end)
+  it("s >= L gives 1", function()
+    assert.are.equal(1, arclen.time(c, L * (1 + 1e-9)))
+    assert.are.equal(1, arclen.time(c, 1e300))
+    assert.are.equal(1, arclen.time(c, math.huge))
+  end)
+  it("a point: 0 below or at 0, 1 above", function()
+    local p = {3, 4, 3, 4, 3, 4, 3, 4}
+    assert.are.equal(0, arclen.length(p))
+    assert.are.equal(0, arclen.time(p, 0))
+    assert.are.equal(1, arclen.time(p, 1))
+  end)
+end)
+
+describe("sub-ranges, splitting and geometry", function()
+  local c = {0, 0, 10, 0, 10, 10, 0, 0}
+  it("length over [t0, t1] adds up and reverses sign", function()
+    local L = arclen.length(c, {tol = 1e-15})
+    local a = arclen.length(c, {tol = 1e-15, t1 = 0.3})
+    local b = arclen.length(c, {tol = 1e-15, t0 = 0.3})
+    assert.is_true(H.relerr(a + b, L) <= 1e-14)
+    assert.are.equal(-a, arclen.length(c, {tol = 1e-15, t0 = 0.3, t1 = 0}))
+    assert.are.equal(0, arclen.length(c, {t0 = 0.4, t1 = 0.4}))
+  end)
+  it("split halves measure the range lengths", function()
+    local left, right = arclen.split(c, 0.3)
+    assert.is_true(H.relerr(arclen.length(left, {tol = 1e-15}),
+      arclen.length(c, {tol = 1e-15, t1 = 0.3})) <= 1e-14)
+    assert.is_true(H.relerr(arclen.length(right, {tol = 1e-15}),
+      arclen.length(c, {tol = 1e-15, t0 = 0.3})) <= 1e-14)
+    assert.are.same({arclen.point(c, 0.3)}, {left[7], left[8]})
+  end)
+  it("subcurve equals the range", function()
+    local sub = arclen.subcurve(c, 0.2, 0.7)
+    assert.is_true(H.relerr(arclen.length(sub, {tol = 1e-15}),
+      arclen.length(c, {tol = 1e-15, t0 = 0.2, t1 = 0.7})) <= 1e-14)
+  end)
+  it("point and derivative at the ends are the control data", function()
+    assert.are.same({0, 0}, {arclen.point(c, 0)})
+    assert.are.same({0, 0}, {arclen.point(c, 1)})
+    assert.are.same({30, 0}, {arclen.derivative(c, 0)})
+  end)
+  it("a table of 4 points and 8 loose numbers are the same curve", function()
+    local pts = {{0, 0}, {10, 0}, {10, 10}, {0, 0}}
+    assert.are.equal(arclen.length(c), arclen.length(pts))
+    assert.are.equal(arclen.length(c), arclen.length(0, 0, 10, 0, 10, 10, 0, 0))
+    assert.are.equal(arclen.time(c, 3), arclen.time(0, 0, 10, 0, 10, 10, 0, 0, 3))
+  end)
+  it("3D curves: 12 numbers or 4 points {x, y, z}", function()
+    local c3 = {0, 0, 0, 10, 0, 0, 10, 10, 0, 0, 0, 0}
+    assert.is_true(H.relerr(arclen.length(c3), arclen.length(c)) <= 1e-12)
+    assert.are.equal(arclen.length(c3),
+      arclen.length({{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 0, 0}}))
+    assert.are.equal(arclen.length(c3), arclen.length(0, 0, 0, 10, 0, 0, 10, 10, 0, 0, 0, 0))
+  end)
+  it("critical points are the speed's extrema", function()
+    local cr = arclen.critical({0, 0, 10, 10, 0, 10, 10, 0})
+    assert.are.equal(1, #cr)
+    assert.is_true(math.abs(cr[1] - 0.5) < 1e-15)
+  end)
+  it("info reports the cost and an error estimate within the tolerance", function()
+    local L, info = arclen.length(c, {info = true})
+    assert.is_true(info.evals > 0 and info.pieces > 0)
+    assert.is_true(info.err >= 0 and info.err <= 1e-12 * L)
+  end)
+  it("_VERSION and the method list", function()
+    assert.matches("^arclen %d+%.%d+%.%d+$", arclen._VERSION)
+    local names = {}
+    for _, m in ipairs(arclen.methods()) do names[m] = true end
+    assert.is_true(names.gauss)
+  end)
+end)
