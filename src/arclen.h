@@ -10,6 +10,8 @@
 #ifndef ARCLEN_H
 #define ARCLEN_H
 
+#include <stddef.h>
+
 #define ARCLEN_VERSION "arclen 0.1.0"
 
 /* Tolerance range accepted by every error-controlled method. */
@@ -273,6 +275,11 @@ int arclen_conic_level(const double p[6], double w, int scheme, double tol,
 int arclen_conic_cubics(const double p[6], double w, int scheme, int level,
                         double *out, double *bound);
 void arclen_conic_point(const double p[6], double w, double t, double pt[2]);
+/* conic_length.c: the exact length of the whole arc (R_F, R_D; parabola
+** in closed form).  info (may be NULL): branch ellipse/parabola/hyperbola,
+** calls = R-function calls.  0, EINVAL, EDOMAIN or EOVERFLOW. */
+int arclen_conic_length(const double p[6], double w, double *len,
+                        arclen_info *info);
 /* conic_arc.c: other descriptions reduced to (p0, p1, p2; w). */
 int arclen_conic_normal_weight(double w0, double w1, double w2, double *w);
 /* Elliptic arc: centre, semi-axes, rotation phi, parametric angles theta

@@ -287,6 +287,60 @@ static int l_fullcircle(lua_State *L) {
   return 2;
 }
 
+/* arclen.conic_length(p0, p1, p2, w [, opts]) -> exact length [, info]
+** (opts.info = true adds {branch=, calls=, ...}). */
+static int l_conic_length(lua_State *L) {
+  double c[7], len;
+  arclen_info info;
+  int want_info = 0, rc;
+  check_conic(L, 1, c, &c[6]);
+  if (!lua_isnoneornil(L, 5)) {
+    luaL_checktype(L, 5, LUA_TTABLE);
+    lua_pushnil(L);
+    while (lua_next(L, 5)) {
+      if (lua_type(L, -2) != LUA_TSTRING ||
+          strcmp(lua_tostring(L, -2), "info") != 0)
+        luaL_argerror(L, 5, "unknown option (only 'info')");
+      want_info = lua_toboolean(L, -1);
+      lua_pop(L, 1);
+    }
+  }
+  rc = arclen_conic_length(c, c[6], &len, &info);
+  if (rc != ARCLEN_OK) return arclenL_argcode(L, 1, rc);
+  lua_pushnumber(L, len);
+  if (!want_info) return 1;
+  arclenL_pushinfo(L, &info);
+  return 2;
+}
+
+/* arclen.ellipse_conics(cx, cy, rx, ry, rotation, angle1, angle2) -> list
+** of conics {x0, y0, x1, y1, x2, y2, w} (pieces of at most 90 degrees). */
+static int l_ellipse_conics(lua_State *L) {
+  double v[7], c[28];
+  static const char *const names[7] = {
+    "cx", "cy", "rx", "ry", "rotation", "angle1", "angle2"
+  };
+  int k, j, n;
+  for (k = 0; k < 7; k++) v[k] = arclenL_checkfinite(L, k + 1, names[k]);
+  if (!(v[2] > 0)) luaL_argerror(L, 3, "rx must be > 0");
+  if (!(v[3] > 0)) luaL_argerror(L, 4, "ry must be > 0");
+  n = arclen_ellipse_conics(v[0], v[1], v[2], v[3], v[4], v[5], v[6] - v[5],
+                            c);
+  if (n == ARCLEN_ERANGE)
+    luaL_argerror(L, 7, "the arc must not turn more than 2*pi");
+  if (n < 0) return arclenL_argcode(L, 7, n);
+  lua_createtable(L, n, 0);
+  for (k = 0; k < n; k++) {
+    lua_createtable(L, 7, 0);
+    for (j = 0; j < 7; j++) {
+      lua_pushnumber(L, c[7 * k + j]);
+      lua_rawseti(L, -2, j + 1);
+    }
+    lua_rawseti(L, -2, k + 1);
+  }
+  return 1;
+}
+
 /* arclen.conic_scheme(name, w) -> lambda, A, B, max|g| (Props 2, 13). */
 static int l_conic_scheme(lua_State *L) {
   const char *name = luaL_checkstring(L, 1);
@@ -309,6 +363,8 @@ static const luaL_Reg conic_funcs[] = {
   {"svg_arc", l_svg_arc},
   {"fullcircle", l_fullcircle},
   {"conic_scheme", l_conic_scheme},
+  {"conic_length", l_conic_length},
+  {"ellipse_conics", l_ellipse_conics},
   {NULL, NULL}
 };
 

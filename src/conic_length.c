@@ -1,0 +1,223 @@
+/*
+** conic_length.c -- the exact arc length of a conic arc (p0, p1, p2; w)
+** (Floater's eq. 1), by Carlson's R_F and R_D.
+**
+** The arc is an affine image of a circular (w < 1) or hyperbolic (w > 1)
+** arc: with m = (p0+p2)/2, d = p1 - m, h = (p2-p0)/2 it is
+**   x(th) = c + U cos th + V sin th,   th in [-a, a],  a = acos w,
+**   U = d w/(1-w^2), V = h/sqrt(1-w^2)            (ellipse), and
+**   x(th) = c + U cosh th + V sinh th, th in [-b, b],  b = acosh w,
+**   U = d w/(1-w^2), V = h/sqrt(w^2-1)            (hyperbola).
+** From the conjugate semi-diameters U, V come the semi-axes A, B and the
+** parameter offset th0 of the vertex.  Every length below is a sum of
+** positive terms or a difference bounded away from cancellation (factor
+** <= 3.4); differences of elliptic integrals at two amplitudes are never
+** formed: Legendre's addition theorem (DLMF 19.11.1-2) turns them into one
+** integral at amplitude psi, with sin psi computed from the span directly.
+** The parabola (w = 1) has a closed form.
+*/
+#include <float.h>
+#include <math.h>
+
+#include "arclen.h"
+
+#define PI 3.14159265358979323846
+#define QUARTER_PI 0.78539816339744830962
+
+/* int_0^psi sqrt(1 - m sin^2) between amplitudes x0 < x1 (both in
+** [0, pi/4] for m > 0): E(x1|m) - E(x0|m) = E(psi|m) - m s0 s1 sin psi,
+** F(psi) = F(x1) - F(x0), sin psi = (s1^2 - s0^2)/(s1 c0 D0 + s0 c1 D1)
+** where s1^2 - s0^2 = sin(x1 - x0) sin(x1 + x0) (span given exactly).
+** E(psi|m) = sin psi R_F(cos^2, Dpsi^2, 1) - (m/3) sin^3 psi R_D(...). */
+static double e_between(double x0, double span, double m, long *calls) {
+  double x1 = x0 + span;
+  double s0 = sin(x0), c0 = cos(x0), s1 = sin(x1), c1 = cos(x1);
+  double d0 = sqrt(1 - m * s0 * s0), d1 = sqrt(1 - m * s1 * s1);
+  double sp, cp2, dp2;
+  if (span <= 0) return 0;
+  sp = sin(span) * sin(x1 + x0) / (s1 * c0 * d0 + s0 * c1 * d1);
+  if (sp > 1) sp = 1;
+  cp2 = (1 - sp) * (1 + sp);
+  dp2 = 1 - m * sp * sp;
+  *calls += 2;
+  return sp * arclen_rf(cp2, dp2, 1)
+         - m / 3 * sp * sp * sp * arclen_rd(cp2, dp2, 1) - m * s0 * s1 * sp;
+}
+
+/* The ellipse x = A cos phi, y = B sin phi (A >= B) from phi = lo to lo +
+** span (span < pi).  Split at the vertices and at the octant points
+** k pi/4; each piece is measured from its nearest vertex: near a minor
+** vertex (speed A) as A sqrt(1 - k^2 sin^2 x), near a major vertex (speed
+** B) as B sqrt(1 + ((A^2-B^2)/B^2) sin^2 x). */
+static double ellipse_arc(double A, double B, double lo, double span,
+                          long *calls) {
+  double mminor = (A - B) * (A + B) / (A * A);
+  double mmajor = -(A - B) * (A + B) / (B * B);
+  double total = 0, done = 0;
+  long j = (long)floor(lo / QUARTER_PI);
+  int guard;
+  for (guard = 0; guard < 8 && done < span; guard++, j++) {
+    /* piece inside octant j: [max(lo, j pi/4), min(lo+span, (j+1) pi/4)] */
+    double start = lo + done;                    /* phi at the piece start */
+    double room = (j + 1) * QUARTER_PI - start;  /* to the octant's end */
+    double len = span - done < room ? span - done : room, x0;
+    long v;
+    if (len < 0) len = 0;
+    if (j % 2 == 0) {           /* vertex at j pi/4, x = phi - j pi/4 */
+      x0 = start - j * QUARTER_PI;
+      v = j / 2;
+    } else {                    /* vertex at (j+1) pi/4, reflected */
+      x0 = room - len;
+      v = (j + 1) / 2;
+    }
+    if (x0 < 0) x0 = 0;
+    if (x0 > QUARTER_PI) x0 = QUARTER_PI;
+    if (v % 2 == 0)             /* phi = 0, pi: ends of the major axis */
+      total += B * e_between(x0, len, mmajor, calls);
+    else
+      total += A * e_between(x0, len, mminor, calls);
+    done += len;
+  }
+  return total;
+}
+
+/* The hyperbola x = A cosh tau, y = B sinh tau from tau0 to tau0 + span,
+** 0 <= tau0.  With sinh tau = tan chi and G = sqrt(B^2 + A^2 sin^2 chi):
+** L = [G tan chi] - (A^2/B) int sin^2 chi / sqrt(1 - m sin^2 chi), m =
+** -A^2/B^2 (integration by parts); the bracket is written without
+** cancellation and the integral by the addition theorem:
+** D(chi1) - D(chi0) = D(psi) + s0 s1 sin psi, D = (1/3) sin^3 R_D.  The
+** second term is at most half the first (pointwise). */
+static double hyperbola_arc(double A, double B, double t0, double span,
+                            long *calls) {
+  double t1 = t0 + span;
+  double ch0 = cosh(t0), ch1 = cosh(t1), sh0 = sinh(t0), sh1 = sinh(t1);
+  double s0 = tanh(t0), s1 = tanh(t1);
+  double r = A / B, g0, g1, d0, d1, num, bracket, sp, cp2, dp2, dterm;
+  if (span <= 0) return 0;
+  g0 = B * sqrt(1 + (r * s0) * (r * s0));
+  g1 = B * sqrt(1 + (r * s1) * (r * s1));
+  /* G1 tan1 - G0 tan0 = sinh(span) sinh(t0+t1) [(A^2+B^2) -
+  ** A^2/(ch0 ch1)^2] / (G1 sinh t1 + G0 sinh t0) */
+  num = sinh(span) * sinh(t0 + t1) / (g1 * sh1 + g0 * sh0);
+  /* (A^2+B^2) - A^2/(ch0 ch1)^2 = B^2 + A^2 X (X + 2)/(ch0 ch1)^2 with
+  ** X = ch0 ch1 - 1 = sinh^2((t0+t1)/2) + sinh^2(span/2): no cancellation
+  ** when tau is small and A >> B (near-parabolic arcs) */
+  {
+    double sa = sinh((t0 + t1) / 2), sb = sinh(span / 2);
+    double X = sa * sa + sb * sb, cc = ch0 * ch1;
+    bracket = num * (B * B + A * A * (X * (X + 2) / (cc * cc)));
+  }
+  /* sin psi = (s1^2 - s0^2)/(s1 c0 D0 + s0 c1 D1), c = 1/cosh, D = G/B,
+  ** s1^2 - s0^2 = sinh(span) sinh(t0+t1)/(ch0 ch1)^2 */
+  d0 = g0 / B; d1 = g1 / B;
+  /* (s1 c0 D0 + s0 c1 D1) ch0 ch1 = s1 ch1 D0 + s0 ch0 D1 */
+  sp = (sinh(span) * sinh(t0 + t1) / (ch0 * ch1))
+       / (s1 * ch1 * d0 + s0 * ch0 * d1);
+  if (sp > 1) sp = 1;
+  cp2 = (1 - sp) * (1 + sp);
+  dp2 = 1 + (r * sp) * (r * sp);
+  *calls += 1;
+  dterm = sp * sp * sp / 3 * arclen_rd(cp2, dp2, 1) + s0 * s1 * sp;
+  return bracket - A * r * dterm;
+}
+
+/* Parabola (w = 1): speed 2|a + t e|, a = p1 - p0, e = p0 - 2 p1 + p2;
+** L = q int_{u0}^{u1} 2 sqrt(u^2 + k^2) du with q = |e|, u = (a.e)/q^2 + t,
+** k = |a x e|/q^2.  Same-sign ends: differences rewritten (u1 - u0 = 1). */
+static double parabola(double ax, double ay, double ex, double ey) {
+  double q = hypot(ex, ey);
+  double u0 = (ax * ex + ay * ey) / (q * q), u1 = u0 + 1;
+  double k = fabs(ax * ey - ay * ex) / (q * q);
+  double S0, S1, el, as;
+  if (u0 < 0 && u1 > 0) {     /* the vertex is inside: two halves */
+    double a0 = -u0;
+    S0 = hypot(a0, k); S1 = hypot(u1, k);
+    return q * ((u1 * S1 + a0 * S0) + k * k * (asinh(u1 / k) + asinh(a0 / k)));
+  }
+  if (u1 <= 0) { double t = -u1; u1 = -u0; u0 = t; }   /* reflect */
+  S0 = hypot(u0, k); S1 = hypot(u1, k);
+  /* u1 S1 - u0 S0 = (u1 + u0)(u1^2 + u0^2 + k^2)/(u1 S1 + u0 S0) */
+  el = (u1 + u0) * (u1 * u1 + u0 * u0 + k * k) / (u1 * S1 + u0 * S0);
+  /* asinh(u1/k) - asinh(u0/k) = asinh((u1 + u0)/(u1 S0 + u0 S1)) */
+  as = asinh((u1 + u0) / (u1 * S0 + u0 * S1));
+  return q * (el + k * k * as);
+}
+
+int arclen_conic_length(const double p[6], double w, double *len,
+                        arclen_info *info) {
+  double px1, py1, px2, py2, dx, dy, hx, hy, ux, uy, vx, vy, sc, L;
+  long calls = 0;
+  int rc = arclen_conic_check(p, w), e;
+  *len = NAN;
+  if (info != NULL) arclen_info_init(info);
+  if (rc != ARCLEN_OK) return rc;
+  /* relative to p0 and scaled by a power of two: no overflow, no lost
+  ** digits far from the origin */
+  px1 = p[2] - p[0]; py1 = p[3] - p[1];
+  px2 = p[4] - p[0]; py2 = p[5] - p[1];
+  {
+    double mx = fabs(px1);
+    if (fabs(py1) > mx) mx = fabs(py1);
+    if (fabs(px2) > mx) mx = fabs(px2);
+    if (fabs(py2) > mx) mx = fabs(py2);
+    frexp(mx, &e);
+    px1 = ldexp(px1, -e); py1 = ldexp(py1, -e);
+    px2 = ldexp(px2, -e); py2 = ldexp(py2, -e);
+  }
+  if (w == 1) {
+    L = parabola(px1, py1, px2 - 2 * px1, py2 - 2 * py1);
+    if (info != NULL) info->branch = "parabola";
+  } else {
+    double onew = (1 - w) * (1 + w);          /* 1 - w^2, exact enough */
+    double uv, pp, qq, A, B, cross, th0;
+    hx = px2 / 2; hy = py2 / 2;
+    dx = px1 - hx; dy = py1 - hy;
+    sc = w / onew;
+    ux = dx * sc; uy = dy * sc;
+    sc = 1 / sqrt(fabs(onew));
+    vx = hx * sc; vy = hy * sc;
+    uv = ux * vx + uy * vy;
+    cross = fabs(ux * vy - uy * vx);
+    /* |U|^2 - |V|^2 as (U - V).(U + V) */
+    qq = (ux - vx) * (ux + vx) + (uy - vy) * (uy + vy);
+    if (w < 1) {
+      double a = acos(w), R;
+      pp = (ux * ux + uy * uy + vx * vx + vy * vy) / 2;
+      R = hypot(qq / 2, uv);
+      A = sqrt(pp + R);
+      B = cross / A;
+      /* the major vertex at th0: tan 2 th0 = 2 U.V / (|U|^2 - |V|^2) */
+      th0 = atan2(2 * uv, qq) / 2;
+      L = ellipse_arc(A, B, -a - th0, 2 * a, &calls);
+      if (info != NULL) info->branch = "ellipse";
+    } else {
+      double b = asinh(sqrt((w - 1) * (w + 1)));
+      double um = hypot(ux - vx, uy - vy), up = hypot(ux + vx, uy + vy);
+      pp = um * up;                                 /* A^2 + B^2 */
+      if (qq >= 0) { A = sqrt((pp + qq) / 2); B = cross / A; }
+      else { B = sqrt((pp - qq) / 2); A = cross / B; }
+      /* the vertex: tanh 2 th0 = -2 U.V / (|U|^2 + |V|^2) = -x, i.e.
+      ** th0 = log(|U - V| / |U + V|) / 2; atanh keeps th0's relative
+      ** accuracy when it is small (near-parabolic arcs need that) */
+      {
+        double x = 2 * uv / (ux * ux + uy * uy + vx * vx + vy * vy);
+        th0 = fabs(x) < 0.5 ? -0.5 * atanh(x) : 0.5 * log(um / up);
+      }
+      /* tau = th - th0 in [-b - th0, b - th0]; split at the vertex */
+      if (-b - th0 < 0 && b - th0 > 0)
+        L = hyperbola_arc(A, B, 0, b + th0, &calls)
+            + hyperbola_arc(A, B, 0, b - th0, &calls);
+      else if (b - th0 <= 0)
+        L = hyperbola_arc(A, B, th0 - b, 2 * b, &calls);
+      else
+        L = hyperbola_arc(A, B, -b - th0, 2 * b, &calls);
+      if (info != NULL) info->branch = "hyperbola";
+    }
+  }
+  L = ldexp(L, e);
+  if (info != NULL) info->calls = calls;
+  if (!isfinite(L)) return ARCLEN_EOVERFLOW;
+  *len = L;
+  return ARCLEN_OK;
+}
