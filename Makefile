@@ -37,7 +37,7 @@ MODULE = $(OUT)/arclen.so
 LIBDIR = $(PREFIX)/lib/lua/$(LUA_ABI)
 SHAREDIR = $(PREFIX)/share/lua/$(LUA_ABI)
 
-.PHONY: all lib test demo bench install uninstall clean
+.PHONY: all lib test deps demo bench install uninstall clean
 
 all: $(MODULE)
 
@@ -57,10 +57,19 @@ $(BUILD)/libarclen.a: $(CORE_OBJ)
 $(MODULE): $(CORE_OBJ) $(BIND_OBJ)
 	$(CC) -shared -o $@ $^ -lm
 
-test: $(MODULE)
-	sh tools/run-tests.sh $(LUA)
+# The test command builds the module for every Lua on the machine (5.4 and,
+# where installed, 5.1, 5.2, 5.3 -- also LuaTeX's texlua -- and LuaJIT).
+test: deps
+	$(MAKE) LUA=5.4
+	@for v in 5.1 5.2 5.3 jit; do \
+	  if [ -f /usr/include/lua$$v/lua.h ] || [ $$v = jit -a -f /usr/include/luajit-2.1/lua.h ]; then \
+	    $(MAKE) LUA=$$v || exit 1; fi; done
+	sh tools/run-tests.sh
 
-demo: $(MODULE)
+deps:
+	@sh tools/deps.sh base
+
+demo: deps $(MODULE)
 	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) lua/arclen/cli.lua henkel
 
 bench: $(BUILD)/libarclen.a
