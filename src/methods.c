@@ -10,6 +10,12 @@
 static const arclen_method methods[] = {
   /* name, length, time */
   {"gauss", arclen_length_gauss, arclen_time_gauss},
+  {"gravesen", arclen_length_gravesen, NULL},
+  {"gravesen-richardson", arclen_length_gravesen_richardson, NULL},
+  {"metapost", arclen_length_metapost, arclen_time_metapost},
+  {"polyline", arclen_length_polyline, NULL},
+  {"trapezoid", arclen_length_trapezoid, NULL},
+  {"trapezoid-factored", arclen_length_trapezoid_factored, NULL},
   /* new methods: one row each, above this line */
   {NULL, NULL, NULL}
 };

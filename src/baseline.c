@@ -1,0 +1,260 @@
+/*
+** baseline.c -- Henkel's fixed-step rows (H. Henkel, "Calculating the Cubic
+** Bezier Arc Length by Elliptic Integrals", 2014, section 5): N equal steps
+** (he used N = 10^6) of
+**   "polyline"            the hypotenuse sum of the chords of Eqn 3;
+**   "trapezoid"           the extended trapezoidal rule on the square root of
+**                         the quartic radicand c4 t^4 + ... + c0 (Eqns 7, 8);
+**   "trapezoid-factored"  the same rule on the factored speed of Eqn 10,
+**                         |A2| sqrt(q1(t) q2(t)), q_k = (t - a_k)^2 + b_k^2,
+**                         s_k = a_k + i b_k the complex roots of z'(t) (2D).
+** Their errors are the rules' (O(N^-2)), plus in Eqn 7 the cancellation of
+** the expanded quartic near a cusp -- which is what these rows are for.
+*/
+#include <math.h>
+#include <stddef.h>
+
+#include "arclen.h"
+
+#define MAX_STEPS 1000000000L   /* 10^9: a few seconds; keeps loops bounded */
+
+typedef struct cpx { double re, im; } cpx;
+
+typedef struct ksum {           /* Neumaier's compensated sum */
+  double s, c;
+} ksum;
+
+static void add(ksum *g, double x) {
+  double t = g->s + x;
+  if (fabs(g->s) >= fabs(x)) g->c += (g->s - t) + x;
+  else g->c += (x - t) + g->s;
+  g->s = t;
+}
+
+/* Power basis of z(t) - z(0) per coordinate (Henkel's Eqn 4 without a0),
+** from the leg vectors so that far-away curves keep their digits:
+** a1 = 3 d0, a2 = 3 (d1 - d0), a3 = d2 - 2 d1 + d0. */
+static void power_basis(const double *c, int dim, double a1[3], double a2[3],
+                        double a3[3]) {
+  int i;
+  for (i = 0; i < dim; i++) {
+    double d0 = c[dim + i] - c[i], d1 = c[2 * dim + i] - c[dim + i];
+    double d2 = c[3 * dim + i] - c[2 * dim + i];
+    a1[i] = 3.0 * d0;
+    a2[i] = 3.0 * (d1 - d0);
+    a3[i] = (d2 - d1) - (d1 - d0);
+  }
+}
+
+/* Steps and range of a baseline call; 0 or an error code. */
+static int setup(int dim, const arclen_opts *o, long *n, double *t0,
+                 double *t1, int dims_ok) {
+  long steps = o ? o->steps : 0;
+  if (dim != 2 && (dim != 3 || !dims_ok)) return ARCLEN_EDIM;
+  if (steps == 0) steps = ARCLEN_BASELINE_STEPS;
+  if (steps < 1 || steps > MAX_STEPS) return ARCLEN_EDOMAIN;
+  *n = steps;
+  *t0 = o ? o->t0 : 0.0;
+  *t1 = o ? o->t1 : 1.0;
+  return ARCLEN_OK;
+}
+
+static void fill_info(arclen_info *info, long evals, long n,
+                      const char *branch) {
+  if (info == NULL) return;
+  info->evals = evals;
+  info->pieces = n;
+  info->depth = 0;
+  info->err = 0.0;              /* no estimate: fixed rules */
+  info->branch = branch;
+  info->calls = 0;
+}
+
+/* Node i of N on [t0, t1]. */
+static double node(double t0, double t1, long i, long n) {
+  return (i == n) ? t1 : t0 + (t1 - t0) * ((double)i / (double)n);
+}
+
+int arclen_length_polyline(const double *c, int dim, const arclen_opts *o,
+                           double *len, arclen_info *info) {
+  double a1[3], a2[3], a3[3], t0, t1, ta;
+  long n, i;
+  ksum sum = {0.0, 0.0};
+  int rc = setup(dim, o, &n, &t0, &t1, 1), k;
+  if (rc != ARCLEN_OK) { *len = NAN; return rc; }
+  power_basis(c, dim, a1, a2, a3);
+  ta = t0;
+  for (i = 1; i <= n; i++) {
+    double tb = node(t0, t1, i, n), h = tb - ta, s = 0.0;
+    for (k = 0; k < dim; k++) {
+      /* z(ta + h) - z(ta), expanded so that no large terms cancel */
+      double dz = h * (a1[k] + a2[k] * (2.0 * ta + h) +
+                       a3[k] * (3.0 * ta * ta + 3.0 * ta * h + h * h));
+      s += dz * dz;
+    }
+    add(&sum, sqrt(s));
+    ta = tb;
+  }
+  fill_info(info, n, n, "polyline");
+  *len = (t1 < t0) ? -(sum.s + sum.c) : sum.s + sum.c;
+  return ARCLEN_OK;
+}
+
+/* The extended trapezoidal rule of f over N steps of [t0, t1]. */
+typedef double (*speed_fn)(const void *data, double t);
+
+static double trapezoid(speed_fn f, const void *data, double t0, double t1,
+                        long n) {
+  ksum sum = {0.0, 0.0};
+  double ta = t0, fa = f(data, t0);
+  long i;
+  for (i = 1; i <= n; i++) {
+    double tb = node(t0, t1, i, n), fb = f(data, tb);
+    add(&sum, (tb - ta) * (fa + fb) / 2.0);
+    ta = tb;
+    fa = fb;
+  }
+  return sum.s + sum.c;
+}
+
+/* Eqn 8: Q(t) = |z'(t)|^2 = c4 t^4 + c3 t^3 + c2 t^2 + c1 t + c0. */
+static double quartic_speed(const void *data, double t) {
+  const double *q = (const double *)data;
+  double v = (((q[4] * t + q[3]) * t + q[2]) * t + q[1]) * t + q[0];
+  return v > 0.0 ? sqrt(v) : 0.0;   /* rounding can make Q < 0 at a cusp */
+}
+
+int arclen_length_trapezoid(const double *c, int dim, const arclen_opts *o,
+                            double *len, arclen_info *info) {
+  double a1[3], a2[3], a3[3], q[5] = {0.0, 0.0, 0.0, 0.0, 0.0}, t0, t1;
+  long n;
+  int rc = setup(dim, o, &n, &t0, &t1, 1), k;
+  if (rc != ARCLEN_OK) { *len = NAN; return rc; }
+  power_basis(c, dim, a1, a2, a3);
+  for (k = 0; k < dim; k++) {         /* Henkel's Eqn 8, summed over axes */
+    q[4] += 9.0 * a3[k] * a3[k];
+    q[3] += 12.0 * a3[k] * a2[k];
+    q[2] += 6.0 * a3[k] * a1[k] + 4.0 * a2[k] * a2[k];
+    q[1] += 4.0 * a2[k] * a1[k];
+    q[0] += a1[k] * a1[k];
+  }
+  *len = trapezoid(quartic_speed, q, t0, t1, n);
+  fill_info(info, n + 1, n, "trapezoid");
+  return ARCLEN_OK;
+}
+
+/* ---- Eqn 10: the factored speed -------------------------------------- */
+
+static cpx cmul(cpx a, cpx b) {
+  cpx r;
+  r.re = a.re * b.re - a.im * b.im;
+  r.im = a.re * b.im + a.im * b.re;
+  return r;
+}
+
+static cpx cdiv(cpx a, cpx b) {   /* Smith's algorithm */
+  cpx r;
+  if (fabs(b.re) >= fabs(b.im)) {
+    double q = b.im / b.re, d = b.re + b.im * q;
+    r.re = (a.re + a.im * q) / d;
+    r.im = (a.im - a.re * q) / d;
+  } else {
+    double q = b.re / b.im, d = b.re * q + b.im;
+    r.re = (a.re * q + a.im) / d;
+    r.im = (a.im * q - a.re) / d;
+  }
+  return r;
+}
+
+static cpx csqrt_(cpx z) {        /* principal square root */
+  cpx r;
+  double m = hypot(z.re, z.im);
+  if (m == 0.0) { r.re = r.im = 0.0; return r; }
+  if (z.re >= 0.0) {
+    r.re = sqrt((m + z.re) / 2.0);
+    r.im = z.im / (2.0 * r.re);
+  } else {
+    r.im = copysign(sqrt((m - z.re) / 2.0), z.im);
+    r.re = z.im / (2.0 * r.im);
+  }
+  return r;
+}
+
+/* Speed as |lead| * sqrt(prod of (t - a_k)^2 + b_k^2) over nroots roots. */
+typedef struct factored {
+  double lead;
+  int nroots;
+  double a[2], b2[2];
+} factored;
+
+static double factored_speed(const void *data, double t) {
+  const factored *f = (const factored *)data;
+  double p = 1.0;
+  int k;
+  for (k = 0; k < f->nroots; k++) {
+    double u = t - f->a[k];
+    p *= u * u + f->b2[k];
+  }
+  return f->lead * sqrt(p);
+}
+
+/* Roots of A2 t^2 + A1 t + A0 (complex coefficients) without cancellation:
+** q = -(A1 + d)/2 with d = +-sqrt(A1^2 - 4 A2 A0) on A1's side, then
+** s1 = q/A2 and s2 = A0/q.  Fills f; lower degrees when A2 (and A1) vanish. */
+static void factor_speed(const double *c, factored *f) {
+  cpx A0, A1, A2, d, q, s;
+  double d0x = c[2] - c[0], d0y = c[3] - c[1], d1x = c[4] - c[2];
+  double d1y = c[5] - c[3], d2x = c[6] - c[4], d2y = c[7] - c[5];
+  A0.re = 3.0 * d0x; A0.im = 3.0 * d0y;
+  A1.re = 6.0 * (d1x - d0x); A1.im = 6.0 * (d1y - d0y);
+  A2.re = 3.0 * ((d2x - d1x) - (d1x - d0x));
+  A2.im = 3.0 * ((d2y - d1y) - (d1y - d0y));
+  if (A2.re == 0.0 && A2.im == 0.0) {
+    if (A1.re == 0.0 && A1.im == 0.0) {       /* constant velocity */
+      f->lead = hypot(A0.re, A0.im);
+      f->nroots = 0;
+      return;
+    }
+    s = cdiv(A0, A1);                          /* z' = A1 (t + A0/A1) */
+    f->lead = hypot(A1.re, A1.im);
+    f->nroots = 1;
+    f->a[0] = -s.re;
+    f->b2[0] = s.im * s.im;
+    return;
+  }
+  d = cmul(A1, A1);
+  s = cmul(A2, A0);
+  d.re -= 4.0 * s.re;
+  d.im -= 4.0 * s.im;
+  d = csqrt_(d);
+  if (A1.re * d.re + A1.im * d.im < 0.0) { d.re = -d.re; d.im = -d.im; }
+  q.re = -(A1.re + d.re) / 2.0;
+  q.im = -(A1.im + d.im) / 2.0;
+  f->lead = hypot(A2.re, A2.im);
+  f->nroots = 2;
+  s = cdiv(q, A2);
+  f->a[0] = s.re;
+  f->b2[0] = s.im * s.im;
+  if (q.re == 0.0 && q.im == 0.0) {            /* A1 = A0 = 0: t^2 */
+    f->a[1] = 0.0;
+    f->b2[1] = 0.0;
+  } else {
+    s = cdiv(A0, q);
+    f->a[1] = s.re;
+    f->b2[1] = s.im * s.im;
+  }
+}
+
+int arclen_length_trapezoid_factored(const double *c, int dim,
+                                     const arclen_opts *o, double *len,
+                                     arclen_info *info) {
+  factored f;
+  double t0, t1;
+  long n;
+  int rc = setup(dim, o, &n, &t0, &t1, 0);
+  if (rc != ARCLEN_OK) { *len = NAN; return rc; }
+  factor_speed(c, &f);
+  *len = trapezoid(factored_speed, &f, t0, t1, n);
+  fill_info(info, n + 1, n, "trapezoid-factored");
+  return ARCLEN_OK;
+}
