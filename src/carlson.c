@@ -1,0 +1,235 @@
+/*
+** carlson.c -- Carlson's symmetric elliptic integrals R_F, R_D, R_C, R_J,
+** R_G for real arguments, by the duplication theorem.
+**
+** Source: B. C. Carlson, "Numerical computation of real or complex elliptic
+** integrals", Numerical Algorithms 10 (1995) 13-26, arXiv math/9409227
+** (below "C95"), Algorithms 1-4 and Eqns (2.14), (2.21)-(2.22).  R_G from
+** DLMF 19.21.10.  A domain error (a negative argument, too many zeros, an
+** infinite value of the integral, a non-finite argument) gives NaN.
+*/
+#include <math.h>
+
+#include "arclen.h"
+
+/* Stopping rules of C95: iterate until 4^-m Q < |A_m|, where
+** Q = c * max |A_0 - x_i| and c = (3r)^(-1/6) for R_F, (r/4)^(-1/6) for
+** R_D and R_J, (3r)^(-1/8) for R_C.  We take r = 2^-54 (half an ulp), so
+** the truncation error of the series stays below the rounding error. */
+#define RF_C 426.3337869596693
+#define RDJ_C 645.0795775461748
+#define RC_C 93.82364777335432
+
+/* Every iteration divides the spread of the arguments by 4 while A_m
+** tends to a limit of the size of the largest argument over log^2 of the
+** spread, so the loop stops after ~log4(Q/A) steps: fewer than 60 even for
+** 1e-300 against 1e300.  The cap is only a guard. */
+#define DUP_MAX 100
+
+/* Arguments beyond 2^+-960 are scaled by an exact power of 4 first
+** (the R-functions are homogeneous), so nothing overflows or underflows. */
+#define BIG 0x1p960
+#define SMALL 0x1p-960
+
+static double max3(double a, double b, double c) {
+  double m = a > b ? a : b;
+  return m > c ? m : c;
+}
+
+/* k such that 4^k * mx is near 1, or 0 when mx needs no scaling. */
+static int scale_exp(double mx) {
+  if (mx > BIG || (mx > 0 && mx < SMALL)) return -ilogb(mx) / 2;
+  return 0;
+}
+
+static int ok_arg(double v) { return v >= 0 && v < HUGE_VAL; }
+
+/* C95 Algorithm 1 (R_F), arguments >= 0 with at most one zero. */
+static double rf_dup(double x, double y, double z) {
+  double a0 = (x + y + z) / 3, a = a0, x0 = x, y0 = y;
+  double q = RF_C * max3(fabs(a0 - x), fabs(a0 - y), fabs(a0 - z));
+  double fourn = 1, dx, dy, dz, e2, e3;
+  int m;
+  for (m = 0; m < DUP_MAX && q * fourn >= fabs(a); m++) {
+    double sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
+    double lam = sx * sy + sx * sz + sy * sz;
+    x = (x + lam) / 4; y = (y + lam) / 4; z = (z + lam) / 4;
+    a = (a + lam) / 4;
+    fourn /= 4;
+  }
+  /* X = (A0 - x0)/(4^m A_m): from the inputs, free of cancellation. */
+  dx = (a0 - x0) * fourn / a;
+  dy = (a0 - y0) * fourn / a;
+  dz = -dx - dy;
+  e2 = dx * dy - dz * dz;
+  e3 = dx * dy * dz;
+  /* C95 (2.2): 1 - E2/10 + E3/14 + E2^2/24 - 3 E2 E3/44 */
+  return (1 - e2 / 10 + e3 / 14 + e2 * e2 / 24 - 3 * e2 * e3 / 44) / sqrt(a);
+}
+
+double arclen_rf(double x, double y, double z) {
+  int k, zeros = (x == 0) + (y == 0) + (z == 0);
+  if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || zeros > 1) return NAN;
+  k = scale_exp(max3(x, y, z));
+  if (k == 0) return rf_dup(x, y, z);
+  x = ldexp(x, 2 * k); y = ldexp(y, 2 * k); z = ldexp(z, 2 * k);
+  return ldexp(rf_dup(x, y, z), k);        /* R_F(4^k v) = 2^-k R_F(v) */
+}
+
+/* The series of C95 (2.7)/(2.12) shared by R_D and R_J:
+** 1 - 3E2/14 + E3/6 + 9E2^2/88 - 3E4/22 - 9E2E3/52 + 3E5/26. */
+static double series_dj(double e2, double e3, double e4, double e5) {
+  return 1 - 3 * e2 / 14 + e3 / 6 + 9 * e2 * e2 / 88 - 3 * e4 / 22
+         - 9 * e2 * e3 / 52 + 3 * e5 / 26;
+}
+
+/* C95 Algorithm 4 (R_D); x, y >= 0, at most one zero; z > 0. */
+static double rd_dup(double x, double y, double z) {
+  double a0 = (x + y + 3 * z) / 5, a = a0, x0 = x, y0 = y;
+  double q = RDJ_C * max3(fabs(a0 - x), fabs(a0 - y), fabs(a0 - z));
+  double fourn = 1, sum = 0, dx, dy, dz, xy, zz;
+  int m;
+  for (m = 0; m < DUP_MAX && q * fourn >= fabs(a); m++) {
+    double sx = sqrt(x), sy = sqrt(y), sz = sqrt(z);
+    double lam = sx * sy + sx * sz + sy * sz;
+    sum += fourn / (sz * (z + lam));
+    x = (x + lam) / 4; y = (y + lam) / 4; z = (z + lam) / 4;
+    a = (a + lam) / 4;
+    fourn /= 4;
+  }
+  dx = (a0 - x0) * fourn / a;
+  dy = (a0 - y0) * fourn / a;
+  dz = -(dx + dy) / 3;
+  xy = dx * dy; zz = dz * dz;
+  return fourn * series_dj(xy - 6 * zz, (3 * xy - 8 * zz) * dz,
+                           3 * (xy - zz) * zz, xy * zz * dz)
+           / (a * sqrt(a))
+         + 3 * sum;
+}
+
+double arclen_rd(double x, double y, double z) {
+  int k;
+  if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || z == 0 || (x == 0 && y == 0))
+    return NAN;
+  k = scale_exp(max3(x, y, z));
+  if (k == 0) return rd_dup(x, y, z);
+  x = ldexp(x, 2 * k); y = ldexp(y, 2 * k); z = ldexp(z, 2 * k);
+  return ldexp(rd_dup(x, y, z), 3 * k);    /* R_D(4^k v) = 8^-k R_D(v) */
+}
+
+/* C95 Algorithm 2 (R_C); x >= 0, y > 0. */
+static double rc_dup(double x, double y) {
+  double a0 = (x + 2 * y) / 3, a = a0, y0 = y;
+  double q = RC_C * fabs(a0 - x);
+  double fourn = 1, s;
+  int m;
+  for (m = 0; m < DUP_MAX && q * fourn >= fabs(a); m++) {
+    double lam = 2 * sqrt(x) * sqrt(y) + y;
+    x = (x + lam) / 4; y = (y + lam) / 4;
+    a = (a + lam) / 4;
+    fourn /= 4;
+  }
+  s = (y0 - a0) * fourn / a;
+  /* C95 (2.13): 1 + 3s^2/10 + s^3/7 + 3s^4/8 + 9s^5/22 + 159s^6/208
+  ** + 9s^7/8 */
+  return (1 + s * s * (3.0 / 10 + s * (1.0 / 7 + s * (3.0 / 8 + s * (9.0 / 22
+          + s * (159.0 / 208 + s * (9.0 / 8))))))) / sqrt(a);
+}
+
+static double rc_pos(double x, double y) {
+  int k = scale_exp(x > y ? x : y);
+  if (k == 0) return rc_dup(x, y);
+  return ldexp(rc_dup(ldexp(x, 2 * k), ldexp(y, 2 * k)), k);
+}
+
+double arclen_rc(double x, double y) {
+  if (!ok_arg(x) || !(y == y) || fabs(y) == HUGE_VAL || y == 0) return NAN;
+  if (y > 0) return rc_pos(x, y);
+  /* Cauchy principal value, C95 (2.14):
+  ** R_C(x, y) = sqrt(x/(x - y)) R_C(x - y, -y) for y < 0. */
+  if (x == 0) return 0;
+  return sqrt(x / (x - y)) * rc_pos(x - y, -y);
+}
+
+/* C95 Algorithm 3 (R_J); x, y, z >= 0 with at most one zero, p > 0. */
+static double rj_dup(double x, double y, double z, double p) {
+  double a0 = (x + y + z + 2 * p) / 5, a = a0, x0 = x, y0 = y, z0 = z;
+  double q = RDJ_C * fmax(max3(fabs(a0 - x), fabs(a0 - y), fabs(a0 - z)),
+                          fabs(a0 - p));
+  double fourn = 1, sum = 0, dx, dy, dz, dp, e2, e3, xyz;
+  int m;
+  for (m = 0; m < DUP_MAX && q * fourn >= fabs(a); m++) {
+    double sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);
+    double lam = sx * sy + sx * sz + sy * sz;
+    double d = (sp + sx) * (sp + sy) * (sp + sz);
+    /* R_C(1, 1 + e_m) with e_m = (p-x)(p-y)(p-z)/d_m^2.  When p is much
+    ** smaller than x, y, z (every near-cusp Bezier curve) e_m is near -1
+    ** and 1 + e_m cancels; expanding (p-x)(p-y)(p-z) = d_m prod(sp - s.)
+    ** gives 1 + e_m = 2 sqrt(p_m)(p_m + lambda_m)/d_m without the
+    ** subtraction.  Used always: it measured better for every e_m. */
+    double ope = 2 * sp * (p + lam) / d;
+    sum += fourn / d * rc_dup(1, ope);
+    x = (x + lam) / 4; y = (y + lam) / 4; z = (z + lam) / 4;
+    p = (p + lam) / 4;
+    a = (a + lam) / 4;
+    fourn /= 4;
+  }
+  dx = (a0 - x0) * fourn / a;
+  dy = (a0 - y0) * fourn / a;
+  dz = (a0 - z0) * fourn / a;
+  dp = -(dx + dy + dz) / 2;
+  xyz = dx * dy * dz;
+  e2 = dx * dy + dx * dz + dy * dz - 3 * dp * dp;
+  e3 = xyz + 2 * e2 * dp + 4 * dp * dp * dp;
+  return fourn * series_dj(e2, e3, (2 * xyz + e2 * dp + 3 * dp * dp * dp) * dp,
+                           xyz * dp * dp)
+           / (a * sqrt(a))
+         + 6 * sum;
+}
+
+static double rj_pos(double x, double y, double z, double p) {
+  int k = scale_exp(fmax(max3(x, y, z), p));
+  if (k == 0) return rj_dup(x, y, z, p);
+  return ldexp(rj_dup(ldexp(x, 2 * k), ldexp(y, 2 * k), ldexp(z, 2 * k),
+                      ldexp(p, 2 * k)), 3 * k);
+}
+
+double arclen_rj(double x, double y, double z, double p) {
+  double t, q, r, rq, v;
+  int zeros = (x == 0) + (y == 0) + (z == 0);
+  if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || zeros > 1 || !(p == p)
+      || fabs(p) == HUGE_VAL || p == 0)
+    return NAN;
+  if (p > 0) return rj_pos(x, y, z, p);
+  /* Cauchy principal value (DLMF 19.20.14, C95 (2.22)), written with
+  ** x <= y <= z, q = -p > 0 and r = z - (z - x)(z - y)/(z + q)
+  ** = (z(x + q) + y(z - x))/(z + q) > 0 (the sum form does not cancel):
+  ** (z + q) R_J(x,y,z,-q) = (r - z) R_J(x,y,z,r) - 3 R_F(x,y,z)
+  **                         + 3 sqrt(xyz/(xy + rq)) R_C(xy + rq, rq).
+  ** (checked against mpmath's principal value, tools/ref_carlson.py) */
+  if (x > y) { t = x; x = y; y = t; }
+  if (y > z) { t = y; y = z; z = t; }
+  if (x > y) { t = x; x = y; y = t; }
+  q = -p;
+  t = (z - x) * (z - y) / (z + q);       /* z - r */
+  r = (z * (x + q) + y * (z - x)) / (z + q);
+  rq = r * q;
+  v = -t * rj_pos(x, y, z, r) - 3 * arclen_rf(x, y, z);
+  if (x > 0) v += 3 * sqrt(x * y * z / (x * y + rq)) * rc_pos(x * y + rq, rq);
+  return v / (z + q);
+}
+
+/* R_G by DLMF 19.21.10 with z the middle argument, so that
+** (x - z)(y - z) <= 0 and nothing cancels:
+** 2 R_G = z R_F - (x - z)(y - z) R_D / 3 + sqrt(x y / z). */
+double arclen_rg(double x, double y, double z) {
+  double t;
+  if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z)) return NAN;
+  if (x > y) { t = x; x = y; y = t; }
+  if (y > z) { t = y; y = z; z = t; }
+  if (x > y) { t = x; x = y; y = t; }
+  /* now x <= y <= z; put the middle one last */
+  if (y == 0) return sqrt(z) / 2;        /* R_G(0, 0, z) = sqrt(z)/2 */
+  return (y * arclen_rf(x, z, y) + (y - x) * (z - y) * arclen_rd(x, z, y) / 3
+          + sqrt(x * z / y)) / 2;
+}
