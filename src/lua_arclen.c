@@ -338,6 +338,7 @@ int luaopen_arclen(lua_State *L) {
   lua_newtable(L);
   arclen_open_core(L);
   arclen_open_conic(L);
+  arclen_open_henkel(L);
   /* new areas: one line each, above this line */
   return 1;
 }
