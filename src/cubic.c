@@ -96,20 +96,32 @@ void arclen_hodograph(const double *c, int dim, double a2[3], double a1[3],
   }
 }
 
+/* Coordinates beyond this may overflow in differences (P3 - P0 can exceed
+** DBL_MAX); such curves are scaled down by 2^-64 first (exact). */
+#define HUGE_COORD 1e300
+
 void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h) {
-  double big = 0;
+  double big = 0, pre = 1;
   int k, e;
   memset(h, 0, sizeof *h);
   h->dim = dim;
-  arclen_hodograph(c, dim, h->a2, h->a1, h->a0);
+  for (k = 0; k < 4 * dim; k++)
+    if (fabs(c[k]) > HUGE_COORD) pre = 0x1p-64;
+  if (pre != 1) {
+    double small[12];
+    for (k = 0; k < 4 * dim; k++) small[k] = c[k] * pre;
+    arclen_hodograph(small, dim, h->a2, h->a1, h->a0);
+  } else {
+    arclen_hodograph(c, dim, h->a2, h->a1, h->a0);
+  }
   for (k = 0; k < dim; k++) {
     big = fmax(big, fabs(h->a2[k]));
     big = fmax(big, fabs(h->a1[k]));
     big = fmax(big, fabs(h->a0[k]));
   }
-  if (big == 0 || !isfinite(big)) {
-    h->scale = big == 0 ? 1 : big;
-    h->zero = big == 0;
+  if (big == 0) {
+    h->scale = 1;
+    h->zero = 1;
     return;
   }
   /* Scale by a power of two so that products cannot over/underflow and
@@ -128,6 +140,7 @@ void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h) {
       h->a0[k] = ldexp(h->a0[k], -e);
     }
   }
+  h->scale /= pre;    /* may overflow to inf: so does the length */
 }
 
 /* Speed in scaled units, |a2 t^2 + a1 t + a0| by Horner per coordinate. */

@@ -120,9 +120,10 @@ void arclenL_checkopts(lua_State *L, int arg, arclenL_opts *lo) {
         luaL_argerror(L, arg, "tol must be a number");
       lo->o.rtol = arclenL_checktol(L, arg, lua_tonumber(L, -1));
     } else if (strcmp(key, "method") == 0) {
-      const char *name = lua_tostring(L, -1);
+      const char *name;
       if (lua_type(L, -1) != LUA_TSTRING)
         luaL_argerror(L, arg, "method must be a string");
+      name = lua_tostring(L, -1);
       lo->method = arclen_find_method(name);
       if (lo->method == NULL)
         luaL_argerror(L, arg, lua_pushfstring(L, "unknown method '%s'", name));
