@@ -119,6 +119,12 @@ double arclen_rg(double x, double y, double z);
 /* ---- roots.c: real-coefficient polynomial roots --------------------- */
 
 /* ---- elliptic.c: exact length by Carlson's [1,1,1,1] ---------------- */
+/* Method "elliptic": the exact length integral by Carlson's [1,1,1,1]
+** (2D: complex hodograph roots; 3D: the quartic split by roots.c), with
+** closed forms for cusps, collinear curves and points and series for far
+** roots.  info->branch names the branch, info->calls the R-calls. */
+int arclen_length_elliptic(const double *c, int dim, const arclen_opts *o,
+                           double *len, arclen_info *info);
 
 /* ---- gravesen.c, metapost.c, baseline.c: Henkel's other rows -------- */
 /* Gravesen (1997) adaptive subdivision: on de Casteljau halves the length

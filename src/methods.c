@@ -16,6 +16,7 @@ static const arclen_method methods[] = {
   {"polyline", arclen_length_polyline, NULL},
   {"trapezoid", arclen_length_trapezoid, NULL},
   {"trapezoid-factored", arclen_length_trapezoid_factored, NULL},
+  {"elliptic", arclen_length_elliptic, NULL},
   /* new methods: one row each, above this line */
   {NULL, NULL, NULL}
 };

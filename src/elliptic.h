@@ -1,0 +1,40 @@
+/*
+** elliptic.h -- internals shared by elliptic.c (dispatch, closed forms,
+** Carlson's [1,1,1,1]) and elliptic_far.c (series for far roots).
+** Not part of the public API.
+**
+** Every integral here is I = int_y^x |t - s1| |t - s2| dt, y < x, with the
+** roots s_k = a_k + i b_k (b_k >= 0) of the complex hodograph (2D) or of
+** the quartic |z'|^2 (3D); the length is |A2| I (Henkel Eqn 7-10).
+*/
+#ifndef ARCLEN_ELLIPTIC_H
+#define ARCLEN_ELLIPTIC_H
+
+/* Ratio (interval reach)/(distance to a root) below which that root counts
+** as far: the series then converge like ELL_RHO^n (60 terms for 1e-17). */
+#define ELL_RHO 0.5
+#define ELL_NMAX 64
+
+/* Far-root branches (elliptic_far.c).  near: the root whose factor is
+** integrated exactly; the other is expanded in Gegenbauer C^(-1/2)
+** polynomials (the generating function sqrt(1 - 2cr + r^2)). */
+double arclen_ell_series_one(double an, double bn, double af, double bf,
+                             double y, double x);
+/* Both roots far from [y, x]: both factors expanded about the midpoint. */
+double arclen_ell_series_both(double a1, double b1, double a2, double b2,
+                              double y, double x);
+/* I = int_y^x |t - s1||t - s2| dt by the branch that suits the roots
+** (elliptic.c); *branch names it, *calls counts R-function calls. */
+double arclen_ell_product(double a1, double b1, double a2, double b2,
+                          double y, double x, const char **branch,
+                          long *calls);
+/* 3D (elliptic3d.c): |z'|^2 split into two quadratics by the quartic
+** solver, then arclen_ell_product; *len in the hodograph's units. */
+int arclen_ell_length3d(const double a2[3], const double a1[3],
+                        const double a0[3], double y, double x,
+                        const char **branch, long *calls, double *len);
+/* int_v^w sqrt(u^2 + b^2) du and int_v^w u sqrt(u^2 + b^2) du. */
+double arclen_ell_j0(double v, double w, double b);
+double arclen_ell_j1(double v, double w, double b);
+
+#endif
