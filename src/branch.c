@@ -12,21 +12,24 @@
 
 #include "cubic.h"
 
-/* Roots of a real double root count as no branch point: |t - r| continues
-** analytically as +-(t - r).  A computed imaginary part below this relative
-** size is rounding noise of the root formula. */
-#define REAL_ROOT_RTOL 1e-14
+/* A computed imaginary part below this relative size is rounding noise:
+** the root is real (a cusp).  In 2D the roots come from a quadratic formula
+** accurate to ~1e-16; in 3D a double root of the quartic is only found to
+** ~1e-8 (sqrt of eps), and treating a root with im < 1e-9 as real changes
+** the integral by O(im^2) = 1e-18 relative. */
+#define REAL_ROOT_RTOL2 1e-14
+#define REAL_ROOT_RTOL3 1e-9
 
 #define TWO_PI 6.283185307179586476925286766559
 
-static void add_root(arclen_branch *b, double complex z, int mult) {
+/* Store z and its conjugate (a real root: twice). */
+static void add_pair(arclen_branch *b, double complex z, double rtol) {
   double re = creal(z), im = fabs(cimag(z));
-  if (b->n >= 4 || !isfinite(re) || !isfinite(im)) return;
-  if (im <= REAL_ROOT_RTOL * (1 + fabs(re))) { im = 0; mult = 2; }
-  b->re[b->n] = re;
-  b->im[b->n] = im;
-  b->mult[b->n] = mult;
-  b->n++;
+  if (b->n > 2 || !isfinite(re) || !isfinite(im)) return;
+  if (im <= rtol * (1 + fabs(re))) im = 0;
+  b->re[b->n] = b->re[b->n + 1] = re;
+  b->im[b->n] = b->im[b->n + 1] = im;
+  b->n += 2;
 }
 
 /* 2D: z' = A2 t^2 + A1 t + A0 as a complex quadratic with roots s1, s2, so
@@ -45,18 +48,15 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
     q = -(A1 + d) / 2;
     b->lead = cabs(A2);
     if (cabs(q) == 0) {                  /* A1 = A0 = 0: double root at 0 */
-      add_root(b, 0, 2);
+      add_pair(b, 0, REAL_ROOT_RTOL2);
+      add_pair(b, 0, REAL_ROOT_RTOL2);
       return;
     }
-    add_root(b, q / A2, 1);
-    add_root(b, A0 / q, 1);
-    if (b->n == 2 && b->re[0] == b->re[1] && b->im[0] == b->im[1]) {
-      b->n = 1;                          /* a double zero of z': no branch */
-      b->mult[0] = 2;
-    }
+    add_pair(b, q / A2, REAL_ROOT_RTOL2);
+    add_pair(b, A0 / q, REAL_ROOT_RTOL2);
   } else if (cabs(A1) > 0) {
     b->lead = cabs(A1);
-    add_root(b, -A0 / A1, 1);
+    add_pair(b, -A0 / A1, REAL_ROOT_RTOL2);
   } else {
     b->lead = cabs(A0);
   }
@@ -93,13 +93,15 @@ static void aberth(const double *c, int n, double complex *z) {
 }
 
 /* 3D: Q = |a2|^2 t^4 + 2 a2.a1 t^3 + (|a1|^2 + 2 a2.a0) t^2 + 2 a1.a0 t + |a0|^2
-** has no complex factorisation; its roots come from Aberth's iteration
-** (cusps give near-double roots, reported as close conjugate pairs: this
-** only makes the quadrature more careful). */
+** has no complex factorisation; its roots come from Aberth's iteration.
+** They are matched into conjugate pairs by closeness of (re, |im|): each
+** root is paired with the nearest unused root whose imaginary part has the
+** other sign or is near zero. */
 static void branch3(const arclen_hodo *h, arclen_branch *b) {
   double q[5] = {0, 0, 0, 0, 0}, m[4];
   double complex z[4];
-  int k, deg = 4;
+  int used[4] = {0, 0, 0, 0};
+  int k, j, deg = 4;
   for (k = 0; k < 3; k++) {
     q[4] += h->a2[k] * h->a2[k];
     q[3] += 2 * h->a2[k] * h->a1[k];
@@ -113,13 +115,19 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
   for (k = 0; k < deg; k++) m[k] = q[k] / q[deg];
   aberth(m, deg, z);
   for (k = 0; k < deg; k++) {
-    int j, dup = 0;
-    if (cimag(z[k]) < 0) continue;       /* keep one of each conjugate pair */
-    for (j = 0; j < b->n; j++)
-      if (fabs(b->re[j] - creal(z[k])) <= REAL_ROOT_RTOL * (1 + fabs(b->re[j])) &&
-          fabs(b->im[j] - cimag(z[k])) <= REAL_ROOT_RTOL * (1 + fabs(b->re[j])))
-        dup = 1;
-    if (!dup) add_root(b, z[k], 1);
+    int best = -1;
+    double bestd = HUGE_VAL;
+    if (used[k]) continue;
+    used[k] = 1;
+    for (j = 0; j < deg; j++) {
+      double dist;
+      if (used[j]) continue;
+      dist = cabs(z[j] - conj(z[k]));
+      if (dist < bestd) { bestd = dist; best = j; }
+    }
+    if (best >= 0) used[best] = 1;
+    /* the pair's mean: (z + conj(partner)) / 2 */
+    add_pair(b, best >= 0 ? (z[k] + conj(z[best])) / 2 : z[k], REAL_ROOT_RTOL3);
   }
 }
 

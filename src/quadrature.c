@@ -5,8 +5,9 @@
 ** The speed f = sqrt(Q) is analytic inside the Bernstein ellipse E_rho of a
 ** piece that reaches up to the nearest branch point (branch.c).  For such f,
 ** |f| <= M on E_rho, the n-point rule errs by at most
-**     (64/15) M rho^(-2n) / (rho^2 - 1)      on [-1, 1]
-** (Trefethen, "Approximation Theory and Approximation Practice", Thm 19.3).
+**     (64/15) M rho^(2-2n) / (rho^2 - 1)      on [-1, 1]
+** (Trefethen, "Approximation Theory and Approximation Practice", Thm 19.3,
+** whose I_n has n+1 points; it follows from |a_k| <= 2 M rho^-k, Thm 8.1).
 ** The bound cannot be fooled by two rules agreeing by accident: it is read
 ** off the geometry.  Pieces are cut at the speed's minima (where near-cusps
 ** sit) or in the middle while no order up to NMAX meets their share of the
@@ -67,7 +68,7 @@ static double ellipse_rho(double c, double hh, double re, double im) {
 
 typedef struct piece_bound {
   double rho;         /* reach of analyticity, capped at RHO_CAP */
-  double c;           /* hh * (64/15) M / (rho^2 - 1) */
+  double c;           /* hh * (64/15) M rho^2 / (rho^2 - 1) */
   int inside;         /* a real (double) root strictly inside: must split */
 } piece_bound;
 
@@ -77,23 +78,23 @@ static void bound_piece(const arclen_branch *br, double c, double hh,
   int k;
   pb->inside = 0;
   for (k = 0; k < br->n; k++) {
-    if (br->mult[k] == 2) {          /* no branch point, but a kink inside */
+    if (br->im[k] == 0) {            /* no branch point, but a kink inside */
       if (fabs(br->re[k] - c) < hh * (1 - 1e-12)) pb->inside = 1;
-      continue;
+    } else {
+      double r = ellipse_rho(c, hh, br->re[k], br->im[k]);
+      if (r < rho) rho = r;
     }
-    double r = ellipse_rho(c, hh, br->re[k], br->im[k]);
-    if (r < rho) rho = r;
   }
   if (rho > RHO_CAP) rho = RHO_CAP;
   pb->rho = rho;
-  /* M <= lead * prod (|c - r_k| + alpha), alpha the ellipse's semi-major
-  ** axis in t units: every factor |z - r_k| of |f(z)| is at most that. */
+  /* M <= lead * prod sqrt(|c - r_k| + alpha), alpha the ellipse's
+  ** semi-major axis in t units: every |z - r_k| on it is at most that. */
   alpha = hh * (rho + 1 / rho) / 2;
   m = br->lead;
   for (k = 0; k < br->n; k++)
-    m *= sqrt((br->re[k] - c) * (br->re[k] - c) + br->im[k] * br->im[k])
-         + alpha;
-  pb->c = hh * (64.0 / 15.0) * m / ((rho - 1) * (rho + 1));
+    m *= sqrt(sqrt((br->re[k] - c) * (br->re[k] - c) + br->im[k] * br->im[k])
+              + alpha);
+  pb->c = hh * (64.0 / 15.0) * m * rho * rho / ((rho - 1) * (rho + 1));
 }
 
 /* The smallest order whose bound c rho^(-2n) is <= target, or NULL past
@@ -102,13 +103,14 @@ static void bound_piece(const arclen_branch *br, double c, double hh,
 ** exactly. */
 static const arclen_gauss_rule *choose_rule(const piece_bound *pb,
                                             double target, double *err) {
-  double n;
   const arclen_gauss_rule *r;
   if (!(pb->c > 0) || !(target > 0)) return NULL;
   if (pb->c <= target) {
     r = rule_at_least(2);
   } else {
-    n = (rough_log(pb->c / target) + 1e-3) / (2 * rough_log(pb->rho) - 1e-5);
+    double n, rate = 2 * rough_log(pb->rho) - 1e-5;
+    if (!(rate > 0)) return NULL;           /* rho ~ 1: no order will do */
+    n = (rough_log(pb->c / target) + 1e-3) / rate;
     if (!(n <= NMAX)) return NULL;          /* also catches NaN */
     r = rule_at_least(n < 2 ? 2 : (int)ceil(n));
   }
