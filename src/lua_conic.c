@@ -128,7 +128,7 @@ static int pick_level(lua_State *L, int optarg, const double *c, int n,
                                 &lk, &b);
     if (rc == ARCLEN_ENOCONV)
       luaL_argerror(L, optarg, lua_pushfstring(L,
-          "tol not reached by level %d (bound %g)", ARCLEN_CONIC_MAXLEVEL, b));
+          "tol not reached by level %d (bound %f)", ARCLEN_CONIC_MAXLEVEL, b));
     else if (rc != ARCLEN_OK)
       arclenL_argcode(L, optarg, rc);
     if (lk > level) level = lk;
