@@ -26,20 +26,31 @@
 ** 1e-300 against 1e300.  The cap is only a guard. */
 #define DUP_MAX 100
 
-/* Arguments beyond 2^+-960 are scaled by an exact power of 4 first
-** (the R-functions are homogeneous), so nothing overflows or underflows. */
-#define BIG 0x1p960
-#define SMALL 0x1p-960
+/* Arguments beyond 2^+-500 are scaled by an exact power of 4 first
+** (the R-functions are homogeneous): R_D and R_J form products like
+** sqrt(z)^3 that must stay within double range.  Arguments spread wider
+** than 2^1000 cannot all be kept: the largest is brought to 2^500 and the
+** tiniest may underflow (zero, or a domain error if that makes two). */
+#define BIG 0x1p500
+#define SMALL 0x1p-500
 
 static double max3(double a, double b, double c) {
   double m = a > b ? a : b;
   return m > c ? m : c;
 }
 
-/* k such that 4^k * mx is near 1, or 0 when mx needs no scaling. */
-static int scale_exp(double mx) {
-  if (mx > BIG || (mx > 0 && mx < SMALL)) return -ilogb(mx) / 2;
-  return 0;
+/* k such that 4^k centres the arguments' range [mn, mx] (mn the smallest
+** nonzero one) on 1, or 0 when nothing is beyond 2^+-500. */
+static int scale_exp(const double *v, int n) {
+  double mx = 0, mn = HUGE_VAL;
+  int i;
+  for (i = 0; i < n; i++) {
+    mx = fmax(mx, v[i]);
+    if (v[i] > 0) mn = fmin(mn, v[i]);
+  }
+  if (mx == 0 || (mx <= BIG && mn >= SMALL)) return 0;
+  if (ilogb(mx) - ilogb(mn) > 1000) return (500 - ilogb(mx)) / 2;
+  return -(ilogb(mx) + ilogb(mn)) / 4;
 }
 
 static int ok_arg(double v) { return v >= 0 && v < HUGE_VAL; }
@@ -70,7 +81,7 @@ static double rf_dup(double x, double y, double z) {
 double arclen_rf(double x, double y, double z) {
   int k, zeros = (x == 0) + (y == 0) + (z == 0);
   if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || zeros > 1) return NAN;
-  k = scale_exp(max3(x, y, z));
+  { double v[3] = {x, y, z}; k = scale_exp(v, 3); }
   if (k == 0) return rf_dup(x, y, z);
   x = ldexp(x, 2 * k); y = ldexp(y, 2 * k); z = ldexp(z, 2 * k);
   return ldexp(rf_dup(x, y, z), k);        /* R_F(4^k v) = 2^-k R_F(v) */
@@ -111,7 +122,7 @@ double arclen_rd(double x, double y, double z) {
   int k;
   if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || z == 0 || (x == 0 && y == 0))
     return NAN;
-  k = scale_exp(max3(x, y, z));
+  { double v[3] = {x, y, z}; k = scale_exp(v, 3); }
   if (k == 0) return rd_dup(x, y, z);
   x = ldexp(x, 2 * k); y = ldexp(y, 2 * k); z = ldexp(z, 2 * k);
   return ldexp(rd_dup(x, y, z), 3 * k);    /* R_D(4^k v) = 8^-k R_D(v) */
@@ -137,7 +148,8 @@ static double rc_dup(double x, double y) {
 }
 
 static double rc_pos(double x, double y) {
-  int k = scale_exp(x > y ? x : y);
+  double v[2] = {x, y};
+  int k = scale_exp(v, 2);
   if (k == 0) return rc_dup(x, y);
   return ldexp(rc_dup(ldexp(x, 2 * k), ldexp(y, 2 * k)), k);
 }
@@ -188,7 +200,8 @@ static double rj_dup(double x, double y, double z, double p) {
 }
 
 static double rj_pos(double x, double y, double z, double p) {
-  int k = scale_exp(fmax(max3(x, y, z), p));
+  double v[4] = {x, y, z, p};
+  int k = scale_exp(v, 4);
   if (k == 0) return rj_dup(x, y, z, p);
   return ldexp(rj_dup(ldexp(x, 2 * k), ldexp(y, 2 * k), ldexp(z, 2 * k),
                       ldexp(p, 2 * k)), 3 * k);

@@ -38,6 +38,7 @@ int arclenL_argcode(lua_State *L, int arg, int code);
 void arclen_open_core(lua_State *L);
 void arclen_open_conic(lua_State *L);
 void arclen_open_henkel(lua_State *L);
+void arclen_open_elliptic(lua_State *L);
 /* new areas: one line each, above this line */
 
 #endif

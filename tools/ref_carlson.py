@@ -12,7 +12,8 @@ Writes
       [1e-10, 1e10], 10% with one zero argument (where the integral stays
       finite), plus Cauchy principal values (R_C with y < 0: the real part
       of mpmath's elliprc; R_J with p < 0: quadrature, see rj_pv_quad).
-      Column cond: the condition of the principal-value reduction.
+      Column lo: ref - double(ref); cond: the condition of the
+      principal-value reduction (1 elsewhere).
 
 Run with Debian's python3-mpmath:  /usr/bin/python3 tools/ref_carlson.py
 """
@@ -92,7 +93,12 @@ def pv_cond(fn, args):
 
 
 def fmt(v):
-    return mp.nstr(v, 30, min_fixed=-5, max_fixed=5)
+    """30 digits, then a tab and the rounding residual v - double(v), so a
+    spec measures got - v as (got - hi) - lo without the reference's own
+    half-ulp rounding."""
+    hi = float(v)
+    return "%s\t%r" % (mp.nstr(v, 30, min_fixed=-5, max_fixed=5),
+                        float(v - mp.mpf(hi)))
 
 
 def loguni(rng):
@@ -102,14 +108,14 @@ def loguni(rng):
 def main():
     rng = random.Random(20261121)
     with open("spec/data/carlson_checks.tsv", "w") as f:
-        f.write("fn\tx\ty\tz\tp\tpublished\tref\n")
+        f.write("fn\tx\ty\tz\tp\tpublished\tref\tlo\n")
         for fn, args, pub in CHECKS:
             a = list(args) + [""] * (4 - len(args))
             f.write("%s\t%s\t%s\t%s\t%s\t%s\t%s\n" % (
                 fn, *[repr(float(v)) if v != "" else "" for v in a], pub,
                 fmt(ref(fn, args))))
     with open("spec/data/carlson.tsv", "w") as f:
-        f.write("fn\tkind\tx\ty\tz\tp\tref\tcond\n")
+        f.write("fn\tkind\tx\ty\tz\tp\tref\tlo\tcond\n")
         for fn in ("rf", "rd", "rc", "rj", "rg"):
             n = NARGS[fn]
             for i in range(N):

@@ -1,0 +1,118 @@
+-- Carlson's R-functions (src/carlson.c) against mpmath (tools/ref_carlson.py)
+-- and the check values published in Carlson (1995), arXiv math/9409227.
+-- Errors are measured against the 30-digit reference as (got - hi) - lo,
+-- where hi + lo is the reference split into two doubles, so the bound in
+-- eps is the function's own error, not the reference's rounding.
+local arclen = require("arclen")
+local H = require("helpers")
+local R = arclen.carlson
+local EPS = 2.0 ^ -52
+
+local function args(row)
+  local a = {}
+  for _, k in ipairs({"x", "y", "z", "p"}) do
+    if row[k] ~= "" then a[#a + 1] = assert(tonumber(row[k]), k) end
+  end
+  return a
+end
+
+-- Relative error in units of eps.
+local function err_eps(got, row)
+  local hi, lo = tonumber(row.ref), tonumber(row.lo)
+  if hi == 0 then return got == 0 and 0 or math.huge end
+  return math.abs((got - hi) - lo) / math.abs(hi) / EPS
+end
+
+describe("carlson", function()
+  local checks = H.tsv("carlson_checks.tsv")
+
+  it("reproduces Carlson (1995)'s real-argument check values (14 printed digits)", function()
+    assert.are.equal(15, #checks)
+    for _, row in ipairs(checks) do
+      local got = R[row.fn](table.unpack(args(row)))
+      assert.is_true(H.relerr(got, tonumber(row.published)) < 1e-13,
+        row.fn .. ": " .. got .. " vs published " .. row.published)
+    end
+  end)
+
+  it("check values within 5e-16 relative of mpmath", function()
+    for _, row in ipairs(checks) do
+      local got = R[row.fn](table.unpack(args(row)))
+      local e = err_eps(got, row) * EPS
+      assert.is_true(e <= 5e-16, ("%s(%s): rel. error %.3g"):format(
+        row.fn, table.concat(args(row), ", "), e))
+    end
+  end)
+
+  local rows = H.tsv("carlson.tsv")
+  for _, fn in ipairs({"rf", "rd", "rc", "rj", "rg"}) do
+    for _, kind in ipairs({"random", "zero", "pv"}) do
+      local n, worst = 0, H.worst()
+      -- Principal values come from a reduction (DLMF 19.20.14) that adds
+      -- an R_J (<= 4 eps), an R_F and the rounding of its own parameters
+      -- (t, r, products: ~4 operations): 8 eps times its condition number
+      -- (sum of the terms' magnitudes over the result, from mpmath).
+      local limit = kind == "pv" and 8 or 4
+      local bound = kind == "pv" and "8 eps times the reduction's condition" or "4 eps"
+      local function run()
+        for _, row in ipairs(rows) do
+          if row.fn == fn and row.kind == kind then
+            n = n + 1
+            local a = args(row)
+            local e = err_eps(R[fn](table.unpack(a)), row)
+            worst:add(e / tonumber(row.cond), table.concat(a, ", "))
+          end
+        end
+      end
+      if kind ~= "pv" or fn == "rc" or fn == "rj" then
+        it(fn .. " " .. kind .. " arguments in [1e-10, 1e10]: max error <= " .. bound, function()
+          run()
+          assert.is_true(n >= (kind == "random" and 1800 or 200), "too few rows: " .. n)
+          assert.is_true(worst.err <= limit, ("worst %s(%s): %.3g eps"):format(
+            fn, tostring(worst.id), worst.err))
+        end)
+      end
+    end
+  end
+
+  it("zero arguments with a finite integral", function()
+    assert.is_true(math.abs(R.rc(0, 0.25) - math.pi) <= 2 * EPS * math.pi)
+    assert.are.equal(0, R.rc(0, -3))          -- principal value at x = 0
+    assert.are.equal(2, R.rg(0, 0, 16))       -- R_G(0, 0, z) = sqrt(z)/2
+    assert.are.equal(0, R.rg(0, 0, 0))
+    assert.is_true(R.rf(0, 1, 1) > 0 and R.rd(0, 1, 1) > 0 and R.rj(0, 1, 1, 1) > 0)
+  end)
+
+  it("extreme arguments stay finite and homogeneous (no overflow, no hang)", function()
+    local a = R.rf(1e-300, 2e-300, 3e-300)
+    local b = R.rf(1, 2, 3)
+    assert.is_true(math.abs(a / b / 1e150 - 1) < 4 * EPS)
+    assert.is_true(math.abs(R.rd(1e200, 2e200, 3e200) * 1e300 / R.rd(1, 2, 3) - 1) < 4 * EPS)
+    assert.is_true(math.abs(R.rj(1e-200, 2e-200, 3e-200, 4e-200) / 1e300 / R.rj(1, 2, 3, 4) - 1) < 4 * EPS)
+    local v = R.rj(1e-150, 1e150, 1, 1e-100)
+    assert.is_true(v > 0 and v < math.huge)
+    v = R.rj(1e-200, 1e-190, 1e-180, 1e-200)
+    assert.is_true(v > 0 and v < math.huge)
+    v = R.rd(1e300, 1e301, 1e302)
+    assert.is_true(v > 0 and v < math.huge)
+  end)
+
+  it("domain errors name the argument", function()
+    -- called by name (R.rf(...)), so the message can name the function
+    local call = {
+      rf = function(...) return R.rf(...) end, rd = function(...) return R.rd(...) end,
+      rc = function(...) return R.rc(...) end, rj = function(...) return R.rj(...) end,
+      rg = function(...) return R.rg(...) end,
+    }
+    local function msg(f, ...) return H.error_of(call[f], ...) end
+    assert.matches("bad argument #2 to 'rf' %(y must be >= 0%)", msg("rf", 1, -1, 2))
+    assert.matches("bad argument #3 to 'rf' %(at most one of x, y, z may be 0", msg("rf", 1, 0, 0))
+    assert.matches("bad argument #2 to 'rd' %(x and y must not both be 0", msg("rd", 0, 0, 1))
+    assert.matches("bad argument #3 to 'rd' %(z must be > 0", msg("rd", 1, 1, 0))
+    assert.matches("bad argument #2 to 'rc' %(y must not be 0%)", msg("rc", 1, 0))
+    assert.matches("bad argument #4 to 'rj' %(p must not be 0%)", msg("rj", 1, 2, 3, 0))
+    assert.matches("bad argument #1 to 'rg' %(x must be >= 0%)", msg("rg", -1, 2, 3))
+    assert.matches("bad argument #1 to 'rf' %(x must be finite%)", msg("rf", 0 / 0, 1, 2))
+    assert.matches("bad argument #3 to 'rj' %(z must be a number", msg("rj", 1, 2, "a", 1))
+  end)
+end)
