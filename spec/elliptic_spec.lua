@@ -1,0 +1,120 @@
+-- method = "elliptic" (src/elliptic.c) against the 40-digit references of
+-- tools/ref_lengths.py (spec/data/curves2d.tsv).  Bounds from the issue:
+-- Henkel's six arcs <= 5e-15 relative, every curve <= 1e-13.
+local arclen = require("arclen")
+local H = require("helpers")
+
+local function elliptic(c, t0, t1)
+  return arclen.length(c, {method = "elliptic", t0 = t0, t1 = t1, info = true})
+end
+
+local function families(rows)
+  local seen, list = {}, {}
+  for _, row in ipairs(rows) do
+    if not seen[row.family] then seen[row.family] = true; list[#list + 1] = row.family end
+  end
+  return list
+end
+
+local function check_file(file)
+  local rows = H.tsv(file)
+  for _, family in ipairs(families(rows)) do
+    local bound = family == "henkel" and 5e-15 or 1e-13
+    it(file .. " " .. family .. ": s(1/4), s(1/2), s(3/4), L within " .. bound, function()
+      local worst = H.worst()
+      for _, row in ipairs(rows) do
+        if row.family == family then
+          local c = H.curve(row)
+          for _, p in ipairs({{0.25, "L25"}, {0.5, "L50"}, {0.75, "L75"}, {1, "L"}}) do
+            local want = tonumber(row[p[2]])
+            local got = elliptic(c, 0, p[1])
+            if want == 0 then
+              assert.are.equal(0, got, row.id .. ": a point has length 0 exactly")
+            else
+              worst:add(H.relerr(got, want), row.id .. " t=" .. p[1])
+            end
+          end
+        end
+      end
+      assert.is_true(worst.err <= bound,
+        ("worst %s: %.3g > %.3g"):format(tostring(worst.id), worst.err, bound))
+    end)
+  end
+end
+
+describe("elliptic", function()
+  check_file("curves2d.tsv")
+
+  -- Henkel's failures (seed 003, Sec. 6), by name.
+  local henkel = {}
+  for _, row in ipairs(H.curves("curves2d.tsv", "henkel")) do
+    henkel[tonumber(row.id:match("(%d+)$"))] = row
+  end
+  local function case(n, branch, exact)
+    local row = henkel[n]
+    local got, info = elliptic(H.curve(row), 0, 1)
+    assert.are.equal(branch, info.branch)
+    assert.is_true(H.relerr(got, tonumber(row.L)) <= 5e-15)
+    if exact then assert.is_true(H.relerr(got, exact) <= 5e-15) end
+    return info
+  end
+
+  it("well-behaved arc (curve 1) by Carlson's [1,1,1,1] with 5 R-calls", function()
+    local info = case(1, "carlson")
+    assert.are.equal(5, info.calls)
+  end)
+  it("cusp (curve 2): closed form 20 sqrt 2 - 10", function()
+    case(2, "cusp", 20 * math.sqrt(2) - 10)
+  end)
+  it("near cusp (curve 3) keeps its digits", function()
+    -- the hodograph root is 3e-10 off the axis: the cusp closed form is
+    -- exact to b^2 log(1/b) ~ 1e-18 (Carlson's R_F would diverge)
+    case(3, "cusp")
+  end)
+  it("collinear (curve 4): 10 sqrt 2", function()
+    case(4, "collinear", 10 * math.sqrt(2))
+  end)
+  it("two cusps (curve 5) does not hang: 10 sqrt 2 + 4 sqrt 10", function()
+    case(5, "collinear", 10 * math.sqrt(2) + 4 * math.sqrt(10))
+  end)
+  it("two near cusps (curve 6) keeps its digits", function()
+    case(6, "carlson")
+  end)
+
+  it("a point has length 0 exactly; empty and reversed ranges", function()
+    local p = {3, 4, 3, 4, 3, 4, 3, 4}
+    assert.are.equal(0, (elliptic(p, 0, 1)))
+    local c = H.curve(henkel[1])
+    assert.are.equal(0, (elliptic(c, 0.3, 0.3)))
+    local a, b = elliptic(c, 0.2, 0.7), elliptic(c, 0.7, 0.2)
+    assert.are.equal(a, -b)
+  end)
+
+  it("a near-quadratic cubic takes the far-root series", function()
+    -- degree-elevated quadratic (0,0) (3,6) (6,0), perturbed by 1e-6
+    local c = {0, 0, 2, 4, 4, 4 + 1e-6, 6, 0}
+    local _, info = elliptic(c, 0, 1)
+    assert.is_truthy(info.branch:match("^series") or info.branch == "quadratic")
+  end)
+
+  it("never NaN, never negative, on wild curves (tiny, huge, far away, degenerate)", function()
+    local seed = 12345
+    local function rnd()   -- a small LCG: the spec must not depend on math.random
+      seed = (seed * 1103515245 + 12345) % 2147483648
+      return seed / 2147483648
+    end
+    local scales = {1e-300, 1e-150, 1e-12, 1, 1e12, 1e150, 1e300}
+    for i = 1, 2000 do
+      local s = scales[i % #scales + 1]
+      local off = (i % 3 == 0) and 1e6 * s or 0
+      local c = {}
+      for k = 1, 8 do c[k] = off + s * (rnd() - 0.5) end
+      if i % 5 == 0 then c[3], c[4] = c[1], c[2] end          -- coincident
+      if i % 7 == 0 then for k = 1, 8, 2 do c[k + 1] = 2 * c[k] end end  -- collinear
+      local t0, t1 = rnd(), rnd()
+      local got = elliptic(c, t0, t1)
+      assert.is_true(got == got and math.abs(got) < math.huge, "NaN/inf for curve " .. i)
+      if t1 >= t0 then assert.is_true(got >= 0) end
+    end
+  end)
+end)
