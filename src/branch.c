@@ -37,28 +37,46 @@ static void add_pair(arclen_branch *b, double complex z, double rtol) {
 ** their conjugates.  The root formula avoids cancellation: d is the square
 ** root of the discriminant on the side of A1, q = -(A1 + d)/2, roots q/A2
 ** and A0/q (see notes/elliptic.md). */
+static double complex cdiv(double complex p, double complex q) {
+  /* p / q by the textbook formula: the operands are scaled (hodo_scaled),
+  ** so |q|^2 cannot overflow, and C99's careful division is slow. */
+  double d = creal(q) * creal(q) + cimag(q) * cimag(q);
+  return ((creal(p) * creal(q) + cimag(p) * cimag(q)) +
+          I * (cimag(p) * creal(q) - creal(p) * cimag(q))) / d;
+}
+
+static double complex root_of(double complex w) {
+  /* principal square root in real arithmetic (Kahan's formulation) */
+  double u = creal(w), v = cimag(w), r = sqrt(u * u + v * v);
+  double s = sqrt((r + fabs(u)) / 2);
+  if (s == 0) return 0;
+  return u >= 0 ? s + I * (v / (2 * s)) : fabs(v) / (2 * s) + I * copysign(s, v);
+}
+
 static void branch2(const arclen_hodo *h, arclen_branch *b) {
   double complex A2 = h->a2[0] + I * h->a2[1];
   double complex A1 = h->a1[0] + I * h->a1[1];
   double complex A0 = h->a0[0] + I * h->a0[1];
-  if (cabs(A2) > 0) {
-    double complex d = csqrt(A1 * A1 - 4 * A2 * A0);
+  double n2 = h->a2[0] * h->a2[0] + h->a2[1] * h->a2[1];
+  double n1 = h->a1[0] * h->a1[0] + h->a1[1] * h->a1[1];
+  if (n2 > 0) {
+    double complex d = root_of(A1 * A1 - 4 * A2 * A0);
     double complex q;
-    if (creal(conj(A1) * d) < 0) d = -d;
+    if (creal(A1) * creal(d) + cimag(A1) * cimag(d) < 0) d = -d;
     q = -(A1 + d) / 2;
-    b->lead = cabs(A2);
-    if (cabs(q) == 0) {                  /* A1 = A0 = 0: double root at 0 */
+    b->lead = sqrt(n2);
+    if (q == 0) {                        /* A1 = A0 = 0: double root at 0 */
       add_pair(b, 0, REAL_ROOT_RTOL2);
       add_pair(b, 0, REAL_ROOT_RTOL2);
       return;
     }
-    add_pair(b, q / A2, REAL_ROOT_RTOL2);
-    add_pair(b, A0 / q, REAL_ROOT_RTOL2);
-  } else if (cabs(A1) > 0) {
-    b->lead = cabs(A1);
-    add_pair(b, -A0 / A1, REAL_ROOT_RTOL2);
+    add_pair(b, cdiv(q, A2), REAL_ROOT_RTOL2);
+    add_pair(b, cdiv(A0, q), REAL_ROOT_RTOL2);
+  } else if (n1 > 0) {
+    b->lead = sqrt(n1);
+    add_pair(b, -cdiv(A0, A1), REAL_ROOT_RTOL2);
   } else {
-    b->lead = cabs(A0);
+    b->lead = sqrt(h->a0[0] * h->a0[0] + h->a0[1] * h->a0[1]);
   }
 }
 

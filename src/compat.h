@@ -10,6 +10,10 @@
 
 #if !defined(LUA_VERSION_NUM) || LUA_VERSION_NUM < 502
 #define lua_rawlen(L, i) lua_objlen(L, (i))
+#endif
+
+/* LuaJIT 2.1 has 5.2's luaL_setfuncs and luaL_newlib already. */
+#if (!defined(LUA_VERSION_NUM) || LUA_VERSION_NUM < 502) && !defined(luaL_newlibtable)
 #define luaL_newlibtable(L, l) lua_createtable(L, 0, sizeof(l) / sizeof((l)[0]) - 1)
 #define luaL_newlib(L, l) (luaL_newlibtable(L, l), luaL_setfuncs(L, l, 0))
 /* luaL_setfuncs as in 5.2's lauxlib.c, for nup == 0 only. */

@@ -115,9 +115,10 @@ void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h) {
     arclen_hodograph(c, dim, h->a2, h->a1, h->a0);
   }
   for (k = 0; k < dim; k++) {
-    big = fmax(big, fabs(h->a2[k]));
-    big = fmax(big, fabs(h->a1[k]));
-    big = fmax(big, fabs(h->a0[k]));
+    double v2 = fabs(h->a2[k]), v1 = fabs(h->a1[k]), v0 = fabs(h->a0[k]);
+    if (v2 > big) big = v2;
+    if (v1 > big) big = v1;
+    if (v0 > big) big = v0;
   }
   if (big == 0) {
     h->scale = 1;
@@ -128,30 +129,21 @@ void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h) {
   ** every scaled value is exact (frexp gives big = m 2^e, 0.5 <= m < 1). */
   frexp(big, &e);
   h->scale = ldexp(1.0, e);
-  for (k = 0; k < dim; k++) {
-    if (e > -1000 && e < 1000) {    /* 2^-e is a normal double: multiply */
-      double inv = 1 / h->scale;
+  if (e > -1000 && e < 1000) {      /* 2^-e is a normal double: multiply */
+    double inv = 1 / h->scale;
+    for (k = 0; k < dim; k++) {
       h->a2[k] *= inv;
       h->a1[k] *= inv;
       h->a0[k] *= inv;
-    } else {
+    }
+  } else {
+    for (k = 0; k < dim; k++) {
       h->a2[k] = ldexp(h->a2[k], -e);
       h->a1[k] = ldexp(h->a1[k], -e);
       h->a0[k] = ldexp(h->a0[k], -e);
     }
   }
   h->scale /= pre;    /* may overflow to inf: so does the length */
-}
-
-/* Speed in scaled units, |a2 t^2 + a1 t + a0| by Horner per coordinate. */
-double arclen_hodo_speed(const arclen_hodo *h, double t) {
-  double s = 0;
-  int k;
-  for (k = 0; k < h->dim; k++) {
-    double v = (h->a2[k] * t + h->a1[k]) * t + h->a0[k];
-    s += v * v;
-  }
-  return sqrt(s);
 }
 
 /* Chord |z(b) - z(a)| in scaled units, from the antiderivative of the

@@ -6,6 +6,8 @@
 #ifndef ARCLEN_CUBIC_H
 #define ARCLEN_CUBIC_H
 
+#include <math.h>
+
 /* z'(t) / scale = a2 t^2 + a1 t + a0, with scale a power of two chosen so
 ** that the largest coefficient lies in [0.5, 1). */
 typedef struct arclen_hodo {
@@ -16,7 +18,14 @@ typedef struct arclen_hodo {
 } arclen_hodo;
 
 void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h);
-double arclen_hodo_speed(const arclen_hodo *h, double t);
+/* Speed in scaled units, |a2 t^2 + a1 t + a0| by Horner per coordinate;
+** inline, since quadrature spends most of its time here. */
+static inline double arclen_hodo_speed(const arclen_hodo *h, double t) {
+  double x = (h->a2[0] * t + h->a1[0]) * t + h->a0[0];
+  double y = (h->a2[1] * t + h->a1[1]) * t + h->a0[1];
+  double z = h->dim == 3 ? (h->a2[2] * t + h->a1[2]) * t + h->a0[2] : 0;
+  return sqrt(x * x + y * y + z * z);
+}
 double arclen_hodo_chord(const arclen_hodo *h, double a, double b);
 int arclen_hodo_critical(const arclen_hodo *h, double roots[3]);
 int arclen_cubic_roots01(const double p[4], double roots[3]);

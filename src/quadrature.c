@@ -14,6 +14,7 @@
 ** tolerance, or while two halves need fewer points than the whole.
 */
 #include <math.h>
+#include <stdint.h>
 #include <string.h>
 
 #include "arclen.h"
@@ -49,11 +50,21 @@ static double apply_rule(const arclen_hodo *h, const arclen_gauss_rule *r,
 
 /* log(x) within 3e-6, for choosing orders (the callers add a margin):
 ** log(m 2^e) = e log 2 + 2 atanh((m - 1)/(m + 1)), m in [1, 2), so the
-** atanh series in z <= 1/3 converges fast.  Four times cheaper than log. */
+** atanh series in z <= 1/3 converges fast.  The exponent and mantissa are
+** read off the bits (IEEE 754 binary64); zero, subnormals, inf and NaN go
+** to log(). */
 static double rough_log(double x) {
+  uint64_t u;
+  double m, z, z2;
   int e;
-  double m = 2 * frexp(x, &e), z = (m - 1) / (m + 1), z2 = z * z;
-  return (e - 1) * 0.69314718055994531 +
+  memcpy(&u, &x, sizeof u);
+  e = (int)((u >> 52) & 0x7ff);
+  if (e == 0 || e == 0x7ff || (u >> 63)) return log(x);
+  u = (u & 0xfffffffffffffULL) | 0x3ff0000000000000ULL;
+  memcpy(&m, &u, sizeof m);
+  z = (m - 1) / (m + 1);
+  z2 = z * z;
+  return (e - 1023) * 0.69314718055994531 +
          2 * z * (1 + z2 * (1.0 / 3 + z2 * (1.0 / 5 + z2 * (1.0 / 7 + z2 / 9))));
 }
 
@@ -77,7 +88,7 @@ static void bound_piece(const arclen_branch *br, double c, double hh,
   double rho = HUGE_VAL, m, alpha;
   int k;
   pb->inside = 0;
-  for (k = 0; k < br->n; k++) {
+  for (k = 0; k < br->n; k += 2) {     /* roots come in conjugate pairs */
     if (br->im[k] == 0) {            /* no branch point, but a kink inside */
       if (fabs(br->re[k] - c) < hh * (1 - 1e-12)) pb->inside = 1;
     } else {
@@ -88,12 +99,12 @@ static void bound_piece(const arclen_branch *br, double c, double hh,
   if (rho > RHO_CAP) rho = RHO_CAP;
   pb->rho = rho;
   /* M <= lead * prod sqrt(|c - r_k| + alpha), alpha the ellipse's
-  ** semi-major axis in t units: every |z - r_k| on it is at most that. */
+  ** semi-major axis in t units: every |z - r_k| on it is at most that;
+  ** a conjugate pair contributes |c - r_k| + alpha. */
   alpha = hh * (rho + 1 / rho) / 2;
   m = br->lead;
-  for (k = 0; k < br->n; k++)
-    m *= sqrt(sqrt((br->re[k] - c) * (br->re[k] - c) + br->im[k] * br->im[k])
-              + alpha);
+  for (k = 0; k < br->n; k += 2)
+    m *= sqrt((br->re[k] - c) * (br->re[k] - c) + br->im[k] * br->im[k]) + alpha;
   pb->c = hh * (64.0 / 15.0) * m * rho * rho / ((rho - 1) * (rho + 1));
 }
 
@@ -102,7 +113,7 @@ static void bound_piece(const arclen_branch *br, double c, double hh,
 ** 1.002 on the bound) and the bound of the chosen order is computed
 ** exactly. */
 static const arclen_gauss_rule *choose_rule(const piece_bound *pb,
-                                            double target, double *err) {
+                                            double target) {
   const arclen_gauss_rule *r;
   if (!(pb->c > 0) || !(target > 0)) return NULL;
   if (pb->c <= target) {
@@ -114,7 +125,6 @@ static const arclen_gauss_rule *choose_rule(const piece_bound *pb,
     if (!(n <= NMAX)) return NULL;          /* also catches NaN */
     r = rule_at_least(n < 2 ? 2 : (int)ceil(n));
   }
-  *err = pb->c * pow(pb->rho, -2.0 * r->n);
   return r;
 }
 
@@ -125,7 +135,7 @@ typedef struct integrator {
   arclen_hodo h;
   arclen_branch br;
   double rtol, lest, width;   /* tolerance, lower bound of L, t1 - t0 */
-  double mins[3];             /* the speed's minima inside (t0, t1) */
+  double mins[2];             /* feet of near branch points in (t0, t1) */
   int nmin;
   span stack[MAXSTACK];
   int top;
@@ -143,39 +153,44 @@ static void push(integrator *in, double a, double b, int depth) {
   }
 }
 
-/* Q'.Q'' rises through zero at a minimum of the speed. */
-static int is_minimum(const arclen_hodo *h, double t) {
-  double d = 1e-7 * (t < 0.5 ? 1 - t : t);
-  return arclen_hodo_speed(h, t) <= arclen_hodo_speed(h, t - d) &&
-         arclen_hodo_speed(h, t) <= arclen_hodo_speed(h, t + d);
-}
-
-/* Set up: find the speed's minima (where near-cusps sit) and bound L from
-** below by the sum of chords between the critical points, so that every
-** piece's share of the tolerance is safe. */
+/* Set up: the cuts are the feet of the branch points near [t0, t1] (the
+** real part of each conjugate pair, and each real root): as a branch point
+** nears the axis the speed dips to a minimum (a near-cusp) right below it,
+** so these are the speed's minima that matter -- the roots of Q'.Q'' that
+** lie under no nearby branch point cost a piece and gain nothing.  L is
+** bounded below by the sum of chords between cuts, so every piece's share
+** of the tolerance is safe. */
 static void start(integrator *in, const double *c, int dim, double t0,
                   double t1, double rtol) {
-  double cuts[5], crit[3];
-  int nc = 0, ncrit, i;
+  int i, j;
+  double prev;
   memset(in, 0, sizeof *in);
   arclen_hodo_scaled(c, dim, &in->h);
   arclen_branch_points(&in->h, &in->br);
   in->rtol = rtol;
   in->width = t1 - t0;
-  ncrit = arclen_hodo_critical(&in->h, crit);
-  cuts[nc++] = t0;
-  for (i = 0; i < ncrit; i++)
-    if (crit[i] > t0 && crit[i] < t1) {
-      cuts[nc++] = crit[i];
-      if (is_minimum(&in->h, crit[i])) in->mins[in->nmin++] = crit[i];
+  for (i = 0; i < in->br.n; i += 2) {
+    double foot = in->br.re[i];
+    if (foot > t0 && foot < t1 && in->br.im[i] < 0.5 * in->width) {
+      for (j = in->nmin; j > 0 && in->mins[j - 1] > foot; j--)
+        in->mins[j] = in->mins[j - 1];     /* insertion: keep ascending */
+      in->mins[j] = foot;
+      in->nmin++;
     }
-  cuts[nc++] = t1;
-  for (i = 0; i + 1 < nc; i++)
-    in->lest += arclen_hodo_chord(&in->h, cuts[i], cuts[i + 1]);
-  push(in, t0, t1, 0);
+  }
+  prev = t0;
+  for (i = 0; i <= in->nmin; i++) {
+    double next = i < in->nmin ? in->mins[i] : t1;
+    in->lest += arclen_hodo_chord(&in->h, prev, next);
+    prev = next;
+  }
+  /* Cut at every foot right away. */
+  push(in, in->nmin ? in->mins[in->nmin - 1] : t0, t1, 0);
+  for (i = in->nmin - 1; i >= 0; i--)
+    push(in, i ? in->mins[i - 1] : t0, in->mins[i], 0);
 }
 
-/* Where to cut a piece: at a minimum of the speed inside it (the one
+/* Where to cut a piece: at a foot of a branch point inside it (the one
 ** nearest its middle), else in the middle. */
 static double cut_point(const integrator *in, double a, double b) {
   double mid = a + (b - a) / 2, best = mid, dist = HUGE_VAL;
@@ -193,30 +208,29 @@ static double cut_point(const integrator *in, double a, double b) {
 
 /* The rule for [a, b] that meets its share of the tolerance, or NULL. */
 static const arclen_gauss_rule *rule_for(const integrator *in, double a,
-                                         double b, double *err) {
-  piece_bound pb;
+                                         double b, piece_bound *pb) {
   double share = in->rtol * in->lest * (b - a) / in->width;
-  bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &pb);
-  if (pb.inside) return NULL;
-  return choose_rule(&pb, share, err);
+  bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, pb);
+  if (pb->inside) return NULL;
+  return choose_rule(pb, share);
 }
 
 /* Pop the next piece (in increasing t) and integrate it.  A piece is cut
 ** when no order up to NMAX meets its share of the tolerance, or when the
 ** two halves need fewer points together.  Returns 0 when no piece is
-** left; else the accepted piece [*pa, *pb] and its length. */
-static int next_piece(integrator *in, double *pa, double *pb, double *len,
+** left; else the accepted piece [*from, *to] and its length. */
+static int next_piece(integrator *in, double *from, double *to, double *len,
                       const arclen_gauss_rule **rule) {
   while (in->top > 0) {
     span s = in->stack[--in->top];
     double c = s.a + (s.b - s.a) / 2, hh = (s.b - s.a) / 2;
-    double err = 0, cut = cut_point(in, s.a, s.b);
-    const arclen_gauss_rule *r = rule_for(in, s.a, s.b, &err);
+    double err, cut = cut_point(in, s.a, s.b);
+    piece_bound pb, pb1, pb2;
+    const arclen_gauss_rule *r = rule_for(in, s.a, s.b, &pb);
     int can_cut = s.depth < MAXDEPTH && cut > s.a && cut < s.b;
-    if (can_cut && r != NULL && r->n > 12) {
-      double e1, e2;
-      const arclen_gauss_rule *r1 = rule_for(in, s.a, cut, &e1);
-      const arclen_gauss_rule *r2 = r1 ? rule_for(in, cut, s.b, &e2) : NULL;
+    if (can_cut && r != NULL && r->n > 1000) {
+      const arclen_gauss_rule *r1 = rule_for(in, s.a, cut, &pb1);
+      const arclen_gauss_rule *r2 = r1 ? rule_for(in, cut, s.b, &pb2) : NULL;
       if (r2 != NULL && r1->n + r2->n < r->n) r = NULL;
     }
     if (r == NULL && can_cut) {
@@ -225,18 +239,18 @@ static int next_piece(integrator *in, double *pa, double *pb, double *len,
       continue;
     }
     if (r == NULL) {          /* bisection floor: a piece of ~1e-18 width */
-      piece_bound pb;
       r = rule_at_least(NMAX);
-      bound_piece(&in->br, c, hh, &pb);
       err = 2 * hh * pb.c;    /* crude: width x a bound of f near the piece */
+    } else {
+      err = pb.c * pow(pb.rho, -2.0 * r->n);
     }
     *len = apply_rule(&in->h, r, c, hh);
     in->evals += r->n;
     in->pieces++;
     if (s.depth > in->depth) in->depth = s.depth;
     in->err += err;
-    *pa = s.a;
-    *pb = s.b;
+    *from = s.a;
+    *to = s.b;
     if (rule) *rule = r;
     return 1;
   }
