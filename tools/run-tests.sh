@@ -45,6 +45,24 @@ if command -v texlua >/dev/null && [ -f build/5.3/arclen.so ]; then
   smoke 5.3 texlua
 fi
 suite 5.4 lua5.4
+# The rockspec builds and installs offline, and the installed module passes.
+if command -v luarocks >/dev/null; then
+  rm -rf build/rocktree
+  echo "== luarocks make rockspec/arclen-scm-1.rockspec (into build/rocktree)"
+  if luarocks --lua-version 5.4 make rockspec/arclen-scm-1.rockspec \
+       --tree build/rocktree >build/luarocks.log 2>&1; then
+    rm -f src/*.o
+    echo "== specs under lua5.4 (the luarocks-installed module)"
+    lua5.4 /usr/bin/busted --cpath="build/rocktree/lib/lua/5.4/?.so" \
+      --lpath="build/rocktree/share/lua/5.4/?.lua;spec/?.lua" \
+      -o spec/summary_output.lua spec 2>&1 | tee "$OUT"
+    count "busted on the luarocks install"
+  else
+    cat build/luarocks.log
+    echo "run-tests: luarocks make failed: counted as 1 failure"
+    FAILED=$((FAILED + 1))
+  fi
+fi
 echo
 echo "$PASSED passed, $FAILED failed"
 [ "$FAILED" -eq 0 ]
