@@ -1,5 +1,5 @@
 -- method = "elliptic" (src/elliptic.c) against the 40-digit references of
--- tools/ref_lengths.py (spec/data/curves2d.tsv).  Bounds from the issue:
+-- tools/ref_lengths.py (spec/data/curves2d.tsv, curves3d.tsv).  Bounds from the issue:
 -- Henkel's six arcs <= 5e-15 relative, every curve <= 1e-13.
 local arclen = require("arclen")
 local H = require("helpers")
@@ -44,6 +44,7 @@ end
 
 describe("elliptic", function()
   check_file("curves2d.tsv")
+  check_file("curves3d.tsv")   -- 3D: quartic split, roots polished
 
   -- Henkel's failures (seed 003, Sec. 6), by name.
   local henkel = {}

@@ -117,6 +117,19 @@ double arclen_rj(double x, double y, double z, double p);
 double arclen_rg(double x, double y, double z);
 
 /* ---- roots.c: real-coefficient polynomial roots --------------------- */
+/* All roots of a real quadratic, cubic, quartic (highest coefficient
+** first); complex roots come as conjugate pairs (re, +-im).  Returns the
+** number of roots (fewer when leading coefficients are 0). */
+int arclen_quadratic(double a2, double a1, double a0, double re[2],
+                     double im[2]);
+int arclen_cubic(double a3, double a2, double a1, double a0, double re[3],
+                 double im[3]);
+int arclen_quartic(double a4, double a3, double a2, double a1, double a0,
+                   double re[4], double im[4]);
+/* The quartic / a4 as (x^2 + q0 x + q1)(x^2 + q2 x + q3), real q
+** (Algorithm 1010 style, Newton-polished); 0 or ARCLEN_EDOMAIN. */
+int arclen_quartic_factor(double a4, double a3, double a2, double a1,
+                          double a0, double q[4]);
 
 /* ---- elliptic.c: exact length by Carlson's [1,1,1,1] ---------------- */
 /* Method "elliptic": the exact length integral by Carlson's [1,1,1,1]

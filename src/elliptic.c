@@ -246,7 +246,19 @@ int arclen_length_elliptic(const double *c, int dim, const arclen_opts *o,
   } else if (dim == 2) {
     v = length2d(a2, a1, a0, y, x, &branch, &calls) * scale;
   } else {
-    return ARCLEN_EDIM;                  /* 3D: next commit (roots.c) */
+    e = arclen_ell_length3d(a2, a1, a0, y, x, &branch, &calls, &v);
+    if (e != ARCLEN_OK) return e;
+    v *= scale;
+  }
+  if (!isfinite(v) && isfinite(scale)) {
+    /* never NaN: should a branch fail (none has on the reference sets),
+    ** the error-controlled default method answers, and says so */
+    arclen_opts g = *o;
+    g.rtol = ARCLEN_RTOL_MIN;
+    branch = "fallback";
+    e = arclen_length_gauss(c, dim, &g, &v, NULL);
+    if (e != ARCLEN_OK) return e;
+    v = fabs(v);
   }
   *len = o->t0 > o->t1 ? -v : v;
   if (info != NULL) {
