@@ -17,6 +17,15 @@
 
 #include "arclen.h"
 
+/* Builds that do not use our Makefile (LuaRocks' builtin backend) pass no
+** -ffp-contract=off; on targets with FMA (aarch64, x86-64-v3) a fused
+** multiply-add would round differently from mpost.  ISO C's pragma says
+** it; GCC ignores that pragma, so tell GCC directly. */
+#pragma STDC FP_CONTRACT OFF
+#if defined(__GNUC__) && !defined(__clang__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
 /* mpmathdouble.w: EL_GORDO = DBL_MAX/2 - 1, "the largest value that MetaPost
 ** likes"; also MetaPost's "infinite" goal for arclength. */
 #define EL_GORDO (DBL_MAX / 2.0 - 1.0)
