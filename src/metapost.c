@@ -19,10 +19,11 @@
 
 /* Builds that do not use our Makefile (LuaRocks' builtin backend) pass no
 ** -ffp-contract=off; on targets with FMA (aarch64, x86-64-v3) a fused
-** multiply-add would round differently from mpost.  ISO C's pragma says
-** it; GCC ignores that pragma, so tell GCC directly. */
+** multiply-add would round differently from mpost.  GCC ignores ISO C's
+** STDC FP_CONTRACT pragma but honours its own; clang honours ISO C's. */
+#if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
-#if defined(__GNUC__) && !defined(__clang__)
+#elif defined(__GNUC__)
 #pragma GCC optimize("fp-contract=off")
 #endif
 
