@@ -9,9 +9,9 @@
 ** (Trefethen, "Approximation Theory and Approximation Practice", Thm 19.3,
 ** whose I_n has n+1 points; it follows from |a_k| <= 2 M rho^-k, Thm 8.1).
 ** The bound cannot be fooled by two rules agreeing by accident: it is read
-** off the geometry.  Pieces are cut at the speed's minima (where near-cusps
-** sit) or in the middle while no order up to NMAX meets their share of the
-** tolerance, or while two halves need fewer points than the whole.
+** off the geometry.  [t0, t1] is cut at the feet of the branch points
+** (where near-cusps put the speed's minima), then pieces are bisected while
+** no order up to NMAX meets their share of the tolerance.
 */
 #include <math.h>
 #include <stdint.h>
@@ -142,6 +142,7 @@ typedef struct integrator {
   long evals, pieces;
   int depth;
   double err;                 /* sum of accepted pieces' bounds */
+  int want_err;               /* info requested: sum the bounds */
 } integrator;
 
 static void push(integrator *in, double a, double b, int depth) {
@@ -216,24 +217,18 @@ static const arclen_gauss_rule *rule_for(const integrator *in, double a,
 }
 
 /* Pop the next piece (in increasing t) and integrate it.  A piece is cut
-** when no order up to NMAX meets its share of the tolerance, or when the
-** two halves need fewer points together.  Returns 0 when no piece is
+** (at a foot inside it, else in the middle) when no order up to NMAX meets
+** its share of the tolerance.  Returns 0 when no piece is
 ** left; else the accepted piece [*from, *to] and its length. */
 static int next_piece(integrator *in, double *from, double *to, double *len,
                       const arclen_gauss_rule **rule) {
   while (in->top > 0) {
     span s = in->stack[--in->top];
     double c = s.a + (s.b - s.a) / 2, hh = (s.b - s.a) / 2;
-    double err, cut = cut_point(in, s.a, s.b);
-    piece_bound pb, pb1, pb2;
+    double err = 0, cut = cut_point(in, s.a, s.b);
+    piece_bound pb;
     const arclen_gauss_rule *r = rule_for(in, s.a, s.b, &pb);
-    int can_cut = s.depth < MAXDEPTH && cut > s.a && cut < s.b;
-    if (can_cut && r != NULL && r->n > 1000) {
-      const arclen_gauss_rule *r1 = rule_for(in, s.a, cut, &pb1);
-      const arclen_gauss_rule *r2 = r1 ? rule_for(in, cut, s.b, &pb2) : NULL;
-      if (r2 != NULL && r1->n + r2->n < r->n) r = NULL;
-    }
-    if (r == NULL && can_cut) {
+    if (r == NULL && s.depth < MAXDEPTH && cut > s.a && cut < s.b) {
       push(in, cut, s.b, s.depth + 1);
       push(in, s.a, cut, s.depth + 1);
       continue;
@@ -241,7 +236,7 @@ static int next_piece(integrator *in, double *from, double *to, double *len,
     if (r == NULL) {          /* bisection floor: a piece of ~1e-18 width */
       r = rule_at_least(NMAX);
       err = 2 * hh * pb.c;    /* crude: width x a bound of f near the piece */
-    } else {
+    } else if (in->want_err) {
       err = pb.c * pow(pb.rho, -2.0 * r->n);
     }
     *len = apply_rule(&in->h, r, c, hh);
@@ -288,6 +283,7 @@ int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
   if (a == b) { *len = 0; return ARCLEN_OK; }
   if (a > b) { double t = a; a = b; b = t; }
   start(&in, c, dim, a, b, o->rtol * 0.5);  /* half for rounding */
+  in.want_err = info != NULL;
   if (!in.h.zero && in.lest > 0) {
     while (next_piece(&in, &pa, &pb, &piece, NULL)) sum += piece;
   } else if (!in.h.zero) {
@@ -342,6 +338,7 @@ int arclen_time_gauss(const double *c, int dim, double s,
   if (isnan(s)) return ARCLEN_EINVAL;
   if (s <= 0) { *t = 0; return ARCLEN_OK; }
   start(&in, c, dim, 0, 1, o->rtol * 0.25);
+  in.want_err = info != NULL;
   if (in.h.zero) { *t = 1; return ARCLEN_OK; }
   if (!(in.lest > 0))
     in.lest = 0.5 * arclen_length_gl(c, dim, 8) / in.h.scale;
