@@ -81,7 +81,70 @@ static const luaL_Reg carlson_funcs[] = {
   {NULL, NULL}
 };
 
+/* ---- roots ------------------------------------------------------------ */
+
+static const char *const COEF[] = {"a4", "a3", "a2", "a1", "a0"};
+
+/* n + 1 finite coefficients (names from a_n down to a0) into a[]. */
+static void check_coeffs(lua_State *L, int n, double *a) {
+  int i;
+  for (i = 0; i <= n; i++) a[i] = arclenL_checkfinite(L, i + 1, COEF[4 - n + i]);
+}
+
+/* A list of roots {{re, im}, ...}. */
+static int push_roots(lua_State *L, int n, const double *re,
+                      const double *im) {
+  int i;
+  lua_createtable(L, n, 0);
+  for (i = 0; i < n; i++) {
+    lua_createtable(L, 2, 0);
+    lua_pushnumber(L, re[i]); lua_rawseti(L, -2, 1);
+    lua_pushnumber(L, im[i]); lua_rawseti(L, -2, 2);
+    lua_rawseti(L, -2, i + 1);
+  }
+  return 1;
+}
+
+static int l_quadratic(lua_State *L) {
+  double a[3], re[2], im[2];
+  check_coeffs(L, 2, a);
+  return push_roots(L, arclen_quadratic(a[0], a[1], a[2], re, im), re, im);
+}
+
+static int l_cubic(lua_State *L) {
+  double a[4], re[3], im[3];
+  check_coeffs(L, 3, a);
+  return push_roots(L, arclen_cubic(a[0], a[1], a[2], a[3], re, im), re, im);
+}
+
+static int l_quartic(lua_State *L) {
+  double a[5], re[4], im[4];
+  check_coeffs(L, 4, a);
+  return push_roots(L, arclen_quartic(a[0], a[1], a[2], a[3], a[4], re, im),
+                    re, im);
+}
+
+/* arclen.quartic_factor(a4, a3, a2, a1, a0) -> p1, q1, p2, q2 with
+** a4 x^4 + ... + a0 = a4 (x^2 + p1 x + q1)(x^2 + p2 x + q2). */
+static int l_quartic_factor(lua_State *L) {
+  double a[5], q[4];
+  int i;
+  check_coeffs(L, 4, a);
+  if (a[0] == 0) luaL_argerror(L, 1, "a4 must not be 0 (not a quartic)");
+  if (arclen_quartic_factor(a[0], a[1], a[2], a[3], a[4], q) != ARCLEN_OK)
+    return luaL_error(L, "quartic_factor failed");
+  for (i = 0; i < 4; i++) lua_pushnumber(L, q[i]);
+  return 4;
+}
+
+static const luaL_Reg roots_funcs[] = {
+  {"quadratic", l_quadratic}, {"cubic", l_cubic}, {"quartic", l_quartic},
+  {"quartic_factor", l_quartic_factor},
+  {NULL, NULL}
+};
+
 void arclen_open_elliptic(lua_State *L) {
+  luaL_setfuncs(L, roots_funcs, 0);
   lua_newtable(L);
   luaL_setfuncs(L, carlson_funcs, 0);
   lua_setfield(L, -2, "carlson");

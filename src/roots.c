@@ -205,12 +205,37 @@ int arclen_quartic_factor(double a4, double a3, double a2, double a1,
   return ARCLEN_OK;
 }
 
+/* Newton on the quartic itself for one root (complex arithmetic by hand),
+** kept only while |p| falls: it sharpens roots that the factor split left
+** coarse (clusters), and never makes one worse. */
+static void polish_root(const double *a, double *zr, double *zi) {
+  double best = HUGE_VAL, xr = *zr, xi = *zi;
+  int it, k;
+  for (it = 0; it < NEWTON_CAP; it++) {
+    double pr = a[0], pi = 0, dr = 0, di = 0, t, den, ap;
+    for (k = 1; k <= 4; k++) {            /* Horner for p and p' */
+      t = dr * xr - di * xi + pr; di = dr * xi + di * xr + pi; dr = t;
+      t = pr * xr - pi * xi + a[k]; pi = pr * xi + pi * xr; pr = t;
+    }
+    ap = hypot(pr, pi);
+    if (!(ap < best)) break;
+    best = ap; *zr = xr; *zi = xi;
+    den = dr * dr + di * di;
+    if (ap == 0 || den == 0) break;
+    xr -= (pr * dr + pi * di) / den;
+    xi -= (pi * dr - pr * di) / den;
+  }
+}
+
 int arclen_quartic(double a4, double a3, double a2, double a1, double a0,
                    double re[4], double im[4]) {
-  double q[4];
-  int n;
+  double q[4], a[5];
+  int n, k;
   if (a4 == 0) return arclen_cubic(a3, a2, a1, a0, re, im);
   if (arclen_quartic_factor(a4, a3, a2, a1, a0, q) != ARCLEN_OK) return 0;
   n = arclen_quadratic(1, q[0], q[1], re, im);
-  return n + arclen_quadratic(1, q[2], q[3], re + n, im + n);
+  n += arclen_quadratic(1, q[2], q[3], re + n, im + n);
+  a[0] = a4; a[1] = a3; a[2] = a2; a[3] = a1; a[4] = a0;
+  for (k = 0; k < n; k++) polish_root(a, &re[k], &im[k]);
+  return n;
 }

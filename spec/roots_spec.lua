@@ -1,0 +1,70 @@
+-- Polynomial roots (src/roots.c) against mpmath (tools/ref_roots.py): each
+-- root within the accuracy attainable once the coefficients are rounded to
+-- double (column bounds, per root, computed by perturbing the coefficients).
+local arclen = require("arclen")
+local H = require("helpers")
+
+local function parse_roots(s)
+  local out = {}
+  for re, im in s:gmatch("([^,;]+),([^;]+)") do
+    out[#out + 1] = {tonumber(re), tonumber(im)}
+  end
+  return out
+end
+
+local function parse_list(s)
+  local out = {}
+  for v in s:gmatch("[^;]+") do out[#out + 1] = tonumber(v) end
+  return out
+end
+
+local function dist(a, b)
+  local dr, di = a[1] - b[1], a[2] - b[2]
+  return math.sqrt(dr * dr + di * di)
+end
+
+describe("roots", function()
+  for _, row in ipairs(H.tsv("roots.tsv")) do
+    it(row.id .. " (degree " .. row.deg .. "): every root within the attainable accuracy", function()
+      local deg = tonumber(row.deg)
+      local a = {}
+      for _, k in ipairs({"a4", "a3", "a2", "a1", "a0"}) do
+        if row[k] ~= "" then a[#a + 1] = tonumber(row[k]) end
+      end
+      local got = (deg == 4 and arclen.quartic or deg == 3 and arclen.cubic
+                   or arclen.quadratic)(table.unpack(a))
+      local truth, bounds = parse_roots(row.roots), parse_list(row.bounds)
+      assert.are.equal(deg, #got)
+      -- match every true root to its nearest unused computed root
+      local used = {}
+      for i, r in ipairs(truth) do
+        local best, bi = math.huge, nil
+        for j, g in ipairs(got) do
+          if not used[j] and dist(g, r) < best then best, bi = dist(g, r), j end
+        end
+        used[bi] = true
+        assert.is_true(best <= bounds[i], ("%s root %d (%g, %g): error %.3g > bound %.3g"):format(
+          row.id, i, r[1], r[2], best, bounds[i]))
+      end
+    end)
+  end
+
+  it("quartic_factor splits a positive quartic into two real quadratics", function()
+    -- (x^2 - 2x + 2)(x^2 + 4x + 13): roots 1 +- i, -2 +- 3i
+    local p1, q1, p2, q2 = arclen.quartic_factor(1, 2, 7, -18, 26)
+    local f = {{p1, q1}, {p2, q2}}
+    table.sort(f, function(u, v) return u[1] < v[1] end)
+    assert.is_true(math.abs(f[1][1] + 2) < 1e-14 and math.abs(f[1][2] - 2) < 1e-14)
+    assert.is_true(math.abs(f[2][1] - 4) < 1e-14 and math.abs(f[2][2] - 13) < 1e-14)
+  end)
+
+  it("lower degrees when leading coefficients vanish; bad input names the argument", function()
+    assert.are.equal(1, #arclen.quadratic(0, 2, -4))
+    assert.are.equal(2, #arclen.quartic(0, 0, 1, 0, -1))
+    local function q(...) return arclen.quartic(...) end
+    assert.matches("bad argument #3 to 'quartic' %(a2 must be finite%)",
+      H.error_of(function() return q(1, 2, 1 / 0, 4, 5) end) or "")
+    assert.matches("bad argument #1 to 'quartic_factor' %(a4 must not be 0",
+      H.error_of(function() return arclen.quartic_factor(0, 1, 2, 3, 4) end) or "")
+  end)
+end)
