@@ -199,11 +199,11 @@ int arclen_gauss_legendre(int n, double *x, double *w);
 ** in t) and ordinates y[0..3] (Walter & Fournier 1996, Eqns 3-5). */
 enum { ARCLEN_FIT_HERMITE = 0, ARCLEN_FIT_PAPER = 1 };
 #define ARCLEN_FIT_MAXSPANS 512    /* cap on adaptive refinement */
-#define ARCLEN_FIT_TOL_MIN 1e-10   /* below this, quadrature noise wins */
+#define ARCLEN_FIT_TOL_MIN 1e-9    /* 1e-10 can need more than MAXSPANS */
 typedef struct arclen_fit_opts {
   int method;      /* ARCLEN_FIT_HERMITE (default) or ARCLEN_FIT_PAPER */
   int n;           /* Gauss-Legendre points: per node (paper, default 10)
-                      or per piece (hermite, default 3); 0 = default */
+                      or per piece (hermite, default 2); 0 = default */
   double tol;      /* hermite: max error in s/s(1); 0 = fixed knots */
 } arclen_fit_opts;
 typedef struct arclen_fit_span {
