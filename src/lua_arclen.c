@@ -341,6 +341,7 @@ int luaopen_arclen(lua_State *L) {
   arclen_open_conic(L);
   arclen_open_henkel(L);
   arclen_open_elliptic(L);
+  arclen_open_fit(L);
   /* new areas: one line each, above this line */
   return 1;
 }
