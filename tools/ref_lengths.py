@@ -45,6 +45,7 @@ DATA = os.path.join(ROOT, "spec", "data")
 QUARTERS = [Fraction(1, 4), Fraction(1, 2), Fraction(3, 4)]
 MAX_PIECES = 20000      # cap on mesh pieces per curve (nothing may hang)
 MAX_NEWTON = 3000       # cap on time-solver iterations
+mp.dps = 110            # roots and split points: far beyond the 45 digits
 REAL_IM = mpf("1e-30")  # |Im root| below this: a real root (kink, cusp)
 
 # Precision levels: (digits claimed for s, primary dps, primary nodes,
@@ -163,9 +164,14 @@ def squarefree(a):
 
 
 def exact_mpf(fr):
-    with mp.workprec(max(fr.numerator.bit_length(),
-                         fr.denominator.bit_length(), 53) + 10):
-        return mpf(fr.numerator) / fr.denominator
+    """fr as an mpf: exact for dyadic fractions (all data are doubles),
+    else rounded at the current precision."""
+    with mp.workprec(max(fr.numerator.bit_length(), 53) + 10):
+        num = mpf(fr.numerator)
+    den = fr.denominator
+    if den & (den - 1) == 0:
+        return mp.ldexp(num, -(den.bit_length() - 1))
+    return num / den
 
 
 def poly_roots(a):
@@ -293,9 +299,12 @@ class Primary:
                                 self.gl(self.mesh[i], self.mesh[i + 1]))
 
     def speed(self, t):
-        q = mpf(0)
-        for c in self.cv.qc:
-            q = q * t + c
+        # Horner with 20 guard digits: Q has double roots at cusps, where
+        # the power basis cancels.
+        with mp.workdps(self.dps + 20):
+            q = mpf(0)
+            for c in self.cv.qc:
+                q = q * t + c
         return mp.sqrt(q) if q > 0 else mpf(0)
 
     def gl(self, l, r):
@@ -362,7 +371,10 @@ class Check:
             self.d = [[Decimal(x.numerator) / Decimal(x.denominator)
                        for x in di] for di in cv.d]
             with mp.workdps(self.prec):
-                m = mesh(cv, cv.splits + cv.crit, rho_min)
+                # Kinks (real roots of Q) are zeros of Q' too: taking them
+                # from Q' keeps this mesh independent of cv.splits.
+                m = mesh(cv, [mpf(r.real) for r in cv.branch
+                              if 0 < r.real < 1] + cv.crit, rho_min)
             self.mesh = [self.dec(p) for p in m]
             self.cum = [Decimal(0)]
             for i in range(len(self.mesh) - 1):
@@ -399,7 +411,55 @@ class Check:
             return mpf(str(self.cum[i] + self.gl(self.mesh[i], t)))
 
 
-STATS = {"len": mpf(0), "time": mpf(0), "escalated": 0}
+def collinear_lengths(cv, ts):
+    """Closed form when all control points lie on one line (a third,
+    quadrature-free check): the position along the line is a cubic lam(t),
+    the length is the sum of |lam(t_k+1) - lam(t_k)| between the zeros of
+    lam'(t).  None when the curve is not collinear."""
+    P = [[Fraction(0)] * cv.dim]
+    for d in cv.d:
+        P.append([P[-1][k] + d[k] for k in range(cv.dim)])
+    far = max(P[1:], key=lambda p: sum(x * x for x in p))
+    if not any(far):
+        return None
+    for p in P[1:]:
+        for k in range(cv.dim):
+            for m in range(k + 1, cv.dim):
+                if p[k] * far[m] != p[m] * far[k]:
+                    return None
+    with mp.workdps(70):
+        n = mp.sqrt(exact_mpf(sum(x * x for x in far)))
+        lam = [exact_mpf(sum(p[k] * far[k] for k in range(cv.dim))) / n
+               for p in P]
+
+        def at(t):
+            u = 1 - t
+            return (u ** 3 * lam[0] + 3 * u * u * t * lam[1] +
+                    3 * u * t * t * lam[2] + t ** 3 * lam[3])
+        zeros = [r.real for r, _ in
+                 [(r, 0) for r in poly_roots(pderiv([sum(p[k] * far[k]
+                  for k in range(cv.dim)) for p in power_basis(P)]))]
+                 if abs(r.imag) <= REAL_IM and 0 < r.real < 1]
+        out = []
+        for t1 in ts:
+            knots = [mpf(0)] + sorted(z for z in zeros if z < t1) + [t1]
+            out.append(mp.fsum(abs(at(knots[i + 1]) - at(knots[i]))
+                               for i in range(len(knots) - 1)))
+        return out
+
+
+def power_basis(P):
+    """Power-basis coefficients (ascending) of the Bezier points P."""
+    dim = len(P[0])
+    return [[P[0][k] for k in range(dim)],
+            [3 * (P[1][k] - P[0][k]) for k in range(dim)],
+            [3 * (P[2][k] - 2 * P[1][k] + P[0][k]) for k in range(dim)],
+            [P[3][k] - 3 * P[2][k] + 3 * P[1][k] - P[0][k]
+             for k in range(dim)]]
+
+
+STATS = {"len": mpf(0), "time": mpf(0), "escalated": 0,
+         "collinear": mpf(0), "ncollinear": 0}
 
 
 def reference(coords, dim):
@@ -420,6 +480,16 @@ def reference(coords, dim):
                     raise SystemExit("length not verified: %s vs %s" % (a, b))
                 if li == 0:
                     STATS["len"] = max(STATS["len"], rel)
+            if li == 0:
+                exact = collinear_lengths(cv, ts)
+                if exact is not None:
+                    STATS["ncollinear"] += 1
+                    for a, b in zip(lp, exact):
+                        rel = abs(a - b) / abs(a)
+                        if rel > mpf(10) ** -(digits - 5):
+                            raise SystemExit("collinear closed form: %s vs %s"
+                                             % (a, b))
+                        STATS["collinear"] = max(STATS["collinear"], rel)
             L = lp[3]
             err = mpf(10) ** -(digits - 5) * L     # what s is trusted to
             times, ok = [], True
@@ -499,6 +569,8 @@ def main():
           " curves needing higher precision for times: %d" %
           (mpmath.nstr(STATS["len"], 3), mpmath.nstr(STATS["time"], 3),
            STATS["escalated"]))
+    print("collinear curves (%d) vs closed form: max rel. difference %s" %
+          (STATS["ncollinear"], mpmath.nstr(STATS["collinear"], 3)))
     print("total run time %.1fs" % (time.time() - start))
 
 
