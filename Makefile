@@ -87,3 +87,12 @@ uninstall:
 clean:
 	rm -rf $(BUILD)
 	$(MAKE) -C bench clean
+
+# ---- lenfit (issue 5): Walter & Fournier's Table 1, paper vs default ----
+.PHONY: fit-stats fit-plots
+fit-stats: $(MODULE)
+	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua' $(LUA_BIN) lua/arclen/fitstats.lua
+
+fit-plots: $(MODULE)
+	@mkdir -p $(BUILD)/plots
+	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua' $(LUA_BIN) lua/arclen/plot.lua all $(BUILD)/plots
