@@ -1,0 +1,680 @@
+-- arclen.path -- paths of cubic Bezier segments: length, time (MetaPost's
+-- path time: segment index + parameter), point, tangent, split, sub,
+-- resample and dash at distances along the path.
+--
+--   local path = require "arclen.path"     (also arclen.path)
+--   path(cubics [, opts]), path.svg(d [, opts]), path.mplib(knots [, opts])
+--
+-- A path is a list of segments (8 or 12 numbers each) in one or more
+-- subpaths (a segment that does not start where the previous one ends
+-- begins a new subpath, as an SVG moveto does).  The segments' lengths are
+-- computed once, on first need, into a cumulative array; a distance is
+-- then found by binary search (O(log n)) and one call of arclen.time inside
+-- its segment.  Every distance is within tol * length of the truth: each
+-- segment's length is within tol of its own (a relative bound, so the sum is
+-- too), and the time inside a segment is within tol of the segment's length.
+local arclen = require("arclen")
+local svgpath = require("arclen.svgpath")
+local mplibpath = require("arclen.mplib")
+
+local floor, abs, sqrt, huge = math.floor, math.abs, math.sqrt, math.huge
+local format = string.format
+
+local Path = {}
+Path.__index = Path
+
+local MAX_POINTS = 10000000   -- resample and dash produce at most this many
+
+-- ---- errors in the style of luaL_argerror ---------------------------------
+
+local function argerror(n, fname, msg)
+  error(format("bad argument #%d to '%s' (%s)", n, fname, msg), 3)
+end
+
+local function isfinite(x)
+  return type(x) == "number" and x == x and x ~= huge and x ~= -huge
+end
+
+local function check_number(x, n, fname, what)
+  if type(x) ~= "number" then
+    argerror(n, fname, format("%s must be a number, got %s", what, type(x)))
+  end
+  if not isfinite(x) then argerror(n, fname, what .. " must be finite") end
+  return x
+end
+
+local function check_self(self, fname)
+  if getmetatable(self) ~= Path then
+    error(format("calling '%s' on bad self (a path expected, got %s)", fname,
+                 type(self)), 3)
+  end
+end
+
+-- ---- options ----------------------------------------------------------------
+
+local METHODS, HAS_TIME = nil, {}
+
+-- Does the method exist, and has it a time (inverse)?  Asked of the module
+-- once per method name.
+local function method_known(name)
+  if not METHODS then
+    METHODS = {}
+    for _, m in ipairs(arclen.methods()) do METHODS[m] = true end
+  end
+  if METHODS[name] and HAS_TIME[name] == nil then
+    HAS_TIME[name] = pcall(arclen.time, {0, 0, 1, 0, 2, 0, 3, 0}, 1, {method = name})
+  end
+  return METHODS[name]
+end
+
+-- The options table: returns {tol, method, arc_tol, cyclic} or nil, message.
+local function read_opts(opts, allowed)
+  local o = {tol = 1e-12, method = "gauss"}
+  if opts == nil then return o end
+  if type(opts) ~= "table" then
+    return nil, "options table expected, got " .. type(opts)
+  end
+  for k, v in pairs(opts) do
+    if not allowed[k] then return nil, format("unknown option '%s'", tostring(k)) end
+    if k == "tol" then
+      if type(v) ~= "number" or not (v >= 1e-15 and v <= 0.1) then
+        return nil, "tol must be in [1e-15, 0.1]"
+      end
+    elseif k == "arc_tol" then
+      if type(v) ~= "number" or not (v >= 1e-15 and v <= 0.1) then
+        return nil, "arc_tol must be in [1e-15, 0.1]"
+      end
+    elseif k == "method" then
+      if type(v) ~= "string" then return nil, "method must be a string" end
+      if not method_known(v) then return nil, format("unknown method '%s'", v) end
+    elseif k == "cyclic" then
+      if type(v) ~= "boolean" then return nil, "cyclic must be a boolean" end
+    end
+    o[k] = v
+  end
+  return o
+end
+
+-- ---- construction -------------------------------------------------------
+
+-- A path from subpaths {x =, y =, closed =, cubic...} (see svgpath.lua).
+local function build(subpaths, o)
+  local self = setmetatable({n = 0, dim = 2, cyclic = false, tol = o.tol,
+    method = o.method, segs = {}, first = {}, nsub = 0}, Path)
+  for _, sp in ipairs(subpaths) do
+    if self.x0 == nil then self.x0, self.y0, self.z0 = sp.x, sp.y, sp.z end
+    if #sp > 0 then
+      self.nsub = self.nsub + 1
+      self.first[self.nsub] = self.n + 1
+      for _, c in ipairs(sp) do
+        self.n = self.n + 1
+        self.segs[self.n] = c
+      end
+    end
+  end
+  if self.n > 0 then self.dim = #self.segs[1] == 12 and 3 or 2 end
+  self.first[self.nsub + 1] = self.n + 1
+  self.cyclic = #subpaths == 1 and subpaths[1].closed and self.n > 0 or false
+  return self
+end
+
+-- arclen.path(cubics [, opts]): cubics joined end to start; a gap starts a
+-- new subpath.  opts: tol, method, cyclic (the last segment ends where the
+-- first starts, and distances wrap around).
+local function from_cubics(_, cubics, opts)
+  local fname = "arclen.path"
+  local o, msg = read_opts(opts, {tol = true, method = true, cyclic = true})
+  if not o then argerror(2, fname, msg) end
+  if type(cubics) ~= "table" then
+    argerror(1, fname, "a list of cubics expected, got " .. type(cubics))
+  end
+  if #cubics == 0 then argerror(1, fname, "a path needs at least one cubic") end
+  local subpaths, sp, dim = {}, nil, nil
+  for k = 1, #cubics do
+    local c = cubics[k]
+    if type(c) ~= "table" then
+      argerror(1, fname, format("cubic %d must be a table, got %s", k, type(c)))
+    end
+    local flat = {}
+    if type(c[1]) == "table" then                -- 4 points {x, y[, z]}
+      if #c ~= 4 then argerror(1, fname, format("cubic %d must have 4 points", k)) end
+      for i = 1, 4 do
+        local p = c[i]
+        if type(p) ~= "table" or (#p ~= 2 and #p ~= 3) then
+          argerror(1, fname, format("cubic %d: point %d must be {x, y} or {x, y, z}", k, i))
+        end
+        for j = 1, #p do flat[#flat + 1] = p[j] end
+      end
+    else
+      for i = 1, #c do flat[i] = c[i] end
+    end
+    if #flat ~= 8 and #flat ~= 12 then
+      argerror(1, fname, format("cubic %d must have 8 (2D) or 12 (3D) numbers, got %d", k, #flat))
+    end
+    for i = 1, #flat do
+      if not isfinite(flat[i]) then
+        argerror(1, fname, format("cubic %d: coordinate %d must be a finite number", k, i))
+      end
+    end
+    local d = #flat == 12 and 3 or 2
+    dim = dim or d
+    if d ~= dim then argerror(1, fname, format("cubic %d is %dD, the first is %dD", k, d, dim)) end
+    local joined = sp ~= nil
+    if sp then
+      local prev = sp[#sp]
+      for j = 1, d do
+        if flat[j] ~= prev[3 * d + j] then joined = false end
+      end
+    end
+    if not joined then
+      sp = {x = flat[1], y = flat[2], z = d == 3 and flat[3] or nil, closed = false}
+      subpaths[#subpaths + 1] = sp
+    end
+    sp[#sp + 1] = flat
+  end
+  if o.cyclic then
+    if #subpaths ~= 1 then argerror(1, fname, "a cyclic path must not have gaps") end
+    local first, last = subpaths[1][1], subpaths[1][#subpaths[1]]
+    for j = 1, dim do
+      if first[j] ~= last[3 * dim + j] then
+        argerror(1, fname, "a cyclic path must end where it starts")
+      end
+    end
+    subpaths[1].closed = true
+  end
+  return build(subpaths, o)
+end
+
+-- Turn a parser's error {pos =, msg =} into "bad argument #1 to ...".
+local function parse_with(fname, parse, ...)
+  local ok, res = pcall(parse, ...)
+  if ok then return res end
+  if type(res) == "table" then
+    local where = res.pos and format(" at position %d", res.pos) or ""
+    error(format("bad argument #1 to '%s' (%s%s)", fname, res.msg, where), 3)
+  end
+  error(res, 0)
+end
+
+-- arclen.path.svg(d [, opts]): SVG path data.  opts: tol, method, arc_tol
+-- (arcs become cubics within a Hausdorff distance of arc_tol * max(rx, ry,
+-- chord / 2); default: tol).
+local function from_svg(d, opts)
+  local fname = "arclen.path.svg"
+  if type(d) ~= "string" then
+    argerror(1, fname, "path data (a string) expected, got " .. type(d))
+  end
+  local o, msg = read_opts(opts, {tol = true, method = true, arc_tol = true})
+  if not o then argerror(2, fname, msg) end
+  local subpaths = parse_with(fname, svgpath.parse, d, o.arc_tol or o.tol)
+  return build(subpaths, o)
+end
+
+-- arclen.path.mplib(knots [, opts]): an mplib path (a list of knots, or
+-- a figure object with a path field).  opts: tol, method.
+local function from_mplib(knots, opts)
+  local fname = "arclen.path.mplib"
+  local o, msg = read_opts(opts, {tol = true, method = true})
+  if not o then argerror(2, fname, msg) end
+  local sp = parse_with(fname, mplibpath.subpath, knots)
+  return build({sp}, o)
+end
+
+-- ---- lengths and the search -----------------------------------------
+
+local function is_metapost(self) return self.method == "metapost" end
+
+-- The cumulative lengths cum[0..n] (cached); nil, message on MetaPost's
+-- arithmetic overflow.
+local function cumulative(self)
+  if self.cum then return self.cum end
+  local cum, total = {[0] = 0}, 0
+  local lopts = {tol = self.tol, method = self.method}
+  local mp = is_metapost(self)
+  for k = 1, self.n do
+    local len, err
+    if mp then len, err = arclen.metapost.arclength(self.segs[k])
+    else len, err = arclen.length(self.segs[k], lopts) end
+    if len == nil then return nil, err end
+    total = total + len
+    cum[k] = total
+  end
+  self.cum = cum
+  return cum
+end
+
+-- The segments of the (single) subpath as MetaPost's path functions take them.
+local function mp_total(self)
+  if self.mp_len == nil then
+    local len, err = arclen.metapost.path_arclength(self.segs, self.cyclic)
+    self.mp_len, self.mp_err = len or false, err
+  end
+  return self.mp_len or nil, self.mp_err
+end
+
+local function total_length(self)
+  if self.n == 0 then return 0 end
+  if is_metapost(self) and self.nsub == 1 then return mp_total(self) end
+  local cum, err = cumulative(self)
+  if not cum then return nil, err end
+  return cum[self.n]
+end
+
+-- Raise for what a query cannot do on this path (level: the user's call).
+local function usable(self, fname)
+  method_known(self.method)
+  if self.n > 0 and not HAS_TIME[self.method] then
+    error(format("bad argument #1 to '%s' (method '%s' has no time (inverse): "
+      .. "distances need gauss or metapost)", fname, self.method), 3)
+  end
+  if self.n > 0 and is_metapost(self) and self.nsub > 1 then
+    error(format("'%s': method 'metapost' measures paths without gaps "
+      .. "(this one has %d subpaths)", fname, self.nsub), 3)
+  end
+  local L, err = total_length(self)
+  if L == nil then error(format("'%s': %s", fname, err), 3) end
+  return L
+end
+
+-- Segment k in 1..n and parameter t for distance s (already in [0, L]):
+-- the first segment whose end is beyond s (at_end: at or beyond s, so that
+-- a distance at a joint belongs to the segment that ends there).
+local function locate(self, s, at_end)
+  local n = self.n
+  if is_metapost(self) then
+    local T = assert(arclen.metapost.path_arctime(self.segs, s, self.cyclic))
+    local k = floor(T)
+    if k >= n then return n, 1 end
+    if at_end and T == k and k > 0 then return k, 1 end
+    return k + 1, T - k
+  end
+  local cum = self.cum
+  if s >= cum[n] then return n, 1 end
+  local lo, hi = 1, n            -- smallest k with cum[k] > s (>= s at_end)
+  while lo < hi do
+    local mid = floor((lo + hi) / 2)
+    if cum[mid] > s or (at_end and cum[mid] >= s and cum[mid] > cum[mid - 1]) then
+      hi = mid
+    else
+      lo = mid + 1
+    end
+  end
+  local goal = s - cum[lo - 1]
+  if goal <= 0 then return lo, 0 end
+  if goal >= cum[lo] - cum[lo - 1] then return lo, 1 end
+  return lo, arclen.time(self.segs[lo], goal, {tol = self.tol, method = self.method})
+end
+
+-- A distance into [0, L]: clamped on an open path, wrapped on a cyclic one.
+local function reduce(self, s, L)
+  if self.cyclic and L > 0 then
+    local q = floor(s / L)
+    return s - q * L, q
+  end
+  if s < 0 then return 0, 0 end
+  if s > L then return L, 0 end
+  return s, 0
+end
+
+-- ---- the methods --------------------------------------------------------
+
+-- p:length() -> the arc length (nil, "arithmetic overflow" as MetaPost).
+function Path:length()
+  check_self(self, "length")
+  if self.n > 0 and is_metapost(self) and self.nsub > 1 then
+    local total = 0                -- MetaPost measures each subpath alone
+    for j = 1, self.nsub do
+      local segs = {}
+      for k = self.first[j], self.first[j + 1] - 1 do segs[#segs + 1] = self.segs[k] end
+      local len, err = arclen.metapost.path_arclength(segs, false)
+      if len == nil then return nil, err end
+      total = total + len
+    end
+    return total
+  end
+  return total_length(self)
+end
+
+-- p:time(s) -> MetaPost's path time (k - 1 + t on segment k) at distance s.
+-- An open path clamps s to [0, L] (times 0 and n); a cyclic one wraps, so
+-- s = L + a gives n + time(a) and s < 0 a negative time.
+function Path:time(s)
+  check_self(self, "time")
+  check_number(s, 1, "time", "distance")
+  local L = usable(self, "time")
+  if self.n == 0 then return 0 end
+  if is_metapost(self) then
+    return assert(arclen.metapost.path_arctime(self.segs, s, self.cyclic))
+  end
+  local r, turns = reduce(self, s, L)
+  local k, t = locate(self, r)
+  return turns * self.n + (k - 1) + t
+end
+
+-- The derivative's direction at (k, t), unit length; a zero derivative
+-- (a cusp, or a control point on its end point) takes the limit from the
+-- next derivatives: z'' (its negative at t = 1, approached from the left),
+-- then z'''.  A segment that is a single point has no direction: zeros.
+local function direction(self, k, t)
+  local c, d = self.segs[k], self.dim
+  local v = {arclen.derivative(c, t)}
+  local function norm(w)
+    local s = 0
+    for i = 1, d do s = s + w[i] * w[i] end
+    return sqrt(s)
+  end
+  local len = norm(v)
+  if len == 0 then
+    local u = 1 - t
+    for i = 1, d do
+      local p0, p1, p2, p3 = c[i], c[d + i], c[2 * d + i], c[3 * d + i]
+      v[i] = u * (p2 - 2 * p1 + p0) + t * (p3 - 2 * p2 + p1)
+      if t == 1 then v[i] = -v[i] end
+    end
+    len = norm(v)
+  end
+  if len == 0 then
+    for i = 1, d do
+      v[i] = c[3 * d + i] - 3 * c[2 * d + i] + 3 * c[d + i] - c[i]
+    end
+    len = norm(v)
+  end
+  if len == 0 then
+    for i = 1, d do v[i] = 0 end
+    return v
+  end
+  for i = 1, d do v[i] = v[i] / len end
+  return v
+end
+
+local function unpack_dim(v, d)
+  if d == 3 then return v[1], v[2], v[3] end
+  return v[1], v[2]
+end
+
+local function start_point(self)
+  if self.dim == 3 then return self.x0, self.y0, self.z0 end
+  return self.x0, self.y0
+end
+
+-- p:point(s) -> x, y[, z] at distance s (clamped, or wrapped when cyclic).
+function Path:point(s)
+  check_self(self, "point")
+  check_number(s, 1, "point", "distance")
+  local L = usable(self, "point")
+  if self.n == 0 then return start_point(self) end
+  local k, t = locate(self, (reduce(self, s, L)))
+  return arclen.point(self.segs[k], t)
+end
+
+-- p:tangent(s) -> the unit tangent tx, ty[, tz] at distance s (at a joint,
+-- the direction leaving it; at the end, the direction arriving).
+function Path:tangent(s)
+  check_self(self, "tangent")
+  check_number(s, 1, "tangent", "distance")
+  local L = usable(self, "tangent")
+  if self.n == 0 then return unpack_dim({0, 0, 0}, self.dim) end
+  local k, t = locate(self, (reduce(self, s, L)))
+  return unpack_dim(direction(self, k, t), self.dim)
+end
+
+-- A new path with the same options from a list of segments with gap marks.
+local function from_pieces(self, pieces, x0, y0, z0)
+  local p = setmetatable({n = #pieces, dim = self.dim, cyclic = false,
+    tol = self.tol, method = self.method, segs = {}, first = {}, nsub = 0,
+    x0 = x0, y0 = y0, z0 = z0}, Path)
+  for k, c in ipairs(pieces) do
+    p.segs[k] = c
+    if k == 1 or pieces.gap[k] then
+      p.nsub = p.nsub + 1
+      p.first[p.nsub] = k
+    end
+  end
+  p.first[p.nsub + 1] = p.n + 1
+  return p
+end
+
+-- The segments between distances a <= b (in [0, L]) as a list with gap
+-- marks, and the start point.
+local function pieces_between(self, a, b)
+  local out = {gap = {}}
+  local k0, t0 = locate(self, a)
+  local k1, t1 = locate(self, b, true)
+  local d = self.dim
+  if k1 < k0 or (k1 == k0 and t1 <= t0) then
+    local x, y, z = arclen.point(self.segs[k0], t0)
+    return out, x, y, z
+  end
+  local isgap = {}
+  for j = 2, self.nsub do isgap[self.first[j]] = true end
+  for k = k0, k1 do
+    local c = self.segs[k]
+    local ta, tb = k == k0 and t0 or 0, k == k1 and t1 or 1
+    if ta ~= 0 or tb ~= 1 then c = arclen.subcurve(c, ta, tb) end
+    if tb > ta or (ta == 0 and tb == 1) then
+      out[#out + 1] = c
+      if isgap[k] and k > k0 then out.gap[#out] = true end
+    end
+  end
+  if #out == 0 then
+    local x, y, z = arclen.point(self.segs[k0], t0)
+    return out, x, y, z
+  end
+  local c = out[1]
+  return out, c[1], c[2], d == 3 and c[3] or nil
+end
+
+-- p:sub(s0, s1) -> the part of the path from distance s0 to s1 (clamped to
+-- [0, L]; s1 <= s0 gives the point at s0, a path of no segments).
+function Path:sub(s0, s1)
+  check_self(self, "sub")
+  check_number(s0, 1, "sub", "s0")
+  check_number(s1, 2, "sub", "s1")
+  local L = usable(self, "sub")
+  if self.n == 0 then return from_pieces(self, {gap = {}}, self.x0, self.y0, self.z0) end
+  local a = s0 < 0 and 0 or (s0 > L and L or s0)
+  local b = s1 < 0 and 0 or (s1 > L and L or s1)
+  return from_pieces(self, pieces_between(self, a, b))
+end
+
+-- p:split(s) -> the path before distance s and the path after it.
+function Path:split(s)
+  check_self(self, "split")
+  check_number(s, 1, "split", "distance")
+  local L = usable(self, "split")
+  if self.n == 0 then
+    local e = {gap = {}}
+    return from_pieces(self, e, self.x0, self.y0, self.z0),
+           from_pieces(self, e, self.x0, self.y0, self.z0)
+  end
+  local a = s < 0 and 0 or (s > L and L or s)
+  return from_pieces(self, pieces_between(self, 0, a)),
+         from_pieces(self, pieces_between(self, a, L))
+end
+
+-- One sample at distance s in [0, L].
+local function sample(self, s)
+  local k, t = locate(self, s)
+  local x, y, z = arclen.point(self.segs[k], t)
+  local v = direction(self, k, t)
+  return {x = x, y = y, z = z, s = s, time = (k - 1) + t,
+          tx = v[1], ty = v[2], tz = v[3]}
+end
+
+-- p:resample(n) or p:resample{step = h} -> points evenly spaced along the
+-- path, each {x =, y =, s = distance, time = path time, tx =, ty = unit
+-- tangent}.  n points include both ends of an open path; a cyclic path
+-- gets n points L/n apart from its start (no repeat of the start).  A step
+-- gives the points at 0, h, 2h, ... <= L.
+function Path:resample(spec)
+  check_self(self, "resample")
+  local fname = "resample"
+  local L = usable(self, fname)
+  local dists = {}
+  if type(spec) == "number" then
+    local n = spec
+    local low = self.cyclic and 1 or 2
+    if n ~= floor(n) or n < low or n > MAX_POINTS then
+      argerror(1, fname, format("n must be an integer in [%d, %d]", low, MAX_POINTS))
+    end
+    local div = self.cyclic and n or n - 1
+    for i = 0, n - 1 do dists[i + 1] = i == div and L or L * i / div end
+  elseif type(spec) == "table" then
+    for key in pairs(spec) do
+      if key ~= "step" then argerror(1, fname, format("unknown option '%s'", tostring(key))) end
+    end
+    local h = spec.step
+    if type(h) ~= "number" or not (h > 0) or h == huge then
+      argerror(1, fname, "step must be a positive finite number")
+    end
+    if L / h >= MAX_POINTS then
+      argerror(1, fname, format("step too small: more than %d points", MAX_POINTS))
+    end
+    local m = floor(L / h)
+    for i = 0, m do
+      local s = i * h
+      if s > L then s = L end
+      if not (self.cyclic and i > 0 and s >= L) then dists[#dists + 1] = s end
+    end
+  else
+    argerror(1, fname, "a count n or {step = h} expected, got " .. type(spec))
+  end
+  local out = {}
+  if self.n == 0 then
+    for i = 1, #dists do
+      out[i] = {x = self.x0, y = self.y0, z = self.z0, s = 0, time = 0,
+                tx = 0, ty = 0, tz = self.dim == 3 and 0 or nil}
+    end
+    return out
+  end
+  for i, s in ipairs(dists) do out[i] = sample(self, s) end
+  return out
+end
+
+-- The dash pattern {on, off, ...}: non-negative numbers, not all zero; an
+-- odd count is repeated (SVG's stroke-dasharray).  nil, message if bad.
+local function read_pattern(pattern)
+  if type(pattern) ~= "table" or #pattern == 0 then
+    return nil, "a dash pattern {on, off, ...} expected"
+  end
+  local pat, total = {}, 0
+  for i = 1, #pattern do
+    local v = pattern[i]
+    if type(v) ~= "number" or not (v >= 0) or v == huge then
+      return nil, format("dash pattern entry %d must be a finite number >= 0", i)
+    end
+    pat[i] = v
+    total = total + v
+  end
+  if #pat % 2 == 1 then
+    for i = 1, #pattern do pat[#pat + 1] = pat[i] end
+    total = 2 * total
+  end
+  if not (total > 0) then return nil, "dash pattern must not be all zero" end
+  return pat, total
+end
+
+-- p:dash(pattern [, offset]) -> the list of dashes (paths): the "on"
+-- stretches of the pattern laid along the path from distance -offset, as
+-- SVG's stroke-dasharray and stroke-dashoffset; the pattern starts again at
+-- each subpath.  Zero-length dashes are paths of no segments (a point).
+function Path:dash(pattern, offset)
+  check_self(self, "dash")
+  local fname = "dash"
+  local pat, P = read_pattern(pattern)
+  if not pat then argerror(1, fname, P) end
+  offset = offset == nil and 0 or check_number(offset, 2, fname, "offset")
+  local L = usable(self, fname)
+  local dashes = {}
+  if self.n == 0 then return dashes end
+  local mp = is_metapost(self)
+  for j = 1, self.nsub do
+    local a, b = 0, L               -- the subpath's range of distances
+    if not mp then a, b = self.cum[self.first[j] - 1], self.cum[self.first[j + 1] - 1] end
+    local span = b - a
+    if span / P * #pat > 2 * MAX_POINTS then
+      error(format("'dash': more than %d dashes (pattern too fine)", MAX_POINTS), 2)
+    end
+    -- where the pattern stands at the subpath's start: entry i, phase into it
+    local phase = offset - floor(offset / P) * P
+    local i = 1
+    while i < #pat and phase >= pat[i] do
+      phase = phase - pat[i]
+      i = i + 1
+    end
+    local left = pat[i] - phase
+    if left < 0 then left = 0 end
+    local rel = 0                     -- distance from the subpath's start
+    for _ = 1, 4 * MAX_POINTS do      -- each step ends an entry or the subpath
+      local e = rel + left
+      if e > span then e = span end
+      if i % 2 == 1 then
+        dashes[#dashes + 1] = from_pieces(self, pieces_between(self, a + rel, a + e))
+      end
+      rel = e
+      if rel >= span then break end
+      i = i % #pat + 1
+      left = pat[i]
+    end
+  end
+  return dashes
+end
+
+-- p:segments() -> the number of segments; p:segment(k) -> a copy of cubic k.
+function Path:segments()
+  check_self(self, "segments")
+  return self.n
+end
+
+function Path:segment(k)
+  check_self(self, "segment")
+  if type(k) ~= "number" or k ~= floor(k) or k < 1 or k > self.n then
+    argerror(1, "segment", format("k must be an integer in [1, %d]", self.n))
+  end
+  local c, out = self.segs[k], {}
+  for i = 1, #c do out[i] = c[i] end
+  return out
+end
+
+-- The shortest of %.15g, %.16g, %.17g that reads back as x.
+local function num(x)
+  for p = 15, 17 do
+    local s = format("%." .. p .. "g", x)
+    if tonumber(s) == x then return s end
+  end
+  return format("%.17g", x)
+end
+
+-- p:svg() -> SVG path data (absolute M and C, Z on a cyclic path) that
+-- reads back to the same segments (2D paths).
+function Path:svg()
+  check_self(self, "svg")
+  if self.dim ~= 2 then error("'svg': SVG path data is 2D; this path is 3D", 2) end
+  local out = {}
+  if self.n == 0 then return "M" .. num(self.x0) .. " " .. num(self.y0) end
+  local isgap = {}
+  for j = 1, self.nsub do isgap[self.first[j]] = true end
+  for k = 1, self.n do
+    local c = self.segs[k]
+    if isgap[k] then out[#out + 1] = "M" .. num(c[1]) .. " " .. num(c[2]) end
+    out[#out + 1] = format("C%s %s %s %s %s %s", num(c[3]), num(c[4]), num(c[5]),
+                           num(c[6]), num(c[7]), num(c[8]))
+  end
+  if self.cyclic then out[#out + 1] = "Z" end
+  return table.concat(out, " ")
+end
+
+Path.__tostring = function(self)
+  return format("arclen.path: %d segment%s in %d subpath%s%s", self.n,
+    self.n == 1 and "" or "s", self.nsub, self.nsub == 1 and "" or "s",
+    self.cyclic and ", cyclic" or "")
+end
+
+-- The module: callable as arclen.path(cubics [, opts]).
+local M = {svg = from_svg, mplib = from_mplib, Path = Path}
+setmetatable(M, {__call = from_cubics})
+
+-- Is x a path?
+function M.is_path(x) return getmetatable(x) == Path end
+
+return M
