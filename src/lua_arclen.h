@@ -40,6 +40,7 @@ void arclen_open_conic(lua_State *L);
 void arclen_open_henkel(lua_State *L);
 void arclen_open_elliptic(lua_State *L);
 void arclen_open_fit(lua_State *L);
+void arclen_open_path(lua_State *L);
 /* new areas: one line each, above this line */
 
 #endif
