@@ -162,14 +162,20 @@ describe("reference data", function()
   end)
 
   it("symmetric curves reach half their length at t = 1/2", function()
-    -- Henkel's cusp and loop: the mirror symmetry t -> 1-t gives s(1/2) = L/2.
-    for _, id in ipairs({"henkel-2", "cusp-1", "cusp-2", "cusp-3"}) do
-      for _, row in ipairs(helpers.tsv("curves2d.tsv")) do
-        if row.id == id then
-          assert.is_true(helpers.relerr(2 * tonumber(row.L50), tonumber(row.L)) <= 1e-15, id)
-          assert.is_true(helpers.relerr(tonumber(row.T50), 0.5) <= 1e-15, id)
-        end
+    -- Henkel's cusp, symmetric loops and their symmetric perturbations
+    -- (nearcusp 13-24, 37-60: tools/curves.py): the mirror symmetry
+    -- t -> 1-t gives s(1/2) = L/2.
+    local ids = {["henkel-2"] = true, ["cusp-1"] = true, ["cusp-2"] = true, ["cusp-3"] = true}
+    for i = 13, 24 do ids["nearcusp-" .. i] = true end
+    for i = 37, 60 do ids["nearcusp-" .. i] = true end
+    local n = 0
+    for _, row in ipairs(helpers.tsv("curves2d.tsv")) do
+      if ids[row.id] then
+        assert.is_true(helpers.relerr(2 * tonumber(row.L50), tonumber(row.L)) <= 1e-15, row.id)
+        assert.is_true(helpers.relerr(tonumber(row.T50), 0.5) <= 1e-15, row.id)
+        n = n + 1
       end
     end
+    assert.are.equal(40, n)
   end)
 end)

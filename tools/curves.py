@@ -265,8 +265,10 @@ def curves2d():
     hc = HENKEL[1]
     # Henkel's direction: P2 moved down (as in his curve 3).
     bases.append(lambda e: (0, 0, 10, 10, 0, 10 - 10 * e, 10, 0))
-    # Symmetric: keeps the speed minimum exactly at t = 1/2.
-    bases.append(lambda e: (0, 0, 10 - 10 * e, 10, 10 * e, 10, 10, 0))
+    # Symmetric (x1 + x2 = 10 exactly: 10 - x1 is exact by Sterbenz): the
+    # speed minimum stays exactly at the bisection point t = 1/2.
+    bases.append(lambda e: (0, 0, 10 - 10 * e, 10, 10 - (10 - 10 * e), 10,
+                            10, 0))
     bases.append(lambda e, c=hc, s=r.random(): perturb(c, 2, e, random.Random(s)))
     bases.append(symmetric_cusp(r, False))
     bases.append(symmetric_cusp(r, True))
