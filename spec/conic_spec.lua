@@ -718,3 +718,26 @@ describe("conic bad input", function()
     end
   end)
 end)
+
+-- ---- pictures ---------------------------------------------------------------
+
+describe("arclen.conicplot", function()
+  it("draws Figure 3 and the bound against the level from the module's numbers", function()
+    local cp = require "arclen.conicplot"
+    local data = cp.lambda_data(40)
+    for _, s in ipairs(SCHEMES) do
+      assert.are.equal(40, #data[s])
+      assert.is_true(abs(data[s][10][2] - arclen.conic_scheme(s, 1)) <= 1e-15)   -- w = 1
+    end
+    local text = cp.lambda_svg()
+    assert.matches("^<svg", text)
+    local lines = 0
+    for _ in text:gmatch("<path ") do lines = lines + 1 end
+    assert.is_true(lines >= 5)
+    local lv = cp.level_data(3)
+    for _, s in ipairs(SCHEMES) do
+      for r = 2, 4 do assert.is_true(lv[s][r][2] < lv[s][r - 1][2]) end
+    end
+    assert.matches("^<svg", cp.levels_svg())
+  end)
+end)
