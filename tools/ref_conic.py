@@ -333,14 +333,16 @@ def write_perimeters():
 
 def write_fullcircle_mpost():
     """MetaPost's fullcircle control points, from real mpost (double mode).
-    Skipped (no file) when mpost or its plain format is missing."""
+    Skipped (no file) when mpost is missing."""
     import shutil
     import subprocess
     import tempfile
     if shutil.which("mpost") is None:
         print("mpost not found: fullcircle reference skipped", file=sys.stderr)
         return
-    lines = []
+    # -ini needs no plain.mp: plain's fullcircle is makepath pencircle
+    lines = ["delimiters ();", "path fullcircle;",
+             "fullcircle = makepath pencircle;"]
     for i in range(8):
         for what in ("point %d" % i, "postcontrol %d" % i,
                      "precontrol %d" % (i + 1), "point %d" % (i + 1)):
@@ -350,7 +352,7 @@ def write_fullcircle_mpost():
     with tempfile.TemporaryDirectory() as tmp:
         with open(os.path.join(tmp, "fc.mp"), "w") as f:
             f.write(src)
-        subprocess.run(["mpost", "-numbersystem=double",
+        subprocess.run(["mpost", "-ini", "-numbersystem=double",
                         "-interaction=nonstopmode", "fc.mp"], cwd=tmp,
                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                        timeout=120)
@@ -358,7 +360,8 @@ def write_fullcircle_mpost():
             log = open(os.path.join(tmp, "fc.log")).read()
         except OSError:
             log = ""
-    vals = [l[3:].strip() for l in log.splitlines() if l.startswith(">> ")]
+    vals = [l[3:].strip().rstrip(")").strip() for l in log.splitlines()
+            if l.startswith(">> ")]
     if len(vals) != 64:
         print("mpost gave %d values: fullcircle reference skipped" %
               len(vals), file=sys.stderr)
