@@ -96,3 +96,8 @@ fit-stats: $(MODULE)
 fit-plots: $(MODULE)
 	@mkdir -p $(BUILD)/plots
 	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua' $(LUA_BIN) lua/arclen/plot.lua all $(BUILD)/plots
+
+# The README's accuracy table: worst relative error per reference family.
+.PHONY: accuracy
+accuracy: $(MODULE)
+	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua;spec/?.lua' $(LUA_BIN) bench/accuracy.lua

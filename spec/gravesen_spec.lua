@@ -14,8 +14,12 @@ local function check_file(file)
       it(method .. ": every curve of " .. file .. " within tol " .. tol, function()
         local worst = H.worst()
         for _, row in ipairs(rows) do
-          local L = arclen.length(H.curve(row), {method = method, tol = tol})
-          worst:add(H.relerr(L, tonumber(row.L)), row.id)
+          local c = H.curve(row)
+          -- the whole curve and the sub-ranges [0, 1/4], [0, 1/2], [0, 3/4]
+          for _, p in ipairs({{1, "L"}, {0.25, "L25"}, {0.5, "L50"}, {0.75, "L75"}}) do
+            local L = arclen.length(c, {method = method, tol = tol, t1 = p[1]})
+            worst:add(H.relerr(L, tonumber(row[p[2]])), row.id .. " t1=" .. p[1])
+          end
         end
         assert.is_true(worst.err <= tol, string.format("%s: %.3g at %s", method,
                                                        worst.err, tostring(worst.id)))

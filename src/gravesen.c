@@ -106,7 +106,11 @@ static int gravesen(const double *c, int dim, const arclen_opts *o,
   if (dim != 2 && dim != 3) { *len = NAN; return ARCLEN_EDIM; }
   if (t0 > t1) { double w = t0; t0 = t1; t1 = w; sign = -1.0; }
   if (t0 != 0.0 || t1 != 1.0) {
-    arclen_subcurve(c, dim, t0, t1, sub);
+    /* Cut the curve moved to P0 = 0: blossoming in absolute coordinates
+    ** would cost |P0| eps of every control point (digits of a far curve). */
+    double moved[12];
+    for (i = 0; i < 4 * dim; i++) moved[i] = c[i] - c[i % dim];
+    arclen_subcurve(moved, dim, t0, t1, sub);
     q = sub;
   }
   for (i = 0; i < 9; i++) root.d[i] = 0.0;
