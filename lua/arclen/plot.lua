@@ -17,6 +17,9 @@
 local arclen = require "arclen"
 local svg = require "arclen.svg"
 
+-- math.log has no base argument in Lua 5.1 and LuaJIT; 5.4 has no log10.
+local log10 = math.log10 or function(x) return math.log(x, 10) end
+
 local M = {}
 
 M.default_methods = {
@@ -112,14 +115,14 @@ function M.fit_error(c, opts)
         if e > top then top = e end
       end
     end
-    floor = 10 ^ math.floor(math.log(math.max(floor, top * 1e-9), 10))
+    floor = 10 ^ math.floor(log10(math.max(floor, top * 1e-9)))
   end
   local fig = svg.figure{
     title = opts.title or "Error of the fits along t",
     xlabel = "t   (curve " .. curve_label(c) .. ")",
     ylabel = signed and "fit - true s(t)/s(1)" or "|fit - true s(t)/s(1)|",
     xrange = {0, 1}, ylog = not signed, legend = "bottomright",
-    yrange = not signed and {floor / 1000, 10 ^ math.ceil(math.log(top, 10))} or nil,
+    yrange = not signed and {floor / 1000, 10 ^ math.ceil(log10(top))} or nil,
     width = opts.width, height = opts.height,
   }
   if signed then fig:hline(0, {color = "#999999", width = 1}) end
@@ -153,7 +156,7 @@ function M.histogram(sets, opts)
   local range = opts.range
   if not range then
     if log then
-      range = {10 ^ math.floor(math.log(lo, 10)), 10 ^ math.ceil(math.log(hi, 10))}
+      range = {10 ^ math.floor(log10(lo)), 10 ^ math.ceil(log10(hi))}
     else
       range = {0, hi}
     end
