@@ -301,6 +301,18 @@ describe("awkward curves", function()
     end
   end)
 
+  it("a length beyond DBL_MAX: total inf, but finite lengths before it, never NaN", function()
+    local big = 1e308
+    local f = arclen.fit({big, big, -big, big, big, -big, -big, -big})
+    assert.are.equal(math.huge, f.total)
+    assert.are.equal(0, f:length(0))
+    local s = f:length(0.1)
+    assert.is_true(s > 0 and s < math.huge)
+    local t = f:time(s)
+    assert.is_true(math.abs(t - 0.1) <= 1e-9)
+    assert.is_true(f:errors{truth = "exact", npts = 100} <= 0.01)
+  end)
+
   it("3D: a planar 3D curve fits like its 2D twin; a twisted one within bounds", function()
     local c3 = {}
     for i = 0, 3 do c3[3 * i + 1], c3[3 * i + 2], c3[3 * i + 3] = WORST[2 * i + 1], WORST[2 * i + 2], 0 end

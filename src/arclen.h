@@ -215,6 +215,7 @@ typedef struct arclen_fit {
   int ncrit;             /* speed's critical points in (0,1) */
   double crit[3];        /* ("inflexion points" of s(t) in the paper) */
   double total;          /* s(1) used for normalising, curve units */
+  double itotal;         /* the same in internal units (never overflows) */
   int scale_exp;         /* curve units = 2^scale_exp internal units */
   double tol;            /* requested tolerance (0: fixed knots) */
   long evals;            /* speed evaluations spent building */
@@ -238,6 +239,7 @@ double arclen_fit_value(const arclen_fit *f, double t);   /* ~ s(t)/s(1) */
 double arclen_fit_slope(const arclen_fit *f, double t);   /* d/dt of it */
 double arclen_fit_length(const arclen_fit *f, double t);  /* ~ s(t) */
 double arclen_fit_time(const arclen_fit *f, double s);    /* inverse */
+double arclen_fit_invert(const arclen_fit *f, double v);  /* of value */
 /* 1 when every span is non-decreasing (exact Bernstein test). */
 int arclen_fit_monotone(const arclen_fit *f);
 int arclen_fit_span_monotone(const arclen_fit_span *sp);

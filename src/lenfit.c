@@ -308,6 +308,7 @@ int arclen_fit_build(const double *c, int dim, const arclen_fit_opts *o,
   if (status != ARCLEN_OK) return status;
   status = o->method == ARCLEN_FIT_PAPER ? build_paper(f, cap)
                                          : build_hermite(f, cap);
+  f->itotal = f->total;
   if (f->nspans > 0) f->total = ldexp(f->total, f->scale_exp);
   return status;
 }

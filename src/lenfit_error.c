@@ -75,7 +75,7 @@ int arclen_fit_error(const arclen_fit *f, int truth_kind, int inverse,
   if (truth_kind != ARCLEN_TRUTH_SIMPSON && truth_kind != ARCLEN_TRUTH_EXACT)
     return ARCLEN_EDOMAIN;
   if (npts < 0 || npts > GRID_CAP) return ARCLEN_EDOMAIN;
-  if (!(f->total > 0.0)) return ARCLEN_OK;   /* a point: nothing to miss */
+  if (!(f->itotal > 0.0)) return ARCLEN_OK;   /* a point: nothing to miss */
   total = truth(f, truth_kind, 1.0);
   if (!(total > 0.0)) return ARCLEN_ENOCONV;
   /* The paper's loop "for (t = 0; t <= 1; t += 0.05)" runs 20 times. */
@@ -84,7 +84,7 @@ int arclen_fit_error(const arclen_fit *f, int truth_kind, int inverse,
     double t, e;
     if (npts > 0) u = (double)k / npts;
     if (inverse) {
-      t = arclen_fit_time(f, u * f->total);
+      t = arclen_fit_invert(f, u);
       e = fabs(truth(f, truth_kind, t) / total - u);
     } else {
       t = u;

@@ -53,8 +53,10 @@ double arclen_fit_slope(const arclen_fit *f, double t) {
   return dy / (sp->t1 - sp->t0);
 }
 
+/* Scaled in internal units, so that a total beyond DBL_MAX still gives
+** finite lengths short of it (and 0, not inf * 0, at t = 0). */
 double arclen_fit_length(const arclen_fit *f, double t) {
-  return f->total * arclen_fit_value(f, t);
+  return ldexp(f->itotal * arclen_fit_value(f, t), f->scale_exp);
 }
 
 /* u in [0, 1] with y(u) = target, where y(0) <= target <= y(1): Newton
@@ -79,15 +81,19 @@ static double invert_span(const double *y, double target) {
   return u;
 }
 
-double arclen_fit_time(const arclen_fit *f, double s) {
+double arclen_fit_invert(const arclen_fit *f, double v) {
   const arclen_fit_span *sp;
-  double target, u;
-  if (!(f->total > 0.0) || !(s > 0.0)) return 0.0;
-  if (s >= f->total) return 1.0;
-  target = s / f->total;
-  sp = &f->span[find_span(f, target, 1)];
-  u = invert_span(sp->y, target);
+  double u;
+  if (!(f->itotal > 0.0) || !(v > 0.0)) return 0.0;
+  if (v >= 1.0) return 1.0;
+  sp = &f->span[find_span(f, v, 1)];
+  u = invert_span(sp->y, v);
   return sp->t0 + u * (sp->t1 - sp->t0);
+}
+
+double arclen_fit_time(const arclen_fit *f, double s) {
+  if (!(f->itotal > 0.0) || !(s > 0.0)) return 0.0;
+  return arclen_fit_invert(f, ldexp(s, -f->scale_exp) / f->itotal);
 }
 
 int arclen_fit_span_monotone(const arclen_fit_span *sp) {
