@@ -598,7 +598,7 @@ function Path:dash(pattern, offset)
     -- where the pattern stands at the subpath's start: entry i, phase into it
     local phase = offset - floor(offset / P) * P
     local i = 1
-    while i < #pat and phase >= pat[i] do
+    while i < #pat and (phase > pat[i] or (phase == pat[i] and pat[i] > 0)) do
       phase = phase - pat[i]
       i = i + 1
     end
