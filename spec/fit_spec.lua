@@ -114,6 +114,54 @@ describe("method 'paper' on the random set (3000 curves, ran1 seed 1)", function
     assert.is_true(share > 0.005 and share < 0.025, "non-monotone share " .. share)
   end)
 
+  it("monotone = true projects every span onto the monotone set, least squares", function()
+    local rm = fitstats.stats(RANDOM, {method = "paper", n = 10, monotone = true},
+                              {truth = "simpson"})
+    assert.are.equal(0, rm.nonmono)
+    assert.are.equal(r10.evals, rm.evals)
+    assert.is_true(rm.max <= r10.max + 1e-12 and rm.avgmax <= r10.avgmax)
+    -- Against a brute-force scan of the feasible (d0, d2) grid: the
+    -- projection is feasible and at least as close as every grid point.
+    local G = 200
+    local function check(c, n, curved_only)
+      local raw = arclen.fit(c, {method = "paper", n = n})
+      if raw:monotone() then return 0 end
+      local proj = arclen.fit(c, {method = "paper", n = n, monotone = true})
+      local rs, ps, checked = raw:spans(), proj:spans(), 0
+      for i, sp in ipairs(rs) do
+        local y, q = sp.y, ps[i].y
+        assert.are.equal(y[1], q[1]); assert.are.equal(y[4], q[4])
+        local D, p0, p2 = y[4] - y[1], y[2] - y[1], y[4] - y[3]
+        if not sp.monotone and (not curved_only or (p0 > 0 and p2 > 0)) then
+          local got = math.sqrt((q[2] - y[2]) ^ 2 + (q[3] - y[3]) ^ 2)
+          local best = math.huge
+          for a = 0, G do
+            for b = 0, G do
+              local d0, d2 = D * a / G, D * b / G
+              local d1 = D - d0 - d2
+              if d1 >= 0 or d1 * d1 <= d0 * d2 then
+                best = math.min(best, (d0 - p0) ^ 2 + (d2 - p2) ^ 2)
+              end
+            end
+          end
+          best = math.sqrt(best)
+          assert.is_true(got <= best + 1e-12, ("projection %g > grid %g"):format(got, best))
+          assert.is_true(ps[i].monotone)
+          checked = checked + 1
+        end
+      end
+      return checked
+    end
+    local checked = 0
+    for _, c in ipairs(RANDOM) do checked = checked + check(c, 10) end
+    assert.is_true(checked >= 30)
+    -- Spans below the curved part of the boundary (d0, d2 > 0, d1 too
+    -- negative) are rarer: about 1 in 2500 n = 3 fits.
+    local curved = 0
+    for _, c in ipairs(fitstats.random_set(30000, 7)) do curved = curved + check(c, 3, true) end
+    assert.is_true(curved >= 5)
+  end)
+
   it("splits as Sec. 3.4 says: mean of two roots, middle of three", function()
     local seen = {}
     for _, c in ipairs(RANDOM) do
@@ -360,6 +408,8 @@ describe("bad input", function()
     fails("tol must be a number", arclen.fit, WORST, {tol = "1e-3"})
     fails("tol applies to method 'hermite' only", arclen.fit, WORST,
           {method = "paper", tol = 1e-3})
+    fails("monotone must be a boolean", arclen.fit, WORST, {method = "paper", monotone = 1})
+    fails("monotone applies to method 'paper' only", arclen.fit, WORST, {monotone = true})
   end)
 
   it("evaluation: t outside [0, 1] or NaN, s NaN or not a number", function()

@@ -205,6 +205,7 @@ typedef struct arclen_fit_opts {
   int n;           /* Gauss-Legendre points: per node (paper, default 10)
                       or per piece (hermite, default 2); 0 = default */
   double tol;      /* hermite: max error in s/s(1); 0 = fixed knots */
+  int monotone;    /* paper: project each span onto the monotone set */
 } arclen_fit_opts;
 typedef struct arclen_fit_span {
   double t0, t1;   /* parameter range */

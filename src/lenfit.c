@@ -31,6 +31,7 @@ void arclen_fit_opts_init(arclen_fit_opts *o) {
   o->method = ARCLEN_FIT_HERMITE;
   o->n = 0;
   o->tol = 0.0;
+  o->monotone = 0;
 }
 
 double arclen_fit_speed(const arclen_fit *f, double t) {
@@ -119,6 +120,64 @@ static void paper_span(arclen_fit_span *sp, double a, double b, double y0,
   sp->y[3] = y3;
 }
 
+/* Squared distance from (p0, p2) to the monotone-boundary point at angle
+** phi: with d0 = a^2, d2 = b^2 the boundary d0 + d2 - sqrt(d0 d2) = D is
+** the ellipse a^2 - ab + b^2 = D; a = r cos(phi), b = r sin(phi). */
+static double boundary_point(double D, double phi, double p0, double p2,
+                             double *d0, double *d2) {
+  double c = cos(phi), s = sin(phi), r2 = D / (1.0 - c * s);
+  *d0 = r2 * c * c;
+  *d2 = r2 * s * s;
+  return (*d0 - p0) * (*d0 - p0) + (*d2 - p2) * (*d2 - p2);
+}
+
+#define PROJECT_SAMPLES 64   /* coarse scan of the boundary, then refine */
+#define PROJECT_REFINE 60    /* golden-section steps (0.618^60 ~ 3e-13) */
+
+/* The least-squares projection of a span's inner ordinates onto the set of
+** non-decreasing functional cubics with the same ends: d0 = V1 - y0 >= 0,
+** d2 = y3 - V2 >= 0, d1 = D - d0 - d2 >= -sqrt(d0 d2) (a Bernstein
+** quadratic's non-negativity), a convex set in (d0, d2).  Clamping V1, V2
+** instead costs much more accuracy (../shared/notes/lenfit.md). */
+static void project_monotone(arclen_fit_span *sp) {
+  const double golden = 0.6180339887498949;   /* (sqrt(5) - 1) / 2 */
+  const double half_pi = 1.5707963267948966;
+  double D = sp->y[3] - sp->y[0], p0 = sp->y[1] - sp->y[0];
+  double p2 = sp->y[3] - sp->y[2], best, b0, b2, d0, d2, lo, hi, dist;
+  int i, ibest = 0;
+  if (arclen_fit_span_monotone(sp)) return;
+  if (!(D > 0.0)) { sp->y[1] = sp->y[0]; sp->y[2] = sp->y[3]; return; }
+  /* The two axis edges: d0 = 0 or d2 = 0, the other in [0, D]. */
+  b0 = 0.0;
+  b2 = p2 < 0.0 ? 0.0 : (p2 > D ? D : p2);
+  best = p0 * p0 + (b2 - p2) * (b2 - p2);
+  d0 = p0 < 0.0 ? 0.0 : (p0 > D ? D : p0);
+  dist = (d0 - p0) * (d0 - p0) + p2 * p2;
+  if (dist < best) { best = dist; b0 = d0; b2 = 0.0; }
+  /* The curved edge: scan, then golden-section search around the best. */
+  for (i = 0; i <= PROJECT_SAMPLES; i++) {
+    double di = boundary_point(D, half_pi * i / PROJECT_SAMPLES, p0, p2, &d0,
+                               &d2);
+    if (i == 0 || di < dist) { dist = di; ibest = i; }
+  }
+  lo = half_pi * (ibest > 0 ? ibest - 1 : 0) / PROJECT_SAMPLES;
+  hi = half_pi * (ibest < PROJECT_SAMPLES ? ibest + 1 : PROJECT_SAMPLES) /
+       PROJECT_SAMPLES;
+  for (i = 0; i < PROJECT_REFINE; i++) {
+    double m1 = hi - golden * (hi - lo), m2 = lo + golden * (hi - lo);
+    if (boundary_point(D, m1, p0, p2, &d0, &d2) <
+        boundary_point(D, m2, p0, p2, &d0, &d2))
+      hi = m2;
+    else
+      lo = m1;
+  }
+  dist = boundary_point(D, 0.5 * (lo + hi), p0, p2, &d0, &d2);
+  if (dist < best) { b0 = d0; b2 = d2; }
+  /* Just inside, so rounding cannot put it back outside. */
+  sp->y[1] = sp->y[0] + b0 * (1.0 - 1e-12);
+  sp->y[2] = sp->y[3] - b2 * (1.0 - 1e-12);
+}
+
 static int build_paper(arclen_fit *f, int cap) {
   double x[ARCLEN_GL_MAXN], w[ARCLEN_GL_MAXN], l1[3], l2[3], tmid, s1;
   int n = f->n;
@@ -147,6 +206,13 @@ static int build_paper(arclen_fit *f, int cap) {
   f->nspans = 2;
   f->total = s1;
   return ARCLEN_OK;
+}
+
+static int build_paper_monotone(arclen_fit *f, int cap) {
+  int i, status = build_paper(f, cap);
+  for (i = 0; status == ARCLEN_OK && i < f->nspans; i++)
+    project_monotone(&f->span[i]);
+  return status;
 }
 
 /* ---- method "hermite" ---------------------------------------------- */
@@ -306,8 +372,9 @@ int arclen_fit_build(const double *c, int dim, const arclen_fit_opts *o,
   }
   status = prepare(c, dim, f);
   if (status != ARCLEN_OK) return status;
-  status = o->method == ARCLEN_FIT_PAPER ? build_paper(f, cap)
-                                         : build_hermite(f, cap);
+  if (o->method == ARCLEN_FIT_HERMITE) status = build_hermite(f, cap);
+  else if (o->monotone) status = build_paper_monotone(f, cap);
+  else status = build_paper(f, cap);
   f->itotal = f->total;
   if (f->nspans > 0) f->total = ldexp(f->total, f->scale_exp);
   return status;

@@ -1,6 +1,6 @@
 /*
 ** lua_fit.c -- the Lua binding of the length-versus-t fits (lenfit.c):
-**   arclen.fit(c [, {method = "hermite"|"paper", n = , tol = }]) -> fit
+**   arclen.fit(c [, {method = "hermite"|"paper", n = , tol = , monotone = }])
 **   fit:length(t)  fit:value(t)  fit:time(s)  fit:spans()  fit:monotone()
 **   fit:errors([{truth = "simpson"|"exact", inverse = , npts = }])
 **   fit.total  fit.evals  fit.method  fit.n  fit.tol  fit.dim  fit.nspans
@@ -73,6 +73,10 @@ static void check_fit_opts(lua_State *L, int arg, arclen_fit_opts *o) {
         luaL_argerror(L, arg, "tol must be in [1e-9, 0.1]");
       o->tol = v;
       has_tol = 1;
+    } else if (strcmp(key, "monotone") == 0) {
+      if (lua_type(L, -1) != LUA_TBOOLEAN)
+        luaL_argerror(L, arg, "monotone must be a boolean");
+      o->monotone = lua_toboolean(L, -1);
     } else {
       luaL_argerror(L, arg, lua_pushfstring(L, "unknown option '%s'", key));
     }
@@ -80,6 +84,9 @@ static void check_fit_opts(lua_State *L, int arg, arclen_fit_opts *o) {
   }
   if (has_tol && o->method != ARCLEN_FIT_HERMITE)
     luaL_argerror(L, arg, "tol applies to method 'hermite' only");
+  if (o->monotone && o->method != ARCLEN_FIT_PAPER)
+    luaL_argerror(L, arg, "monotone applies to method 'paper' only "
+                          "(hermite fits are always monotone)");
 }
 
 static arclen_fit *check_fit(lua_State *L, int arg) {

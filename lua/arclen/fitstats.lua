@@ -115,6 +115,7 @@ M.configs = {
   {"paper n=10", {method = "paper", n = 10}, {truth = "exact"}},
   {"paper n=3", {method = "paper", n = 3}, {truth = "exact"}},
   {"paper n=10, inverse t(s)", {method = "paper", n = 10}, {truth = "exact", inverse = true}},
+  {"paper n=10, monotone projection", {method = "paper", n = 10, monotone = true}, {truth = "exact"}},
   {"hermite (default)", {}, {truth = "exact"}},
   {"hermite, inverse t(s)", {}, {truth = "exact", inverse = true}},
   {"hermite tol=1e-4", {tol = 1e-4}, {truth = "exact"}},
@@ -166,7 +167,7 @@ function M.main(args)
   local fonts = {}
   local ok, result = pcall(M.font_sets, fontpath)
   if ok then fonts = result else out:write("(no font data: ", tostring(result), ")\n") end
-  local configs = quick and {M.configs[1], M.configs[5]} or M.configs
+  local configs = quick and {M.configs[1], M.configs[6]} or M.configs
   for _, set in ipairs(sets) do
     for _, cfg in ipairs(configs) do
       out:write(fmt_row(set[1], cfg[1], M.stats(set[2], cfg[2], cfg[3])), "\n")
