@@ -434,3 +434,48 @@ describe("bad input", function()
     fails("n must be a number", arclen.gauss_legendre, nil)
   end)
 end)
+
+describe("pictures (arclen.svg, arclen.plot)", function()
+  local svg = require "arclen.svg"
+  local plot = require "arclen.plot"
+
+  it("svg.histogram bins every value once, linear or log", function()
+    local values = {}
+    for i = 1, 1000 do values[i] = (i / 1000) ^ 3 end
+    for _, log in ipairs({false, true}) do
+      local edges, counts = svg.histogram(values, {bins = 17, log = log})
+      assert.are.equal(18, #edges)
+      local sum = 0
+      for _, c in ipairs(counts) do sum = sum + c end
+      assert.are.equal(1000, sum)
+      for i = 2, #edges do assert.is_true(edges[i] > edges[i - 1]) end
+    end
+  end)
+
+  it("a figure renders a complete SVG document with its items and legend", function()
+    local fig = svg.figure{title = "T <&>", xlabel = "x", ylabel = "y", ylog = true}
+    fig:line({{1, 1}, {2, 10}, {3, 0}, {4, 100}}, {label = "a"})   -- 0 leaves a gap
+    fig:markers({1, 2}, {1, 10}, {label = "m", shape = "square"})
+    fig:vline(2.5, {text = "v"})
+    local text = fig:render()
+    assert.is_truthy(text:match("^<svg xmlns=\"http://www.w3.org/2000/svg\""))
+    assert.is_truthy(text:match("</svg>\n$"))
+    assert.is_truthy(text:find("T &lt;&amp;&gt;", 1, true))
+    assert.is_nil(text:find("nan", 1, true))
+    assert.is_nil(text:find("inf", 1, true))
+    local _, paths = text:gsub("<path d=\"M", "")
+    assert.are.equal(1, paths)           -- one line, split by the gap into 2 runs
+    local _, moves = text:match("<path d=\"([^\"]*)\""):gsub("M", "")
+    assert.are.equal(2, moves)
+  end)
+
+  it("plot.fit and plot.fit_error draw the truth, both fits and the marks", function()
+    local text = plot.fit(WORST, {samples = 50})
+    assert.is_truthy(text:find("true s(t)/s(1)", 1, true))
+    assert.is_truthy(text:find("paper, n = 10 (max error 0.087)", 1, true))
+    assert.is_truthy(text:find("inflexion t = 0.6982", 1, true))
+    assert.is_truthy(plot.fit_error(WORST, {samples = 50}):find("span ends", 1, true))
+    local hist = plot.histogram({{label = "x", values = {0.1, 0.01, 0.001}}})
+    assert.is_truthy(hist:find("<rect", 1, true))
+  end)
+end)
