@@ -164,8 +164,13 @@ end)
 
 describe("metapost: bad input", function()
   it("names the argument", function()
-    assert.matches("bad argument #1 to 'arclen.metapost.arclength'",
-                   H.error_of(mp.arclength, {1, 2, 3}))
+    if _VERSION >= "Lua 5.3" and not jit then   -- lauxlib finds the name in package.loaded
+      assert.matches("bad argument #1 to 'arclen.metapost.arclength'",
+                     H.error_of(mp.arclength, {1, 2, 3}))
+    else                                        -- 5.1, 5.2, LuaJIT: only a call by name
+      assert.matches("bad argument #1 to 'arclength'",
+                     H.error_of(function(c) local v = mp.arclength(c) return v end, {1, 2, 3}))
+    end
     assert.matches("2D", H.error_of(mp.arclength, {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3}))
     assert.matches("bad argument #2 .*goal", H.error_of(mp.arctime, {0, 0, 1, 1, 2, 2, 3, 3}, 0 / 0))
     assert.matches("segment 2 does not start where segment 1 ends",

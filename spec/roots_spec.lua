@@ -61,10 +61,11 @@ describe("roots", function()
   it("lower degrees when leading coefficients vanish; bad input names the argument", function()
     assert.are.equal(1, #arclen.quadratic(0, 2, -4))
     assert.are.equal(2, #arclen.quartic(0, 0, 1, 0, -1))
-    local function q(...) return arclen.quartic(...) end
+    -- not tail calls: LuaJIT names only a function called by name from a live frame
+    local function q(...) local r = arclen.quartic(...) return r end
     assert.matches("bad argument #3 to 'quartic' %(a2 must be finite%)",
-      H.error_of(function() return q(1, 2, 1 / 0, 4, 5) end) or "")
+      H.error_of(function() local r = q(1, 2, 1 / 0, 4, 5) return r end) or "")
     assert.matches("bad argument #1 to 'quartic_factor' %(a4 must not be 0",
-      H.error_of(function() return arclen.quartic_factor(0, 1, 2, 3, 4) end) or "")
+      H.error_of(function() local r = arclen.quartic_factor(0, 1, 2, 3, 4) return r end) or "")
   end)
 end)
