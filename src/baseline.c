@@ -11,6 +11,7 @@
 ** Their errors are the rules' (O(N^-2)), plus in Eqn 7 the cancellation of
 ** the expanded quartic near a cusp -- which is what these rows are for.
 */
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 
@@ -31,19 +32,42 @@ static void add(ksum *g, double x) {
   g->s = t;
 }
 
+/* The leg vectors d_k = P_{k+1} - P_k (d[3k + i]) divided by a power of two,
+** returned, that puts the largest component in [0.5, 1): sums of squares
+** then neither overflow (coordinates near DBL_MAX) nor underflow (subnormal
+** ones), and the scaling is exact.  Coordinates beyond DBL_MAX/4 are
+** quartered first so that no difference overflows. */
+static double legs_scaled(const double *c, int dim, double d[9]) {
+  double pre = 1.0, big = 0.0;
+  int i, k, e;
+  for (i = 0; i < 4 * dim; i++)
+    if (fabs(c[i]) > DBL_MAX / 4) pre = 0.25;
+  for (k = 0; k < 3; k++)
+    for (i = 0; i < dim; i++) {
+      d[3 * k + i] = c[(k + 1) * dim + i] * pre - c[k * dim + i] * pre;
+      big = fmax(big, fabs(d[3 * k + i]));
+    }
+  if (big == 0.0) return 1.0;
+  frexp(big, &e);
+  for (k = 0; k < 3 * 3; k++) d[k] = ldexp(d[k], -e);
+  return ldexp(1.0, e) / pre;      /* may be inf: so is the length */
+}
+
 /* Power basis of z(t) - z(0) per coordinate (Henkel's Eqn 4 without a0),
 ** from the leg vectors so that far-away curves keep their digits:
-** a1 = 3 d0, a2 = 3 (d1 - d0), a3 = d2 - 2 d1 + d0. */
-static void power_basis(const double *c, int dim, double a1[3], double a2[3],
-                        double a3[3]) {
+** a1 = 3 d0, a2 = 3 (d1 - d0), a3 = d2 - 2 d1 + d0; divided by the
+** returned scale (legs_scaled). */
+static double power_basis(const double *c, int dim, double a1[3],
+                          double a2[3], double a3[3]) {
+  double d[9], scale = legs_scaled(c, dim, d);
   int i;
   for (i = 0; i < dim; i++) {
-    double d0 = c[dim + i] - c[i], d1 = c[2 * dim + i] - c[dim + i];
-    double d2 = c[3 * dim + i] - c[2 * dim + i];
+    double d0 = d[i], d1 = d[3 + i], d2 = d[6 + i];
     a1[i] = 3.0 * d0;
     a2[i] = 3.0 * (d1 - d0);
     a3[i] = (d2 - d1) - (d1 - d0);
   }
+  return scale;
 }
 
 /* Steps and range of a baseline call; 0 or an error code. */
@@ -77,12 +101,12 @@ static double node(double t0, double t1, long i, long n) {
 
 int arclen_length_polyline(const double *c, int dim, const arclen_opts *o,
                            double *len, arclen_info *info) {
-  double a1[3], a2[3], a3[3], t0, t1, ta;
+  double a1[3], a2[3], a3[3], t0, t1, ta, scale;
   long n, i;
   ksum sum = {0.0, 0.0};
   int rc = setup(dim, o, &n, &t0, &t1, 1), k;
   if (rc != ARCLEN_OK) { *len = NAN; return rc; }
-  power_basis(c, dim, a1, a2, a3);
+  scale = power_basis(c, dim, a1, a2, a3);
   ta = t0;
   for (i = 1; i <= n; i++) {
     double tb = node(t0, t1, i, n), h = tb - ta, s = 0.0;
@@ -96,7 +120,7 @@ int arclen_length_polyline(const double *c, int dim, const arclen_opts *o,
     ta = tb;
   }
   fill_info(info, n, n, "polyline");
-  *len = (t1 < t0) ? -(sum.s + sum.c) : sum.s + sum.c;
+  *len = ((t1 < t0) ? -(sum.s + sum.c) : sum.s + sum.c) * scale;
   return ARCLEN_OK;
 }
 
@@ -127,10 +151,11 @@ static double quartic_speed(const void *data, double t) {
 int arclen_length_trapezoid(const double *c, int dim, const arclen_opts *o,
                             double *len, arclen_info *info) {
   double a1[3], a2[3], a3[3], q[5] = {0.0, 0.0, 0.0, 0.0, 0.0}, t0, t1;
+  double scale;
   long n;
   int rc = setup(dim, o, &n, &t0, &t1, 1), k;
   if (rc != ARCLEN_OK) { *len = NAN; return rc; }
-  power_basis(c, dim, a1, a2, a3);
+  scale = power_basis(c, dim, a1, a2, a3);
   for (k = 0; k < dim; k++) {         /* Henkel's Eqn 8, summed over axes */
     q[4] += 9.0 * a3[k] * a3[k];
     q[3] += 12.0 * a3[k] * a2[k];
@@ -138,7 +163,7 @@ int arclen_length_trapezoid(const double *c, int dim, const arclen_opts *o,
     q[1] += 4.0 * a2[k] * a1[k];
     q[0] += a1[k] * a1[k];
   }
-  *len = trapezoid(quartic_speed, q, t0, t1, n);
+  *len = trapezoid(quartic_speed, q, t0, t1, n) * scale;
   fill_info(info, n + 1, n, "trapezoid");
   return ARCLEN_OK;
 }
@@ -200,11 +225,13 @@ static double factored_speed(const void *data, double t) {
 
 /* Roots of A2 t^2 + A1 t + A0 (complex coefficients) without cancellation:
 ** q = -(A1 + d)/2 with d = +-sqrt(A1^2 - 4 A2 A0) on A1's side, then
-** s1 = q/A2 and s2 = A0/q.  Fills f; lower degrees when A2 (and A1) vanish. */
-static void factor_speed(const double *c, factored *f) {
+** s1 = q/A2 and s2 = A0/q.  Fills f (f->lead divided by the returned scale,
+** see legs_scaled); lower degrees when A2 (and A1) vanish. */
+static double factor_speed(const double *c, factored *f) {
   cpx A0, A1, A2, d, q, s;
-  double d0x = c[2] - c[0], d0y = c[3] - c[1], d1x = c[4] - c[2];
-  double d1y = c[5] - c[3], d2x = c[6] - c[4], d2y = c[7] - c[5];
+  double leg[9], scale = legs_scaled(c, 2, leg);
+  double d0x = leg[0], d0y = leg[1], d1x = leg[3];
+  double d1y = leg[4], d2x = leg[6], d2y = leg[7];
   A0.re = 3.0 * d0x; A0.im = 3.0 * d0y;
   A1.re = 6.0 * (d1x - d0x); A1.im = 6.0 * (d1y - d0y);
   A2.re = 3.0 * ((d2x - d1x) - (d1x - d0x));
@@ -213,14 +240,14 @@ static void factor_speed(const double *c, factored *f) {
     if (A1.re == 0.0 && A1.im == 0.0) {       /* constant velocity */
       f->lead = hypot(A0.re, A0.im);
       f->nroots = 0;
-      return;
+      return scale;
     }
     s = cdiv(A0, A1);                          /* z' = A1 (t + A0/A1) */
     f->lead = hypot(A1.re, A1.im);
     f->nroots = 1;
     f->a[0] = -s.re;
     f->b2[0] = s.im * s.im;
-    return;
+    return scale;
   }
   d = cmul(A1, A1);
   s = cmul(A2, A0);
@@ -243,18 +270,19 @@ static void factor_speed(const double *c, factored *f) {
     f->a[1] = s.re;
     f->b2[1] = s.im * s.im;
   }
+  return scale;
 }
 
 int arclen_length_trapezoid_factored(const double *c, int dim,
                                      const arclen_opts *o, double *len,
                                      arclen_info *info) {
   factored f;
-  double t0, t1;
+  double t0, t1, scale;
   long n;
   int rc = setup(dim, o, &n, &t0, &t1, 0);
   if (rc != ARCLEN_OK) { *len = NAN; return rc; }
-  factor_speed(c, &f);
-  *len = trapezoid(factored_speed, &f, t0, t1, n);
+  scale = factor_speed(c, &f);
+  *len = trapezoid(factored_speed, &f, t0, t1, n) * scale;
   fill_info(info, n + 1, n, "trapezoid-factored");
   return ARCLEN_OK;
 }
