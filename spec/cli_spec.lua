@@ -5,9 +5,11 @@
 -- its output, its messages on stderr and its exit status.
 local arclen = require("arclen")
 
+-- This Lua: texlua and texluajit (LuaTeX's, with kpse built in) or a plain one.
 local function interpreter()
-  if type(jit) == "table" then return "luajit" end
-  return "lua" .. _VERSION:match("%d+%.%d+")
+  local tex = type(kpse) == "table"
+  if type(jit) == "table" then return tex and "texluajit" or "luajit" end
+  return tex and "texlua" or "lua" .. _VERSION:match("%d+%.%d+")
 end
 
 local function shquote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end

@@ -1,10 +1,13 @@
 #!/bin/sh
-# tools/run-tests.sh -- the test command: the spec suite under Lua 5.4
-# against the fresh build in build/5.4 (never an installed arclen), then a
-# smoke run of the module built for each other Lua found on the machine
-# (5.1, 5.2, 5.3, LuaJIT, LuaTeX's texlua with the 5.3 build).  The last
-# line adds them up as "N passed, N failed".
-#   FULL=1 tools/run-tests.sh   runs the whole suite under every Lua
+# tools/run-tests.sh -- the test command: the whole spec suite under every
+# Lua found on the machine -- 5.1, 5.2, 5.3, LuaJIT, LuaTeX's texlua (with
+# the 5.3 build) and texluajit (with the LuaJIT build), then 5.4 -- each
+# against the fresh build in build/<version> (never an installed arclen);
+# the LuaTeX example (examples/mplib_path.lua) under texlua and texluajit;
+# the suite on the luarocks-installed module.  The last line adds them up
+# as "N passed, N failed".
+#   SMOKE=1 tools/run-tests.sh   only a smoke run (spec/smoke.lua) under
+#                                the Lua versions other than 5.4
 cd "$(dirname "$0")/.." || exit 2
 PASSED=0
 FAILED=0
@@ -30,6 +33,20 @@ suite() {   # suite LUA BIN: the busted specs under one interpreter
   count "busted under $2"
 }
 
+# LuaTeX's texlua (Lua 5.3) and texluajit (LuaJIT) do not search Debian's
+# Lua directories; busted and its modules are there.
+texlua_env() {   # texlua_env ABI: LUA_PATH/LUA_CPATH for Debian's modules
+  LUA_PATH="/usr/share/lua/$1/?.lua;/usr/share/lua/$1/?/init.lua;;"
+  LUA_CPATH="/usr/lib/$(gcc -print-multiarch 2>/dev/null || echo x86_64-linux-gnu)/lua/$1/?.so;;"
+  export LUA_PATH LUA_CPATH
+}
+
+example() {   # example LUA BIN: the LuaTeX example under texlua/texluajit
+  echo "== examples/mplib_path.lua under $2 (build/$1)"
+  "$2" examples/mplib_path.lua "build/$1" 2>&1 | tee "$OUT"
+  count "examples/mplib_path.lua under $2"
+}
+
 smoke() {   # smoke LUA BIN: load the module and check a few values
   echo "== smoke test under $2 (build/$1)"
   "$2" spec/smoke.lua "build/$1" 2>&1 | tee "$OUT"
@@ -39,11 +56,19 @@ smoke() {   # smoke LUA BIN: load the module and check a few values
 for v in 5.1 5.2 5.3 jit; do
   case $v in jit) bin=luajit ;; *) bin=lua$v ;; esac
   command -v "$bin" >/dev/null || continue
-  if [ -n "$FULL" ]; then suite "$v" "$bin"; else smoke "$v" "$bin"; fi
+  if [ -z "$SMOKE" ]; then suite "$v" "$bin"; else smoke "$v" "$bin"; fi
 done
-if command -v texlua >/dev/null && [ -f build/5.3/arclen.so ]; then
-  smoke 5.3 texlua
-fi
+for t in texlua:5.3:5.3 texluajit:jit:5.1; do   # binary:build:module ABI
+  bin=${t%%:*}; rest=${t#*:}; v=${rest%%:*}; abi=${rest#*:}
+  command -v "$bin" >/dev/null && [ -f "build/$v/arclen.so" ] || continue
+  ( texlua_env "$abi"
+    if [ -z "$SMOKE" ] && [ -f "/usr/share/lua/$abi/busted/runner.lua" ]; then
+      suite "$v" "$bin"; else smoke "$v" "$bin"; fi
+    echo "$PASSED $FAILED" >"$OUT.totals" )
+  read PASSED FAILED <"$OUT.totals"
+  example "$v" "$bin"
+done
+rm -f "$OUT.totals"
 suite 5.4 lua5.4
 # The rockspec builds and installs offline, and the installed module passes.
 if command -v luarocks >/dev/null; then
