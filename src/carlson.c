@@ -237,12 +237,23 @@ double arclen_rj(double x, double y, double z, double p) {
 ** 2 R_G = z R_F - (x - z)(y - z) R_D / 3 + sqrt(x y / z). */
 double arclen_rg(double x, double y, double z) {
   double t;
+  int e, k;
   if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z)) return NAN;
   if (x > y) { t = x; x = y; y = t; }
   if (y > z) { t = y; y = z; z = t; }
   if (x > y) { t = x; x = y; y = t; }
   /* now x <= y <= z; put the middle one last */
   if (y == 0) return sqrt(z) / 2;        /* R_G(0, 0, z) = sqrt(z)/2 */
-  return (y * arclen_rf(x, z, y) + (y - x) * (z - y) * arclen_rd(x, z, y) / 3
-          + sqrt(x * z / y)) / 2;
+  /* R_G(4^-k x, 4^-k y, 4^-k z) = 2^-k R_G (homogeneity, exact in binary):
+  ** bring z into [1/4, 4) so that subnormal arguments do not give 0 * inf
+  ** in the R_D term, nor huge ones an overflowing x z (fuzz/fuzz_carlson). */
+  frexp(z, &e);
+  k = e / 2;
+  x = ldexp(x, -2 * k);
+  y = ldexp(y, -2 * k);
+  z = ldexp(z, -2 * k);
+  if (y == 0) return ldexp(sqrt(z) / 2, k);
+  return ldexp((y * arclen_rf(x, z, y) +
+                (y - x) * (z - y) * arclen_rd(x, z, y) / 3 +
+                sqrt(x * z / y)) / 2, k);
 }
