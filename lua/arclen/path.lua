@@ -249,7 +249,8 @@ local function mp_total(self)
     local len, err = arclen.metapost.path_arclength(self.segs, self.cyclic)
     self.mp_len, self.mp_err = len or false, err
   end
-  return self.mp_len or nil, self.mp_err
+  if self.mp_len then return self.mp_len end
+  return nil, self.mp_err
 end
 
 local function total_length(self)
