@@ -23,7 +23,7 @@ local format = string.format
 local Path = {}
 Path.__index = Path
 
-local MAX_POINTS = 10000000   -- resample and dash produce at most this many
+local MAX_POINTS = 1000000    -- resample and dash produce at most this many
 
 -- ---- errors in the style of luaL_argerror ---------------------------------
 
@@ -598,6 +598,7 @@ function Path:dash(pattern, offset)
     end
     -- where the pattern stands at the subpath's start: entry i, phase into it
     local phase = offset - floor(offset / P) * P
+    if not (phase >= 0 and phase < P) then phase = 0 end   -- |offset| >> P: rounding
     local i = 1
     while i < #pat and (phase > pat[i] or (phase == pat[i] and pat[i] > 0)) do
       phase = phase - pat[i]
