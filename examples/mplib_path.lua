@@ -2,6 +2,8 @@
 --
 --   texlua examples/mplib_path.lua [BUILD_DIR]        (default build/5.3)
 --   texluajit examples/mplib_path.lua build/jit
+--   luatex --shell-escape examples/mplib_path.tex     (the same inside a
+--                                                      document: a PDF)
 --
 -- LuaTeX's Lua has mplib built in.  This script runs MetaPost in double
 -- mode (no format file needed: the few plain macros used are defined
@@ -9,11 +11,26 @@
 -- exactly what a LuaTeX document gets in its mplib callbacks -- and asks
 -- arclen for their lengths, MetaPost's own path times, evenly spaced points
 -- and dashes.  It checks itself and ends with "N passed, N failed".
-local build = arg and arg[1] or "build/5.3"
+-- inside a document (examples/mplib_path.tex), ARCLEN_BUILD names the build
+local build = ARCLEN_BUILD or (arg and arg[1]) or "build/5.3"
 package.cpath = build .. "/?.so;" .. package.cpath
 package.path = "lua/?.lua;lua/?/init.lua;" .. package.path
 assert(mplib, "run this with texlua or texluajit (LuaTeX's Lua has mplib)")
 
+-- In a document LuaTeX searches Lua modules with kpathsea only: add a
+-- searcher over package.path for arclen's Lua parts (arclen.path, ...).
+if ARCLEN_BUILD then
+  local searchers = package.searchers or package.loaders
+  table.insert(searchers, 2, function(name)
+    local file, err = package.searchpath(name, package.path)
+    if not file then return err end
+    return assert(loadfile(file)), file
+  end)
+end
+-- LuaTeX searches with kpathsea before package.cpath, and could find another
+-- arclen.so first: load the one of this build by its file name.
+local open = package.loadlib(build .. "/arclen.so", "luaopen_arclen")
+if open then package.loaded.arclen = open("arclen") end
 local arclen = require("arclen")
 
 -- MetaPost without plain.mp: ini mode, double arithmetic.
@@ -82,6 +99,18 @@ check("dashes cover 5/8 of the circle",
 -- 5. The dashes as SVG path data (a LuaTeX document would hand them back to
 -- MetaPost or to the PDF writer).
 print("first dash as SVG path data: " .. dashes[1]:svg():sub(1, 72) .. " ...")
+
+-- 6. Inside a LuaTeX document: typeset what was measured.
+if ARCLEN_BUILD and tex and tex.print then
+  tex.print(("The wave has %d segments and is %.6f long (MetaPost says %.6f)."):format(
+    p:segments(), p:length(), mpL))
+  tex.print("\\par Eleven points evenly spaced along it:\\par")
+  for _, q in ipairs(pts) do
+    tex.print(("$s = %.3f$: $(%.3f, %.3f)$\\par"):format(q.s, q.x, q.y))
+  end
+  tex.print(("The circle is %.6f long; dashed 5 on, 3 off it has %d dashes.\\par"):format(
+    circle:length(), #dashes))
+end
 
 print(("%d passed, %d failed"):format(passed, failed))
 if failed > 0 then os.exit(1) end

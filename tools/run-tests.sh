@@ -3,7 +3,8 @@
 # Lua found on the machine -- 5.1, 5.2, 5.3, LuaJIT, LuaTeX's texlua (with
 # the 5.3 build) and texluajit (with the LuaJIT build), then 5.4 -- each
 # against the fresh build in build/<version> (never an installed arclen);
-# the LuaTeX example (examples/mplib_path.lua) under texlua and texluajit;
+# the LuaTeX example (examples/mplib_path.lua) under texlua and texluajit
+# and inside a document (luatex --shell-escape examples/mplib_path.tex);
 # the suite on the luarocks-installed module.  The last line adds them up
 # as "N passed, N failed".
 #   SMOKE=1 tools/run-tests.sh   only a smoke run (spec/smoke.lua) under
@@ -69,6 +70,21 @@ for t in texlua:5.3:5.3 texluajit:jit:5.1; do   # binary:build:module ABI
   example "$v" "$bin"
 done
 rm -f "$OUT.totals"
+# The same example inside a LuaTeX document (the PDF goes to build/).
+if command -v luatex >/dev/null && [ -f build/5.3/arclen.so ]; then
+  echo "== luatex --shell-escape examples/mplib_path.tex (build/5.3)"
+  rm -f build/mplib_path.pdf
+  luatex --shell-escape --interaction=nonstopmode --halt-on-error \
+    --output-directory=build examples/mplib_path.tex >"$OUT.tex" 2>&1
+  status=$?
+  tee "$OUT" <"$OUT.tex"
+  rm -f "$OUT.tex"
+  if [ $status -ne 0 ] || [ ! -s build/mplib_path.pdf ]; then
+    echo "run-tests: luatex failed or wrote no PDF: counted as 1 failure"
+    FAILED=$((FAILED + 1))
+  fi
+  count "examples/mplib_path.tex under luatex"
+fi
 suite 5.4 lua5.4
 # The rockspec builds and installs offline, and the installed module passes.
 if command -v luarocks >/dev/null; then
