@@ -16,11 +16,20 @@
 ** comes from the product of the roots instead.  Returns the count. */
 int arclen_quadratic(double a2, double a1, double a0, double re[2],
                      double im[2]) {
-  double d, q;
+  double d, q, m = fmax(fabs(a1), sqrt(fabs(a2)) * sqrt(fabs(a0)));
   if (a2 == 0) {
     if (a1 == 0) return 0;
     re[0] = -a0 / a1; im[0] = 0;
     return 1;
+  }
+  /* The roots do not change when every coefficient is scaled by a power of
+  ** two (exact): with m ~ 1, a1^2 and a2 a0 neither underflow (subnormal
+  ** coefficients gave a root 0.25 for +-2.9e-143i) nor overflow (found by
+  ** fuzz/fuzz_roots); a2 and a0 stay finite since |a2 a0| <= m^2. */
+  if (m < 0x1p-450 || m > 0x1p450) {
+    int e;
+    frexp(m, &e);
+    a2 = ldexp(a2, -e); a1 = ldexp(a1, -e); a0 = ldexp(a0, -e);
   }
   /* the discriminant with one rounding error: fma keeps a1^2's low bits */
   {
