@@ -197,3 +197,70 @@ describe("svg path data: errors give the position in the string", function()
     assert.matches("#2.*unknown method 'nope'", H.error_of(path.svg, "M0 0", {method = "nope"}))
   end)
 end)
+
+describe("svg path data: random input never crashes, hangs or gives NaN", function()
+  -- MINSTD (Park & Miller): products stay below 2^53, so every Lua, with
+  -- integers or doubles, makes the same strings.
+  local state = 12345
+  local function rand(n)
+    state = (state * 48271) % 2147483647
+    return state % n + 1
+  end
+  local ALPHABET = {"M", "m", "L", "l", "H", "h", "V", "v", "C", "c", "S", "s", "Q", "q",
+    "T", "t", "A", "a", "Z", "z", "0", "1", "2", "5", "9", ".", "-", "+", "e", "E", " ",
+    ",", "\n", "x", "10", "3.5", "-.5", "1e3", "0 0", " 1 1 "}
+  local NARGS = {M = 2, L = 2, H = 1, V = 1, C = 6, S = 4, Q = 4, T = 2, A = 7, Z = 0}
+  local CMDS = {"M", "L", "H", "V", "C", "S", "Q", "T", "A", "Z"}
+  local NUMS = {"0", "1", "-2", "3.5", ".5", "-.25", "1e1", "2E-1", "10", "-7", "0.0"}
+  local SEPS = {" ", ",", " , ", "\n", ""}
+  -- Path data of random commands with the right number of arguments, one
+  -- time in three with one byte changed or dropped.
+  local function structured()
+    local parts = {"M" .. NUMS[rand(#NUMS)] .. " " .. NUMS[rand(#NUMS)]}
+    for _ = 1, rand(6) do
+      local c = CMDS[rand(#CMDS)]
+      if rand(2) == 1 then c = c:lower() end
+      parts[#parts + 1] = c
+      for k = 1, NARGS[c:upper()] do
+        local v = NUMS[rand(#NUMS)]
+        if c:upper() == "A" and (k == 4 or k == 5) then v = tostring(rand(2) - 1) end
+        if k == 1 and c:upper() == "A" then v = tostring(rand(9)) end
+        parts[#parts + 1] = (k > 1 and SEPS[rand(#SEPS)] or " ") .. v
+      end
+      parts[#parts + 1] = " "
+    end
+    local d = table.concat(parts)
+    if rand(3) == 1 then
+      local i = rand(#d)
+      d = d:sub(1, i - 1) .. (rand(2) == 1 and ALPHABET[rand(#ALPHABET)] or "") .. d:sub(i + 1)
+    end
+    return d
+  end
+  it("4000 random strings: a path with a finite length or a positioned error", function()
+    local ok_count, err_count = 0, 0
+    for n = 1, 4000 do
+      local d
+      if n % 2 == 0 then
+        d = structured()
+      else
+        local parts = {rand(3) == 1 and "" or "M0 0"}
+        for _ = 1, rand(24) do parts[#parts + 1] = ALPHABET[rand(#ALPHABET)] end
+        d = table.concat(parts)
+      end
+      local ok, res = pcall(path.svg, d)
+      if ok then
+        ok_count = ok_count + 1
+        local L = res:length()
+        assert.is_true(L >= 0 and L < math.huge, d)
+        local x, y = res:point(L / 3)
+        assert.is_true(x == x and y == y, d)
+      else
+        err_count = err_count + 1
+        local pos = tonumber(tostring(res):match("^bad argument #1 to 'arclen%.path%.svg' %(.* at position (%d+)%)$"))
+        assert.is_not_nil(pos, ("%q: %s"):format(d, tostring(res)))
+        assert.is_true(pos >= 1 and pos <= #d + 1, d)
+      end
+    end
+    assert.is_true(ok_count > 500 and err_count > 500, ok_count .. " parsed, " .. err_count .. " errors")
+  end)
+end)
