@@ -217,3 +217,48 @@ describe("arclen CLI: errors (stderr, exit 2 for usage, 1 for failures)", functi
     assert.matches("no <path d=...> elements", err)
   end)
 end)
+
+describe("arclen CLI: the README's commands", function()
+  -- The ```sh block of README.md's "Command line" section: every `arclen`
+  -- line runs (exit 0, some output); where the comment is numbers, the
+  -- output's first line is those numbers.
+  local f = assert(io.open("README.md"))
+  local text = f:read("*a")
+  f:close()
+  local section = text:match("\n## Command line\n(.-)\n## ") or ""
+  local block = section:match("```sh\n(.-)```") or ""
+  local lines = {}
+  for line in block:gmatch("[^\n]+") do
+    if line:match("^arclen") then lines[#lines + 1] = line end
+  end
+  it("has them", function() assert.is_true(#lines >= 10) end)
+  for _, line in ipairs(lines) do
+    it(line, function()
+      local cmd, comment = line:match("^arclen%s+(.-)%s*#%s*(.-)%s*$")
+      cmd = cmd or line:match("^arclen%s+(.-)%s*$")
+      local args = {}
+      local rest = cmd
+      while rest ~= "" do                         -- words and '...' quotes
+        local q, r = rest:match("^'([^']*)'%s*(.*)$")
+        if not q then q, r = rest:match("^(%S+)%s*(.*)$") end
+        args[#args + 1] = q
+        rest = r
+      end
+      local out, err, status = run(args)
+      assert.are.equal(0, status, err)
+      assert.is_true(#out > 0)
+      local want = {}
+      for w in (comment or ""):gmatch("%S+") do want[#want + 1] = tonumber(w) or false end
+      local numeric = #want > 0
+      for _, w in ipairs(want) do if not w then numeric = false end end
+      if numeric then
+        local got = {}
+        for w in out:match("[^\n]*"):gmatch("%S+") do got[#got + 1] = tonumber(w) end
+        assert.are.same(want, got)
+      elseif comment and comment:match("%d+%.%d+}$") then  -- a JSON total
+        assert.are.equal(tonumber(comment:match("([%d%.]+)}$")),
+                         tonumber(out:match('"total": ([%d%.e%-+]+)')))
+      end
+    end)
+  end
+end)
