@@ -84,6 +84,7 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
                           double phi_deg, int large, int sweep, double x2,
                           double y2, double c[7]) {
   double phi, cp, sp, dx, dy, x1p, y1p, lam, coef, cxp, cyp, ux, uy, vx, vy;
+  double u, v, h;
   double t1, dt;
   if (!isfinite(x1) || !isfinite(y1) || !isfinite(x2) || !isfinite(y2) ||
       !isfinite(rx) || !isfinite(ry) || !isfinite(phi_deg))
@@ -96,19 +97,25 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
   dx = (x1 - x2) / 2; dy = (y1 - y2) / 2;
   x1p = cp * dx + sp * dy;                                   /* F.6.5.1 */
   y1p = -sp * dx + cp * dy;
-  /* F.6.6.2: Lambda = x1'^2/rx^2 + y1'^2/ry^2 (as ratios: no overflow) */
-  lam = (x1p / rx) * (x1p / rx) + (y1p / ry) * (y1p / ry);
+  /* F.6.6.2: Lambda = x1'^2/rx^2 + y1'^2/ry^2 = h^2 (as ratios and by
+  ** hypot: endpoints a few subnormals apart would underflow the squares to
+  ** 0 and make the centre 0 * inf = NaN; found by fuzz/fuzz_conic) */
+  u = x1p / rx; v = y1p / ry;
+  h = hypot(u, v);
+  if (h == 0) return ARCLEN_SVGARC_LINE;     /* endpoints 1 subnormal apart */
+  lam = h * h;
   if (lam > 1) {                                             /* F.6.6.3 */
-    double s = sqrt(lam);
-    rx *= s; ry *= s;
+    rx *= h; ry *= h;
     coef = 0;
   } else {
-    /* F.6.5.2's radicand, divided through by rx^2 ry^2: (1 - Lambda)/Lambda */
-    coef = sqrt((1 - lam) / lam);
+    /* F.6.5.2's radicand, divided through by rx^2 ry^2: (1 - Lambda)/Lambda;
+    ** its root times (rx y1'/ry, -ry x1'/rx) is sqrt(1 - Lambda) (rx v/h,
+    ** -ry u/h) */
+    coef = sqrt(1 - lam);
     if (large == sweep) coef = -coef;
   }
-  cxp = coef * (rx * y1p / ry);
-  cyp = coef * -(ry * x1p / rx);
+  cxp = coef * (rx * (v / h));
+  cyp = coef * -(ry * (u / h));
   c[0] = cp * cxp - sp * cyp + (x1 + x2) / 2;                /* F.6.5.3 */
   c[1] = sp * cxp + cp * cyp + (y1 + y2) / 2;
   ux = (x1p - cxp) / rx; uy = (y1p - cyp) / ry;              /* F.6.5.5-6 */
