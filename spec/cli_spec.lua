@@ -44,6 +44,8 @@ local SVG = [[<?xml version="1.0"?>
       d = 'M0 0 h 1&#10;v1' /></g>
   <rect width="5" height="5"/>
   <path id="curve" d="M0 0 C10 0 10 10 0 0"></path>
+  <pathology d="M0 0 L100 0"/>
+  <svg:path id="ns" d="M0 0 L0 1"/>
 </svg>
 ]]
 
@@ -72,12 +74,13 @@ describe("arclen CLI: results", function()
     assert.are.equal(0, status, err)
     local lines = {}
     for l in out:gmatch("[^\n]+") do lines[#lines + 1] = l end
-    assert.are.equal(4, #lines)
+    assert.are.equal(5, #lines)
     assert.are.equal("side\t5", lines[1])
     assert.are.equal("path2\t2", lines[2])     -- &#10; is a newline (a separator)
     local L = arclen.length({0, 0, 10, 0, 10, 10, 0, 0})
     assert.are.equal("curve\t" .. ("%.17g"):format(L), lines[3])
-    assert.are.equal(7 + L, tonumber(lines[4]:match("^total\t(.*)$")))
+    assert.are.equal("ns\t1", lines[4])        -- <svg:path>, not <pathology>
+    assert.are.equal(8 + L, tonumber(lines[5]:match("^total\t(.*)$")))
   end)
 
   it("--json for a file, a path and a cubic", function()
@@ -203,7 +206,7 @@ describe("arclen CLI: errors (stderr, exit 2 for usage, 1 for failures)", functi
     os.remove(name)
     assert.are.equal(2, status)
     assert.are.equal("", out)
-    assert.matches("time needs one path; the file has 3", err)
+    assert.matches("time needs one path; the file has 4", err)
   end)
 
   it("a file without paths is a failure", function()

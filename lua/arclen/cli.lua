@@ -147,13 +147,15 @@ local function unescape(s)
   return (s:gsub("&(%a+);", function(n) return ENTITIES[n] end))
 end
 
--- Every <path ... d="..."> of an SVG document: {d =, id =} in order.
+-- Every <path ... d="..."> (or <svg:path ...>) of an SVG document:
+-- {d =, id =} in order.
 -- A simple scan: comments are dropped, attributes are name="value" or
 -- name='value'; elements other than path are ignored.
 function cli.svg_paths(text)
   text = text:gsub("<!%-%-.-%-%->", "")
   local out = {}
-  for attrs in text:gmatch("<path([%s/][^>]*)>") do
+  for tag, attrs in text:gmatch("<([%w_:%-]+)([%s/][^>]*)>") do
+    if tag ~= "path" and not tag:match(":path$") then attrs = "" end   -- svg:path too
     local a = {}
     for name, _, value in attrs:gmatch("([%w:_%-]+)%s*=%s*([\"'])(.-)%2") do
       a[name] = unescape(value)
