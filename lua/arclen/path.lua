@@ -294,7 +294,7 @@ local function locate(self, s, at_end)
   local lo, hi = 1, n            -- smallest k with cum[k] > s (>= s at_end)
   while lo < hi do
     local mid = floor((lo + hi) / 2)
-    if cum[mid] > s or (at_end and cum[mid] >= s and cum[mid] > cum[mid - 1]) then
+    if cum[mid] > s or (at_end and cum[mid] >= s) then
       hi = mid
     else
       lo = mid + 1
