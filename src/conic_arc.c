@@ -79,7 +79,8 @@ static double vec_angle(double ux, double uy, double vx, double vy) {
 ** are the flags.  Returns ARCLEN_SVGARC_NONE (endpoints equal: the arc is
 ** omitted, F.6.2), ARCLEN_SVGARC_LINE (rx or ry is 0: a straight segment)
 ** or ARCLEN_SVGARC_ARC with c = cx cy rx ry phi(radians) theta1 dtheta;
-** or a negative error code (non-finite input). */
+** or a negative error code (non-finite input; ARCLEN_EOVERFLOW when the
+** radii scaled up by F.6.6.3 exceed DBL_MAX). */
 int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
                           double phi_deg, int large, int sweep, double x2,
                           double y2, double c[7]) {
@@ -106,6 +107,8 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
   lam = h * h;
   if (lam > 1) {                                             /* F.6.6.3 */
     rx *= h; ry *= h;
+    /* a radius ~1e-320 scaled up to reach the endpoints: beyond DBL_MAX */
+    if (!isfinite(rx) || !isfinite(ry)) return ARCLEN_EOVERFLOW;
     coef = 0;
   } else {
     /* F.6.5.2's radicand, divided through by rx^2 ry^2: (1 - Lambda)/Lambda;
