@@ -15,6 +15,7 @@ build = {
     arclen = {
       sources = {
         "src/baseline.c",
+        "src/batch.c",
         "src/branch.c",
         "src/carlson.c",
         "src/conic.c",
@@ -31,6 +32,7 @@ build = {
         "src/lenfit_error.c",
         "src/lenfit_eval.c",
         "src/lua_arclen.c",
+        "src/lua_batch.c",
         "src/lua_conic.c",
         "src/lua_elliptic.c",
         "src/lua_fit.c",

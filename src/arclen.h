@@ -116,6 +116,14 @@ double arclen_rc(double x, double y);
 double arclen_rj(double x, double y, double z, double p);
 double arclen_rg(double x, double y, double z);
 
+/* ---- batch.c: many curves at once ---------------------------------- */
+/* out[i] = the length of cubic i of n, whose 4 dim numbers start at
+** c + 4 dim i, by method m with options o.  Stops at the first failure:
+** returns its code, sets *failed (may be NULL; -1 on success) to its index
+** and out[i..n-1] to NaN.  EDIM for dim other than 2 and 3. */
+int arclen_lengths(const double *c, long n, int dim, const arclen_method *m,
+                   const arclen_opts *o, double *out, long *failed);
+
 /* ---- roots.c: real-coefficient polynomial roots --------------------- */
 /* All roots of a real quadratic, cubic, quartic (highest coefficient
 ** first); complex roots come as conjugate pairs (re, +-im).  Returns the

@@ -343,6 +343,7 @@ int luaopen_arclen(lua_State *L) {
   arclen_open_elliptic(L);
   arclen_open_fit(L);
   arclen_open_path(L);
+  arclen_open_batch(L);
   /* new areas: one line each, above this line */
   return 1;
 }

@@ -41,6 +41,7 @@ void arclen_open_henkel(lua_State *L);
 void arclen_open_elliptic(lua_State *L);
 void arclen_open_fit(lua_State *L);
 void arclen_open_path(lua_State *L);
+void arclen_open_batch(lua_State *L);
 /* new areas: one line each, above this line */
 
 #endif

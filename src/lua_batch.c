@@ -1,0 +1,96 @@
+/*
+** lua_batch.c -- arclen.lengths(coords [, opts]) and arclen.lengths3: the
+** length of every cubic in a flat array of numbers (8 per curve in 2D, 12
+** in 3D) in one call, returned as an array.  The curves are read in
+** chunks into a C buffer and measured by arclen_lengths (batch.c), so a
+** large set pays neither a Lua call nor a table per curve.
+** opts as arclen.length's (tol, method, t0, t1, steps); info does not
+** apply.  Errors name the argument and the coordinate's index.
+*/
+#include <math.h>
+
+#include "lua_arclen.h"
+
+#define CHUNK 256      /* curves per buffer: 24 KB of stack in 3D */
+
+static int lengths(lua_State *L, int dim, const char *fname) {
+  double buf[CHUNK * 12], out[CHUNK];
+  arclenL_opts lo;
+  size_t len;
+  long n, done, i, failed;
+  int stride = 4 * dim;
+  if (lua_type(L, 1) != LUA_TTABLE)
+    return luaL_argerror(L, 1, lua_pushfstring(L,
+        "table of coordinates expected (%d numbers per curve), got %s",
+        stride, luaL_typename(L, 1)));
+  arclenL_checkopts(L, 2, &lo);
+  if (lo.info)
+    return luaL_argerror(L, 2, lua_pushfstring(L,
+        "info does not apply to %s", fname));
+  len = lua_rawlen(L, 1);
+  if (len % (size_t)stride != 0)
+    return luaL_argerror(L, 1, lua_pushfstring(L,
+        "number of coordinates must be a multiple of %d, got %d", stride,
+        (int)len));
+  if (len > 0x7fffffff)
+    return luaL_argerror(L, 1, "too many coordinates");
+  n = (long)(len / (size_t)stride);
+  lua_createtable(L, (int)n, 0);
+  for (done = 0; done < n; done += CHUNK) {
+    long m = n - done < CHUNK ? n - done : CHUNK;
+    int rc;
+    for (i = 0; i < m * stride; i++) {
+      int k = (int)(done * stride + i + 1);
+      double v;
+      lua_rawgeti(L, 1, k);
+      if (lua_type(L, -1) != LUA_TNUMBER)
+        return luaL_argerror(L, 1, lua_pushfstring(L,
+            "coordinate %d must be a number, got %s", k,
+            luaL_typename(L, -1)));
+      v = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+      if (!isfinite(v))
+        return luaL_argerror(L, 1, lua_pushfstring(L,
+            "coordinate %d must be finite", k));
+      buf[i] = v;
+    }
+    rc = arclen_lengths(buf, m, dim, lo.method, &lo.o, out, &failed);
+    if (rc == ARCLEN_EDIM)
+      return luaL_argerror(L, 2, lua_pushfstring(L,
+          "method '%s' does not support this dimension", lo.method->name));
+    if (rc == ARCLEN_EOVERFLOW) {      /* MetaPost's own failure */
+      lua_pushnil(L);
+      lua_pushfstring(L, "curve %d: %s", (int)(done + failed + 1),
+                      arclen_strerror(rc));
+      return 2;
+    }
+    if (rc != ARCLEN_OK)
+      return luaL_argerror(L, 1, lua_pushfstring(L, "curve %d: %s",
+          (int)(done + failed + 1), arclen_strerror(rc)));
+    for (i = 0; i < m; i++) {
+      lua_pushnumber(L, out[i]);
+      lua_rawseti(L, -2, (int)(done + i + 1));
+    }
+  }
+  return 1;
+}
+
+/* arclen.lengths(coords [, opts]) -> {L1, L2, ...}: 2D, 8 numbers each */
+static int l_lengths(lua_State *L) {
+  return lengths(L, 2, "lengths");
+}
+
+/* arclen.lengths3(coords [, opts]) -> {L1, L2, ...}: 3D, 12 numbers each */
+static int l_lengths3(lua_State *L) {
+  return lengths(L, 3, "lengths3");
+}
+
+static const luaL_Reg batch_funcs[] = {
+  {"lengths", l_lengths},
+  {"lengths3", l_lengths3},
+  {NULL, NULL}
+};
+
+void arclen_open_batch(lua_State *L) {
+  luaL_setfuncs(L, batch_funcs, 0);
+}
