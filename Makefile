@@ -101,3 +101,28 @@ fit-plots: $(MODULE)
 .PHONY: accuracy
 accuracy: $(MODULE)
 	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua;spec/?.lua' $(LUA_BIN) bench/accuracy.lua
+
+# ---- reliability and peers (issue 8) ----------------------------------
+#   make fuzz [FUZZ_SECONDS=15]   every libFuzzer harness in fuzz/ (clang)
+#   make sanitize                 the spec suite on an ASan+UBSan build
+#   make valgrind                 the spec suite under valgrind memcheck
+#   make bench-peers              arclen vs GSL, kurbo, bezier-js, paper.js,
+#                                 MetaPost on the same curves, one run
+#   make bench-scale              10^6 curves through the Lua API
+FUZZ_SECONDS ?= 15
+.PHONY: fuzz sanitize valgrind bench-peers bench-scale
+
+fuzz:
+	FUZZ_SECONDS=$(FUZZ_SECONDS) sh tools/fuzz.sh
+
+sanitize:
+	sh tools/check-sanitizers.sh
+
+valgrind:
+	sh tools/check-valgrind.sh
+
+bench-peers: $(BUILD)/libarclen.a
+	sh bench/peers/run.sh
+
+bench-scale: $(MODULE)
+	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_scale.lua
