@@ -90,7 +90,8 @@ local function tick_label(v, step, islog)
   if step / 10 ^ -decimals ~= floor(step / 10 ^ -decimals) then
     decimals = decimals + 1   -- steps of 2.5
   end
-  return fmt("%." .. decimals .. "f", v)
+  -- ("%d"): LuaJIT's math.max can return -0, which prints as "-0"
+  return fmt("%." .. ("%d"):format(decimals) .. "f", v)
 end
 
 -- Widen [lo, hi] to tick marks (linear) or decades (log); fix empty ranges.
