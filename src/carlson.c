@@ -55,6 +55,34 @@ static int scale_exp(const double *v, int n) {
 
 static int ok_arg(double v) { return v >= 0 && v < HUGE_VAL; }
 
+/* max / (smallest nonzero) of n arguments, as a binary exponent. */
+static int spread_exp(const double *v, int n) {
+  double mx = 0, mn = HUGE_VAL;
+  int i;
+  for (i = 0; i < n; i++) {
+    mx = fmax(mx, v[i]);
+    if (v[i] > 0) mn = fmin(mn, v[i]);
+  }
+  return mx == 0 ? 0 : ilogb(mx) - ilogb(mn);
+}
+
+/* Arguments spread wider than 2^1000 cannot be scaled into range without
+** the tiniest underflowing (R_F(2^700, 2^-1074, 2^-1074) then ran into the
+** iteration cap: 1e27 times too large, found by fuzz/fuzz_carlson).  The
+** duplication step v <- (v + lambda)/4 (C95 (2.3)) leaves R_F and R_C
+** unchanged and brings the tiniest up to ~sqrt(max min): at most 3 steps
+** bring any finite arguments within 2^1000.  Written v/4 + lambda/4 so
+** that nothing overflows near DBL_MAX. */
+static void compress_rf(double v[3]) {
+  int i, m;
+  for (m = 0; m < 4 && spread_exp(v, 3) > 1000; m++) {
+    double s[3], lam4;
+    for (i = 0; i < 3; i++) s[i] = sqrt(v[i]);
+    lam4 = s[0] * s[1] / 4 + s[0] * s[2] / 4 + s[1] * s[2] / 4;
+    for (i = 0; i < 3; i++) v[i] = v[i] / 4 + lam4;
+  }
+}
+
 /* C95 Algorithm 1 (R_F), arguments >= 0 with at most one zero. */
 static double rf_dup(double x, double y, double z) {
   double a0 = (x + y + z) / 3, a = a0, x0 = x, y0 = y;
@@ -81,7 +109,12 @@ static double rf_dup(double x, double y, double z) {
 double arclen_rf(double x, double y, double z) {
   int k, zeros = (x == 0) + (y == 0) + (z == 0);
   if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || zeros > 1) return NAN;
-  { double v[3] = {x, y, z}; k = scale_exp(v, 3); }
+  {
+    double v[3] = {x, y, z};
+    compress_rf(v);
+    x = v[0]; y = v[1]; z = v[2];
+    k = scale_exp(v, 3);
+  }
   if (k == 0) return rf_dup(x, y, z);
   x = ldexp(x, 2 * k); y = ldexp(y, 2 * k); z = ldexp(z, 2 * k);
   return ldexp(rf_dup(x, y, z), k);        /* R_F(4^k v) = 2^-k R_F(v) */
@@ -148,8 +181,11 @@ static double rc_dup(double x, double y) {
 }
 
 static double rc_pos(double x, double y) {
-  double v[2] = {x, y};
-  int k = scale_exp(v, 2);
+  double v[3] = {x, y, y};   /* R_C(x, y) = R_F(x, y, y) */
+  int k;
+  compress_rf(v);
+  x = v[0]; y = v[1];
+  k = scale_exp(v, 2);
   if (k == 0) return rc_dup(x, y);
   return ldexp(rc_dup(ldexp(x, 2 * k), ldexp(y, 2 * k)), k);
 }
@@ -243,7 +279,10 @@ double arclen_rg(double x, double y, double z) {
   if (y > z) { t = y; y = z; z = t; }
   if (x > y) { t = x; x = y; y = t; }
   /* now x <= y <= z; put the middle one last */
-  if (y == 0) return sqrt(z) / 2;        /* R_G(0, 0, z) = sqrt(z)/2 */
+  /* R_G(0, 0, z) = sqrt(z)/2, and R_G(x, y, z) = sqrt(z)/2 (1 + O(y/z
+  ** log(z/y))) for x <= y << z: below y/z = 2^-120 the correction is under
+  ** 1e-33, while R_D(x, z, y) ~ 1/(y sqrt z) would overflow (fuzz_carlson) */
+  if (y <= ldexp(z, -120)) return sqrt(z) / 2;
   /* R_G(4^-k x, 4^-k y, 4^-k z) = 2^-k R_G (homogeneity, exact in binary):
   ** bring z into [1/4, 4) so that subnormal arguments do not give 0 * inf
   ** in the R_D term, nor huge ones an overflowing x z (fuzz/fuzz_carlson). */
@@ -252,7 +291,6 @@ double arclen_rg(double x, double y, double z) {
   x = ldexp(x, -2 * k);
   y = ldexp(y, -2 * k);
   z = ldexp(z, -2 * k);
-  if (y == 0) return ldexp(sqrt(z) / 2, k);
   return ldexp((y * arclen_rf(x, z, y) +
                 (y - x) * (z - y) * arclen_rd(x, z, y) / 3 +
                 sqrt(x * z / y)) / 2, k);
