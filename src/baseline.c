@@ -40,6 +40,7 @@ static void add(ksum *g, double x) {
 static double legs_scaled(const double *c, int dim, double d[9]) {
   double pre = 1.0, big = 0.0;
   int i, k, e;
+  for (k = 0; k < 9; k++) d[k] = 0.0;     /* 2D leaves the z slots unset */
   for (i = 0; i < 4 * dim; i++)
     if (fabs(c[i]) > DBL_MAX / 4) pre = 0.25;
   for (k = 0; k < 3; k++)
