@@ -149,7 +149,12 @@ static double push_cubics(lua_State *L, const double *c, int n, int scheme,
   for (k = 0; k < n; k++) {
     double b;
     int j;
-    arclen_conic_cubics(c + 7 * k, c[7 * k + 6], scheme, level, buf, &b);
+    /* a conic that rounding made degenerate (an arc of radius 2 at x = 9e15)
+    ** leaves buf unwritten: an error, not garbage (spec/hostile_spec.lua) */
+    if (arclen_conic_cubics(c + 7 * k, c[7 * k + 6], scheme, level, buf,
+                            &b) != ARCLEN_OK)
+      luaL_argerror(L, 1, "the arc is degenerate in double precision "
+                          "(its control points coincide or are collinear)");
     if (b > bound || isnan(b)) bound = b;
     for (i = 0; i < per; i++) {
       lua_createtable(L, 8, 0);
