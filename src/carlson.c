@@ -48,7 +48,9 @@ static int scale_exp(const double *v, int n) {
     mx = fmax(mx, v[i]);
     if (v[i] > 0) mn = fmin(mn, v[i]);
   }
-  if (mx == 0 || (mx <= BIG && mn >= SMALL)) return 0;
+  /* an infinite argument (r of R_J's principal value overflows) would make
+  ** ilogb INT_MAX and the sum below overflow (UBSan, fuzz_carlson) */
+  if (mx == 0 || !(mx < HUGE_VAL) || (mx <= BIG && mn >= SMALL)) return 0;
   if (ilogb(mx) - ilogb(mn) > 1000) return (500 - ilogb(mx)) / 2;
   return -(ilogb(mx) + ilogb(mn)) / 4;
 }
