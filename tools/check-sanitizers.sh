@@ -21,7 +21,7 @@ fi
 ASAN_LIB=$($CC -print-file-name=libasan.so)
 UBSAN_LIB=$($CC -print-file-name=libubsan.so)
 # halt_on_error: a report ends the process, so it cannot go unnoticed.
-ASAN_OPTIONS=detect_leaks=0:halt_on_error=1:abort_on_error=0:detect_stack_use_after_return=1 \
+ARCLEN_TIME_SCALE=10 ASAN_OPTIONS=detect_leaks=0:halt_on_error=1:abort_on_error=0:detect_stack_use_after_return=1 \
 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1 \
 LD_PRELOAD="$ASAN_LIB $UBSAN_LIB" \
   lua5.4 /usr/bin/busted --cpath="$OUT/5.4/?.so" \

@@ -18,7 +18,7 @@ if ! command -v valgrind >/dev/null; then
   exit 1
 fi
 make -s LUA=5.4 >/dev/null || { echo "0 passed, 1 failed"; exit 1; }
-valgrind --error-exitcode=99 --leak-check=full \
+ARCLEN_TIME_SCALE=60 valgrind --error-exitcode=99 --leak-check=full \
   --errors-for-leak-kinds=definite,indirect \
   --show-leak-kinds=definite,indirect --num-callers=30 \
   --log-file="$VGLOG" \
