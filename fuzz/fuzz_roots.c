@@ -63,6 +63,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   ** (reported); such polynomials are not checked. */
   for (i = 0; i < deg; i++)
     if (a[deg] != 0 && !isfinite(a[i] / a[deg])) return 0;
+#ifdef FUZZ_SKIP_KNOWN
+  /* Open issue (reported): the cubic's deflation returns wrong roots when
+  ** the coefficients spread widely (2.25e-23 x^3 + 115 x^2 - 2 x - 1 gave
+  ** 4096); long runs skip spreads beyond 2^40, CI's build checks them. */
+  {
+    double mx = 0, mn = HUGE_VAL;
+    for (i = 0; i <= deg; i++)
+      if (a[i] != 0) { mx = fmax(mx, fabs(a[i])); mn = fmin(mn, fabs(a[i])); }
+    if (mx > 0 && mx > ldexp(mn, 40)) return 0;
+  }
+#endif
   if (deg == 2) {
     n = arclen_quadratic(a[2], a[1], a[0], re, im);
     if (a[2] != 0 && n != 2) fz_fail("quadratic count", a, 1, "%g roots %g", n, 0);
