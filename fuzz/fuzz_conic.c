@@ -27,6 +27,18 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   scheme = (int)fz_range(&rd, 0, ARCLEN_CONIC_NSCHEMES - 1);
   for (i = 0; i < 6; i++) c[i] = p[i];
   c[6] = w;
+#ifdef FUZZ_SKIP_KNOWN
+  /* Open issues (reported): weights beyond 2^+-30 give NaN bounds and
+  ** infinite control points; points spread beyond 2^200 give a conic
+  ** length of 0.  Long runs skip them; CI's build checks them. */
+  {
+    double big = 0, small = HUGE_VAL;
+    if (!(fabs(w) >= 0x1p-30 && fabs(w) <= 0x1p30)) return 0;
+    for (i = 0; i < 6; i++)
+      if (p[i] != 0) { big = fmax(big, fabs(p[i])); small = fmin(small, fabs(p[i])); }
+    if (big > ldexp(small, 200)) return 0;
+  }
+#endif
   rc = arclen_conic_check(p, w);
   if (rc == ARCLEN_OK) {
     rc = arclen_conic_cubics(p, w, scheme, level, out, &bound);
