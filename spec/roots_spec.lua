@@ -1,6 +1,10 @@
 -- Polynomial roots (src/roots.c) against mpmath (tools/ref_roots.py): each
 -- root within the accuracy attainable once the coefficients are rounded to
--- double (column bounds, per root, computed by perturbing the coefficients).
+-- double (column bounds, per root, computed by perturbing the coefficients
+-- or from the roots' condition numbers).  The hostile rows (a subnormal
+-- leading coefficient, +-1e308 in the middle, root groups up to 2^1330
+-- apart) check the Newton-polygon split; roots beyond the double range are
+-- expected as +-inf.
 local arclen = require("arclen")
 local H = require("helpers")
 
@@ -18,9 +22,18 @@ local function parse_list(s)
   return out
 end
 
-local function dist(a, b)
-  local dr, di = a[1] - b[1], a[2] - b[2]
-  return math.sqrt(dr * dr + di * di)
+-- A part of a true root beyond the double range (tonumber gives +-inf)
+-- must come out as that same infinity; the finite parts are measured.
+local function dist(g, r)
+  local d2 = 0
+  for k = 1, 2 do
+    if r[k] == math.huge or r[k] == -math.huge then
+      if g[k] ~= r[k] then return math.huge end
+    else
+      d2 = d2 + (g[k] - r[k]) ^ 2
+    end
+  end
+  return math.sqrt(d2)
 end
 
 describe("roots", function()
@@ -42,6 +55,7 @@ describe("roots", function()
         for j, g in ipairs(got) do
           if not used[j] and dist(g, r) < best then best, bi = dist(g, r), j end
         end
+        assert.is_truthy(bi, ("%s root %d: no computed root matches"):format(row.id, i))
         used[bi] = true
         assert.is_true(best <= bounds[i], ("%s root %d (%g, %g): error %.3g > bound %.3g"):format(
           row.id, i, r[1], r[2], best, bounds[i]))
@@ -56,6 +70,21 @@ describe("roots", function()
     table.sort(f, function(u, v) return u[1] < v[1] end)
     assert.is_true(math.abs(f[1][1] + 2) < 1e-14 and math.abs(f[1][2] - 2) < 1e-14)
     assert.is_true(math.abs(f[2][1] - 4) < 1e-14 and math.abs(f[2][2] - 13) < 1e-14)
+  end)
+
+  it("quartic_factor at the ends of the double range: factors beyond it are inf, never NaN", function()
+    -- 5e-324 x^4 - 5 x^2 + 4: roots +-sqrt(0.8) and +-sqrt(5 / 5e-324) = +-1.006e162
+    local p1, q1, p2, q2 = arclen.quartic_factor(5e-324, 0, -5, 0, 4)
+    local f = {{p1, q1}, {p2, q2}}
+    table.sort(f, function(u, v) return u[2] > v[2] end)
+    assert.is_true(f[1][1] == 0 and math.abs(f[1][2] + 0.8) < 2e-16, tostring(f[1][2]))
+    assert.are.equal(-math.huge, f[2][2])
+    -- x^4 + 1e308 x^2 + 4 = (x^2 + 4e-308)(x^2 + 1e308) to rounding
+    p1, q1, p2, q2 = arclen.quartic_factor(1, 0, 1e308, 0, 4)
+    f = {{p1, q1}, {p2, q2}}
+    table.sort(f, function(u, v) return u[2] < v[2] end)
+    assert.is_true(f[1][1] == 0 and math.abs(f[1][2] / 4e-308 - 1) < 4e-16, tostring(f[1][2]))
+    assert.is_true(f[2][1] == 0 and math.abs(f[2][2] / 1e308 - 1) < 4e-16, tostring(f[2][2]))
   end)
 
   it("lower degrees when leading coefficients vanish; bad input names the argument", function()

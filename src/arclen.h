@@ -127,7 +127,11 @@ int arclen_lengths(const double *c, long n, int dim, const arclen_method *m,
 /* ---- roots.c: real-coefficient polynomial roots --------------------- */
 /* All roots of a real quadratic, cubic, quartic (highest coefficient
 ** first); complex roots come as conjugate pairs (re, +-im).  Returns the
-** number of roots (fewer when leading coefficients are 0). */
+** number of roots (fewer when leading coefficients are 0).  Any finite
+** coefficients (subnormal to 1e308): the cubic and quartic solve each group
+** of the Newton polygon in its own power-of-two scale, so a root beyond the
+** double range (5e-324 x^3 - 6 x^2 + ...: 1.2e324) comes out as +-inf in re
+** or im, never NaN; the others keep their accuracy. */
 int arclen_quadratic(double a2, double a1, double a0, double re[2],
                      double im[2]);
 int arclen_cubic(double a3, double a2, double a1, double a0, double re[3],
@@ -135,7 +139,9 @@ int arclen_cubic(double a3, double a2, double a1, double a0, double re[3],
 int arclen_quartic(double a4, double a3, double a2, double a1, double a0,
                    double re[4], double im[4]);
 /* The quartic / a4 as (x^2 + q0 x + q1)(x^2 + q2 x + q3), real q
-** (Algorithm 1010 style, Newton-polished); 0 or ARCLEN_EDOMAIN. */
+** (Algorithm 1010 style, Newton-polished; roots spread over the Newton
+** polygon pair up conjugates together, reals by size); q beyond the double
+** range is +-inf.  0, or ARCLEN_EDOMAIN for a4 == 0 or a non-finite a_k. */
 int arclen_quartic_factor(double a4, double a3, double a2, double a1,
                           double a0, double q[4]);
 

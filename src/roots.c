@@ -81,38 +81,6 @@ static double cubic_root(double b, double c, double d) {
   return best;
 }
 
-/* Power-of-two s with the scaled coefficients a_k / s^(n-k) near 1. */
-static double poly_scale(const double *a, int n) {
-  double m = 0;
-  int k, e;
-  for (k = 1; k <= n; k++)
-    if (a[k] != 0) m = fmax(m, pow(fabs(a[k]), 1.0 / k));
-  if (m == 0 || !isfinite(m)) return 1;
-  frexp(m, &e);
-  return ldexp(1.0, e);
-}
-
-int arclen_cubic(double a3, double a2, double a1, double a0, double re[3],
-                 double im[3]) {
-  double a[4], s, b, c, d, r, e, f, f1, f2;
-  int n, k;
-  if (a3 == 0) return arclen_quadratic(a2, a1, a0, re, im);
-  a[0] = 1; a[1] = a2 / a3; a[2] = a1 / a3; a[3] = a0 / a3;
-  s = poly_scale(a, 3);
-  b = a[1] / s; c = a[2] / (s * s); d = a[3] / (s * s * s);
-  r = cubic_root(b, c, d);
-  /* deflate: x^3 + b x^2 + c x + d = (x - r)(x^2 + e x + f); f from the
-  ** equation that leaves the smaller residual in the other one */
-  e = b + r;
-  f1 = c + r * e;
-  f2 = r != 0 ? -d / r : f1;
-  f = fabs(r * f1 + d) <= fabs(f2 - r * e - c) ? f1 : f2;
-  n = arclen_quadratic(1, e, f, re + 1, im + 1);
-  re[0] = r; im[0] = 0;
-  for (k = 0; k < 1 + n; k++) { re[k] *= s; im[k] *= s; }
-  return 1 + n;
-}
-
 /* Residual of the factorisation (x^2+p1 x+q1)(x^2+p2 x+q2) of the monic
 ** quartic x^4 + a x^3 + b x^2 + c x + d, and its Jacobian. */
 static void factor_residual(const double *v, const double *m, double *f,
@@ -199,32 +167,94 @@ static void factor_monic(const double *m, double *v) {
   }
 }
 
-int arclen_quartic_factor(double a4, double a3, double a2, double a1,
-                          double a0, double q[4]) {
-  double a[5], m[4], s;
-  if (a4 == 0 || !isfinite(a4) || !isfinite(a3) || !isfinite(a2)
-      || !isfinite(a1) || !isfinite(a0))
-    return ARCLEN_EDOMAIN;
-  a[0] = 1; a[1] = a3 / a4; a[2] = a2 / a4; a[3] = a1 / a4; a[4] = a0 / a4;
-  s = poly_scale(a, 4);
-  m[0] = a[1] / s; m[1] = a[2] / (s * s); m[2] = a[3] / (s * s * s);
-  m[3] = a[4] / (s * s * s * s);
-  factor_monic(m, q);
-  q[0] *= s; q[1] *= s * s; q[2] *= s; q[3] *= s * s;
-  return ARCLEN_OK;
+/* ---- scaling and the Newton polygon ------------------------------------
+** A polynomial is held by power: p[j] is the coefficient of x^j, j = 0..n,
+** p[n] != 0.  Every scaled coefficient is formed by exponent arithmetic,
+** p[j] / p[h] * 2^(E (j - h)) = ldexp(f_j / f_h, e_j - e_h + E (j - h))
+** with p[j] = f_j 2^e_j (frexp): no power s^k is ever formed, so neither a
+** subnormal leading coefficient nor 1e308 in the middle overflows. */
+
+/* Neighbouring edges of the Newton polygon whose root magnitudes differ by
+** more than 2^SPLIT_BITS are solved apart.  One scaled solve of the whole
+** polynomial loses the middle root of (x - 1e-30)(x + 1)(x - 1e30) (the
+** cubic's deflation cancels; spec/roots_spec.lua's spread-* rows), while a
+** group solved alone starts Newton on the whole polynomial within about
+** 2^-SPLIT_BITS relative, which it sharpens in a few steps.  Measured: 6 to
+** 30 pass every row of spec/data/roots.tsv, 300 does not; 16 is the middle.
+** Below it the polygon's magnitudes are too coarse to separate roots (a
+** conjugate pair can lie on two edges about one bit apart). */
+#ifndef SPLIT_BITS
+#define SPLIT_BITS 16
+#endif
+
+typedef struct {
+  double f[5];       /* frexp fractions of p[j] (0 for p[j] == 0) */
+  int e[5];          /* and exponents */
+  double l[5];       /* log2 |p[j]| */
+  int n;
+} poly;
+
+static void poly_init(poly *P, const double *p, int n) {
+  int j;
+  P->n = n;
+  for (j = 0; j <= n; j++) {
+    P->f[j] = frexp(p[j], &P->e[j]);
+    P->l[j] = p[j] != 0 ? P->e[j] + log2(fabs(P->f[j])) : -HUGE_VAL;
+  }
 }
 
-/* Newton on the quartic itself for one root (complex arithmetic by hand),
-** kept only while |p| falls: it sharpens roots that the factor split left
-** coarse (clusters), and never makes one worse. */
-static void polish_root(const double *a, double *zr, double *zi) {
+/* p[j] / p[h] * 2^(E (j - h)), or 0 */
+static double scaled(const poly *P, int j, int h, int E) {
+  if (P->f[j] == 0) return 0;
+  return ldexp(P->f[j] / P->f[h], P->e[j] - P->e[h] + E * (j - h));
+}
+
+/* Power-of-two exponent E with the monic sub-polynomial p[lo..hi] / p[hi]
+** in y = x / 2^E having coefficients <= 1 (Fujiwara-style bound: the
+** largest |p[hi-k]/p[hi]|^(1/k), rounded up to a power of two). */
+static int group_scale(const poly *P, int lo, int hi) {
+  double m = -HUGE_VAL;
+  int k;
+  for (k = 1; k <= hi - lo; k++)
+    if (P->f[hi - k] != 0) m = fmax(m, (P->l[hi - k] - P->l[hi]) / k);
+  return m == -HUGE_VAL ? 0 : (int)floor(m) + 1;
+}
+
+/* The upper convex hull of the points (j, log2|p[j]|), j = lo..n with
+** p[j] != 0: its vertices into v[], returns their count.  An edge from j1
+** to j2 carries j2 - j1 roots of magnitude about 2^((l_j1 - l_j2)/(j2 - j1))
+** (the Newton polygon), the magnitudes growing with j. */
+static int newton_polygon(const poly *P, int lo, int *v) {
+  int j, m = 0;
+  for (j = lo; j <= P->n; j++) {
+    if (P->f[j] == 0) continue;
+    while (m >= 2) {   /* drop v[m-1] if it lies on or below the chord */
+      int a = v[m - 2], b = v[m - 1];
+      if ((P->l[b] - P->l[a]) * (j - a) <= (P->l[j] - P->l[a]) * (b - a)) m--;
+      else break;
+    }
+    v[m++] = j;
+  }
+  return m;
+}
+
+static double edge_bits(const poly *P, int a, int b) {
+  return (P->l[a] - P->l[b]) / (b - a);
+}
+
+/* Newton on the whole polynomial scaled to x = 2^E y (coefficients c[j],
+** all <= about 1 near the group's roots, so Horner cannot overflow),
+** for one root, kept only while |p| falls: it sharpens roots that the
+** factor split or the group's neglected coefficients left coarse, and
+** never makes one worse. */
+static void polish_root(const double *c, int n, double *zr, double *zi) {
   double best = HUGE_VAL, xr = *zr, xi = *zi;
   int it, k;
   for (it = 0; it < NEWTON_CAP; it++) {
-    double pr = a[0], pi = 0, dr = 0, di = 0, t, den, ap;
-    for (k = 1; k <= 4; k++) {            /* Horner for p and p' */
+    double pr = c[n], pi = 0, dr = 0, di = 0, t, den, ap;
+    for (k = n - 1; k >= 0; k--) {        /* Horner for p and p' */
       t = dr * xr - di * xi + pr; di = dr * xi + di * xr + pi; dr = t;
-      t = pr * xr - pi * xi + a[k]; pi = pr * xi + pi * xr; pr = t;
+      t = pr * xr - pi * xi + c[k]; pi = pr * xi + pi * xr; pr = t;
     }
     ap = hypot(pr, pi);
     if (!(ap < best)) break;
@@ -236,15 +266,163 @@ static void polish_root(const double *a, double *zr, double *zi) {
   }
 }
 
+/* The monic cubic y^3 + b y^2 + c y + d (scaled): its largest real root
+** and the deflated quadratic y^2 + e y + f. */
+static double cubic_deflate(double b, double c, double d, double *e,
+                            double *f) {
+  double r = cubic_root(b, c, d), f1, f2;
+  /* f from the equation that leaves the smaller residual in the other */
+  *e = b + r;
+  f1 = c + r * *e;
+  f2 = r != 0 ? -d / r : f1;
+  *f = fabs(r * f1 + d) <= fabs(f2 - r * *e - c) ? f1 : f2;
+  return r;
+}
+
+/* Roots (in y) of the monic y^d + m[0] y^(d-1) + ... + m[d-1], d <= 4. */
+static int monic_roots(const double *m, int d, double *re, double *im) {
+  double v[4], e, f;
+  int n;
+  switch (d) {
+    case 1: re[0] = -m[0]; im[0] = 0; return 1;
+    case 2: return arclen_quadratic(1, m[0], m[1], re, im);
+    case 3:
+      re[0] = cubic_deflate(m[0], m[1], m[2], &e, &f); im[0] = 0;
+      return 1 + arclen_quadratic(1, e, f, re + 1, im + 1);
+    default:
+      factor_monic(m, v);
+      n = arclen_quadratic(1, v[0], v[1], re, im);
+      return n + arclen_quadratic(1, v[2], v[3], re + n, im + n);
+  }
+}
+
+/* The groups of the Newton polygon: it is cut where the root magnitudes of
+** two neighbouring edges lie more than 2^SPLIT_BITS apart.  Group g spans
+** powers gs[g]..gs[g+1].  Returns the count. */
+static int split_groups(const poly *P, int lo, int *gs) {
+  int v[5] = {0, 0, 0, 0, 0}, nv = newton_polygon(P, lo, v), i, ng = 0;
+  double prev = 0;
+  gs[0] = v[0];
+  for (i = 0; i + 1 < nv; i++) {
+    double bits = edge_bits(P, v[i], v[i + 1]);
+    if (i > 0 && bits - prev > SPLIT_BITS) gs[++ng] = v[i];
+    prev = bits;
+  }
+  gs[++ng] = v[nv - 1];
+  return ng;
+}
+
+/* All n roots of the polynomial p (by power, p[n] != 0, finite), each
+** group of the Newton polygon solved alone in its own scale, then polished
+** on the whole polynomial in that scale.  A root beyond the double range
+** comes out as +-inf in re or im: the honest answer, never NaN. */
+static int poly_roots(const double *p, int n, double *re, double *im) {
+  poly P;
+  int lo = 0, gs[5], ng, g, k, j, cnt = 0;
+  poly_init(&P, p, n);
+  while (lo < n && p[lo] == 0) {          /* x^lo divides p: exact zeros */
+    re[cnt] = 0; im[cnt] = 0; cnt++; lo++;
+  }
+  if (lo == n) return cnt;
+  ng = split_groups(&P, lo, gs);
+  for (g = 0; g < ng; g++) {
+    int a = gs[g], b = gs[g + 1], d = b - a, E = group_scale(&P, a, b);
+    double m[4], c[5];
+    for (k = 1; k <= d; k++) m[k - 1] = scaled(&P, b - k, b, E);
+    monic_roots(m, d, re + cnt, im + cnt);
+    for (j = 0; j <= n; j++) c[j] = scaled(&P, j, b, E);
+    for (k = cnt; k < cnt + d; k++) {
+      polish_root(c, n, &re[k], &im[k]);
+      re[k] = ldexp(re[k], E); im[k] = ldexp(im[k], E);
+    }
+    cnt += d;
+  }
+  return cnt;
+}
+
+static int all_finite(const double *a, int n) {
+  int k;
+  for (k = 0; k <= n; k++) if (!isfinite(a[k])) return 0;
+  return 1;
+}
+
+/* Roots of a3 x^3 + a2 x^2 + a1 x + a0; see poly_roots for huge spreads. */
+int arclen_cubic(double a3, double a2, double a1, double a0, double re[3],
+                 double im[3]) {
+  double p[4];
+  if (a3 == 0) return arclen_quadratic(a2, a1, a0, re, im);
+  p[0] = a0; p[1] = a1; p[2] = a2; p[3] = a3;
+  if (!all_finite(p, 3)) return 0;
+  return poly_roots(p, 3, re, im);
+}
+
 int arclen_quartic(double a4, double a3, double a2, double a1, double a0,
                    double re[4], double im[4]) {
-  double q[4], a[5];
-  int n, k;
+  double p[5];
   if (a4 == 0) return arclen_cubic(a3, a2, a1, a0, re, im);
-  if (arclen_quartic_factor(a4, a3, a2, a1, a0, q) != ARCLEN_OK) return 0;
-  n = arclen_quadratic(1, q[0], q[1], re, im);
-  n += arclen_quadratic(1, q[2], q[3], re + n, im + n);
-  a[0] = a4; a[1] = a3; a[2] = a2; a[3] = a1; a[4] = a0;
-  for (k = 0; k < n; k++) polish_root(a, &re[k], &im[k]);
-  return n;
+  p[0] = a0; p[1] = a1; p[2] = a2; p[3] = a3; p[4] = a4;
+  if (!all_finite(p, 4)) return 0;
+  return poly_roots(p, 4, re, im);
+}
+
+/* x^2 + q[0] x + q[1] with the roots (r1, +-i1) and (r2, i2): a conjugate
+** pair, or two reals (0 times an infinite root is the exact 0). */
+static void pair_factor(double r1, double i1, double r2, double i2,
+                        double *q) {
+  if (i1 != 0) { q[0] = -2 * r1; q[1] = r1 * r1 + i1 * i1; return; }
+  (void)i2;
+  q[0] = -(r1 + r2);
+  q[1] = (r1 == 0 || r2 == 0) ? 0 : r1 * r2;
+}
+
+int arclen_quartic_factor(double a4, double a3, double a2, double a1,
+                          double a0, double q[4]) {
+  double p[5], re[4], im[4];
+  poly P;
+  int gs[5], ng, i, k, used[4] = {0, 0, 0, 0}, nq = 0;
+  p[0] = a0; p[1] = a1; p[2] = a2; p[3] = a3; p[4] = a4;
+  if (a4 == 0 || !all_finite(p, 4)) return ARCLEN_EDOMAIN;
+  poly_init(&P, p, 4);
+  ng = p[0] == 0 ? 0 : split_groups(&P, 0, gs);
+  if (ng == 1) {                /* one scale: Ferrari and Newton, scaled */
+    double m[4], v[4];
+    int E = group_scale(&P, 0, 4);
+    for (k = 1; k <= 4; k++) m[k - 1] = scaled(&P, 4 - k, 4, E);
+    factor_monic(m, v);
+    q[0] = ldexp(v[0], E); q[1] = ldexp(v[1], 2 * E);
+    q[2] = ldexp(v[2], E); q[3] = ldexp(v[3], 2 * E);
+    return ARCLEN_OK;
+  }
+  /* spread roots: a group of degree 2 is a factor as it stands (in x,
+  ** y^2 + m0 y + m1 with x = 2^E y); the other roots pair up, conjugates
+  ** together, reals by size (largest with next largest).  poly_roots lists
+  ** group g's roots at gs[g]..gs[g+1]-1 (exact zeros, if any, first). */
+  poly_roots(p, 4, re, im);
+  for (i = 0; i < ng && p[0] != 0 && nq == 0; i++) {
+    int b = gs[i + 1], E = group_scale(&P, gs[i], b);
+    if (b - gs[i] != 2) continue;
+    q[0] = ldexp(scaled(&P, b - 1, b, E), E);
+    q[1] = ldexp(scaled(&P, b - 2, b, E), 2 * E);
+    used[gs[i]] = used[gs[i] + 1] = 1;
+    nq = 1;
+  }
+  for (; nq < 2; nq++) {
+    int s = -1, t = -1;
+    for (k = 0; k < 4; k++)        /* the unused root of largest size */
+      if (!used[k] && (s < 0 || hypot(re[k], im[k]) > hypot(re[s], im[s])))
+        s = k;
+    used[s] = 1;
+    for (k = 0; k < 4; k++)        /* its conjugate, or the next real */
+      if (!used[k] && (im[s] != 0 ? im[k] == -im[s] && re[k] == re[s]
+            : im[k] == 0 && (t < 0 || fabs(re[k]) > fabs(re[t]))))
+        t = k;
+    if (t < 0)                     /* no exact conjugate: the nearest */
+      for (k = 0; k < 4; k++)
+        if (!used[k] && (t < 0 || hypot(re[k] - re[s], im[k] + im[s])
+                         < hypot(re[t] - re[s], im[t] + im[s])))
+          t = k;
+    used[t] = 1;
+    pair_factor(re[s], fabs(im[s]), re[t], im[t], q + 2 * nq);
+  }
+  return ARCLEN_OK;
 }

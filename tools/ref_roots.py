@@ -18,10 +18,16 @@ Test sets:
    24 polynomials we could not obtain here, an equivalent hard set built the
    same way: clustered roots 1 +- 1e-k, magnitudes 1e-k..1e+k, complex pairs
    near the real axis and near each other, with mpmath truths.
+ - hostile coefficients (a subnormal leading one, +-1e308 in the middle)
+   and root groups spread up to 2^1330 apart, some roots beyond the double
+   range (the spec expects those as +-inf): exact roots by sympy, bounds by
+   the roots' condition numbers (see condition_bounds).
 Run: /usr/bin/python3 tools/ref_roots.py
 """
 import random
+from fractions import Fraction
 import mpmath as mp
+import sympy as sp
 
 mp.mp.dps = 60
 S2 = mp.sqrt(2)
@@ -77,6 +83,31 @@ for k in (3, 6, 9):
     s = mp.mpf(10) ** k
     CASES.append(("hard-spread-1e%d" % k, [c(1 / s), c(1), c(s), c(-s * s)], None))
     CASES.append(("hard-spread-complex-1e%d" % k, pair(1 / s, 1 / s) + pair(s, s), None))
+# hostile: coefficients at the ends of the double range (the monic
+# normalisation a_k / a_n overflowed: NaN roots) and root groups spread
+# beyond one scaled solve (Newton polygon split in roots.c); roots beyond
+# the double range are written as they are (> 1.8e308) and expected as inf
+HOSTILE = [
+    ("hostile-subnormal-lead-cubic", None, [5e-324, -6.0, 11.0, -6.0]),
+    ("hostile-subnormal-lead-quartic", None, [5e-324, 0.0, -5.0, 0.0, 4.0]),
+    ("hostile-subnormal-lead-quartic2", None, [5e-324, 1.0, -6.0, 11.0, -6.0]),
+    ("hostile-1e308-a2-cubic", None, [1.0, 1e308, 11.0, -6.0]),
+    ("hostile--1e308-a2-cubic", None, [1.0, -1e308, 11.0, -6.0]),
+    ("hostile-1e308-a1-cubic", None, [1.0, -6.0, 1e308, -6.0]),
+    ("hostile-1e308-a3-quartic", None, [1.0, 1e308, -5.0, 0.0, 4.0]),
+    ("hostile-1e308-a2-quartic", None, [1.0, 0.0, 1e308, 0.0, 4.0]),
+    ("hostile--1e308-a2-quartic", None, [1.0, 0.0, -1e308, 0.0, 4.0]),
+    ("hostile-overflowing-pair", None, [5e-324, 0.0, 1e308, 0.0, 4.0]),
+    ("hostile-overflowing-real-pair", None, [5e-324, 0.0, -1e308, 1.0, 4.0]),
+    ("spread-cubic-1e200", [c("1e-200"), c(1), c("1e200")], None),
+    ("spread-quartic-1e100", [c("1e-100"), c(1), c("1e100"), c("1e200")], None),
+    ("spread-complex-1e100", pair("1e-100", "1e-100") + pair("1e100", "3e100"), None),
+    ("spread-mixed-1e150", [c("-1e-150"), c("2e-150")] + pair("1e150", "1e140"), None),
+]
+for k in (30, 45, 60, 90):
+    s = mp.mpf(10) ** k
+    HOSTILE.append(("spread-cubic-1e%d" % k, [c(1 / s), c(-1), c(s)], None))
+    HOSTILE.append(("spread-quartic-1e%d" % k, [c(-1 / s), c(1), c(s), c(-s * s)], None))
 CASES.append(("quad-1e8-1e-8", [c("1e8"), c("1e-8")], None))
 CASES.append(("quad-complex", pair(3, "1e-7"), None))
 CASES.append(("quad-near-double", [c(1), c("1.0000001")], None))
@@ -98,6 +129,41 @@ def roots_of(coeffs):
     while cf and cf[0] == 0:
         cf = cf[1:]
     return mp.polyroots(cf, maxsteps=4000, extraprec=3000)
+
+
+def exact_roots_of(coeffs):
+    """the roots of the double polynomial as exact algebraic numbers (sympy
+    CRootOf: isolating intervals on the rational coefficients), to 30 digits
+    RELATIVE to each root: mpmath's polyroots stops on an absolute error,
+    which loses the small roots of a polynomial whose roots spread over
+    2^600 and more"""
+    x = sp.symbols("x")
+    cf = [sp.Rational(Fraction(a).numerator, Fraction(a).denominator) for a in coeffs]
+    while cf and cf[0] == 0:
+        cf = cf[1:]
+    out = []
+    for r in sp.Poly(cf, x).all_roots():
+        v = sp.N(r, 40, maxn=8000)
+        re, im = v.as_real_imag()
+        out.append(mp.mpc(mp.mpf(str(sp.N(re, 40, maxn=8000))),
+                          mp.mpf(str(sp.N(im, 40, maxn=8000)))))
+    return out
+
+
+def condition_bounds(coeffs, truth):
+    """the first-order displacement of each simple root when every
+    coefficient moves by up to 2^-53 relatively (Wilkinson's condition
+    number sum |a_k| |r|^k / |p'(r)|), times 4, plus 4 ulp of the root: the
+    perturbation experiment's bound, without the perturbed solves that
+    CRootOf makes slow"""
+    cf = [mp.mpf(a) for a in coeffs]
+    n = len(cf) - 1
+    out = []
+    for r in truth:
+        s = sum(abs(a) * abs(r) ** (n - k) for k, a in enumerate(cf))
+        dp = sum((n - k) * a * r ** (n - k - 1) for k, a in enumerate(cf[:-1]))
+        out.append(4 * 2.0 ** -53 * s / abs(dp) + 4 * 2.0 ** -52 * abs(r))
+    return out
 
 
 def match(ref, got):
@@ -127,13 +193,22 @@ def main():
                 d = match(truth, roots_of(pert))
                 worst = [max(w, x) for w, x in zip(worst, d)]
             bounds = [4 * w + 4 * 2.0 ** -52 * abs(r) for w, r in zip(worst, truth)]
-            cols = [repr(float(v)) for v in coeffs]
-            cols = [""] * (4 - deg) + cols
-            f.write("%s\t%d\t%s\t%s\t%s\n" % (
-                cid, deg, "\t".join(cols),
-                ";".join("%s,%s" % (mp.nstr(mp.re(r), 30), mp.nstr(mp.im(r), 30))
-                         for r in truth),
-                ";".join(mp.nstr(b, 6) for b in bounds)))
+            write_row(f, cid, coeffs, truth, bounds)
+        for cid, roots, coeffs in HOSTILE:
+            if coeffs is None:
+                coeffs = coeffs_from_roots(roots)
+            truth = exact_roots_of(coeffs)
+            write_row(f, cid, coeffs, truth, condition_bounds(coeffs, truth))
+
+
+def write_row(f, cid, coeffs, truth, bounds):
+    deg = len(coeffs) - 1
+    cols = [""] * (4 - deg) + [repr(float(v)) for v in coeffs]
+    f.write("%s\t%d\t%s\t%s\t%s\n" % (
+        cid, deg, "\t".join(cols),
+        ";".join("%s,%s" % (mp.nstr(mp.re(r), 30), mp.nstr(mp.im(r), 30))
+                 for r in truth),
+        ";".join(mp.nstr(b, 6) for b in bounds)))
 
 
 if __name__ == "__main__":
