@@ -54,6 +54,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   fz_reader rd;
   double c[12], rtol, ref = 0, t0 = 0, t1 = 1;
   int dim, have_ref = 0;
+#ifdef FUZZ_SKIP_KNOWN
+  int rc0;
+#endif
   long steps;
   unsigned mode;
   const arclen_method *m;
@@ -69,6 +72,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   }
   fz_curve(&rd, dim, c);
   if (fz_known_3d_issue(c, dim)) return 0;
+#ifdef FUZZ_SKIP_KNOWN
+  /* Open issue (reported): coordinates within a factor 64 of DBL_MAX make
+  ** the hodograph (3 x legs) overflow: gauss returns inf for a finite
+  ** length. */
+  for (rc0 = 0; rc0 < 4 * dim; rc0++)
+    if (fabs(c[rc0]) > DBL_MAX / 64) return 0;
+#endif
   chord = fz_chord(c, dim);
   poly = fz_polygon(c, dim);
 
@@ -101,7 +111,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         (t0 == t1 && len != 0 && strcmp(m->name, "metapost")))
       fz_fail(m->name, c, dim, "sign of %g, t1 - t0 = %g", len, t1 - t0);
     if (t0 == 0 && t1 == 1 && isfinite(len)) {
-      long double lo = chord * (1 - g.tol - ULPS) - TINY;
+      /* + the rounding of a power-basis or subdivision formulation:
+      ** absolute, ~eps times the curve's size (polyline with 1 step gave
+      ** 0 for a chord of 5e-195 on a curve of size 10) */
+      long double lo = chord * (1 - g.tol - ULPS) - TINY - 64 * DBL_EPSILON * poly;
       long double hi = poly * (1 + g.tol + ULPS) + TINY;
       if (!strcmp(m->name, "metapost")) {   /* + 2^-17 bias, abs. tolerance */
         lo = chord * 0.98L - 0x1p-10;
@@ -116,7 +129,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
       have_ref = 1;
     } else if (g.controlled && have_ref && isfinite(len)) {
       double gt = fmax(rtol, 1e-15);
-      if (fabs(len - ref) > (g.tol + gt + 2 * ULPS) * fabs(ref) + TINY)
+      /* a sub-range is cut out with arclen_subcurve (absolute rounding
+      ** ~eps |P|), gauss integrates it directly */
+      double cut = (t0 != 0 || t1 != 1) ? 64 * DBL_EPSILON * (double)poly : 0;
+      if (fabs(len - ref) > (g.tol + gt + 2 * ULPS) * fabs(ref) + TINY + cut)
         fz_fail(m->name, c, dim, "length %.17g, gauss %.17g", len, ref);
     }
   }
