@@ -224,6 +224,21 @@ static double factored_speed(const void *data, double t) {
   return f->lead * sqrt(p);
 }
 
+/* Append the root s: a factor |t - s|.  A root farther than 2^60 from
+** [0, 1] (the hodograph nearly drops a degree) is |s| |1 - t/s| = |s| to
+** double precision: it goes into the leading factor, where (t - a)^2 + b^2
+** would overflow and make inf * 0 = NaN at the other root (fuzz_length). */
+static void add_root(factored *f, cpx s) {
+  double m = hypot(s.re, s.im);
+  if (m > 0x1p60 || !isfinite(m)) {
+    f->lead *= m;
+    return;
+  }
+  f->a[f->nroots] = s.re;
+  f->b2[f->nroots] = s.im * s.im;
+  f->nroots++;
+}
+
 /* Roots of A2 t^2 + A1 t + A0 (complex coefficients) without cancellation:
 ** q = -(A1 + d)/2 with d = +-sqrt(A1^2 - 4 A2 A0) on A1's side, then
 ** s1 = q/A2 and s2 = A0/q.  Fills f (f->lead divided by the returned scale,
@@ -244,10 +259,11 @@ static double factor_speed(const double *c, factored *f) {
       return scale;
     }
     s = cdiv(A0, A1);                          /* z' = A1 (t + A0/A1) */
+    s.re = -s.re;
+    s.im = -s.im;
     f->lead = hypot(A1.re, A1.im);
-    f->nroots = 1;
-    f->a[0] = -s.re;
-    f->b2[0] = s.im * s.im;
+    f->nroots = 0;
+    add_root(f, s);
     return scale;
   }
   d = cmul(A1, A1);
@@ -259,17 +275,13 @@ static double factor_speed(const double *c, factored *f) {
   q.re = -(A1.re + d.re) / 2.0;
   q.im = -(A1.im + d.im) / 2.0;
   f->lead = hypot(A2.re, A2.im);
-  f->nroots = 2;
-  s = cdiv(q, A2);
-  f->a[0] = s.re;
-  f->b2[0] = s.im * s.im;
+  f->nroots = 0;
+  add_root(f, cdiv(q, A2));
   if (q.re == 0.0 && q.im == 0.0) {            /* A1 = A0 = 0: t^2 */
-    f->a[1] = 0.0;
-    f->b2[1] = 0.0;
+    cpx zero = {0.0, 0.0};
+    add_root(f, zero);
   } else {
-    s = cdiv(A0, q);
-    f->a[1] = s.re;
-    f->b2[1] = s.im * s.im;
+    add_root(f, cdiv(A0, q));
   }
   return scale;
 }
