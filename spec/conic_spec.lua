@@ -726,6 +726,61 @@ describe("conic bad input", function()
   end)
 end)
 
+-- ---- weights at the ends of the double range --------------------------------
+
+describe("weights at the ends of the double range", function()
+  -- w -> inf: the conic is the control polygon p0 p1 p2 (a degenerate
+  -- hyperbola); w -> 0: the chord p0 p2.  Both are meaningful, and eq. (4)'s
+  -- w_r = sqrt((1 + w)/2) brings the pieces' weights back near 1.
+  local P0, P1, P2 = {1, 0}, {1, 1}, {0, 1}
+  local function dist_polygon(x, y)   -- to p0 p1 (x = 1) and p1 p2 (y = 1)
+    return min(abs(x - 1) + max(0, y - 1, -y), abs(y - 1) + max(0, x - 1, -x))
+  end
+
+  it("conic_scheme: lambda's limits (1 or 4/3 as w -> inf, 0 or 2/3 as w -> 0), no NaN", function()
+    local limit_inf = {quadratic = 2 / 3, g2 = 1, midpoint = 4 / 3, c2 = 1, g4 = 1}
+    local limit_0 = {quadratic = 2 / 3, g2 = 0, midpoint = 0, c2 = 0, g4 = 0}
+    for _, s in ipairs(SCHEMES) do
+      for _, w in ipairs({1e40, 1e155, 1e308}) do
+        local l, A, B, g = arclen.conic_scheme(s, w)
+        assert.is_true(abs(l - limit_inf[s]) <= 1e-15, s .. " lambda at " .. w)
+        assert.is_true(A == A and B == B and g == g and g >= 0, s)
+      end
+      for _, w in ipairs({1e-40, 1e-200, 5e-324}) do
+        local l, A, B, g = arclen.conic_scheme(s, w)
+        assert.is_true(abs(l - limit_0[s]) <= 1e-39, s .. " lambda at " .. w)
+        assert.is_true(A == A and B == B and g == g and g >= 0, s)
+      end
+    end
+    -- ||g|| grows like w^2 (Prop 2: A, B = O(w^2)); it overflows to inf, never NaN
+    local _, _, _, g = arclen.conic_scheme("midpoint", 1e150)
+    assert.is_true(g > 1e298 and g < math.huge)
+    assert.are.equal(math.huge, select(4, arclen.conic_scheme("midpoint", 1e308)))
+  end)
+
+  it("w = 1e308 follows the control polygon, w = 5e-324 the chord, to the bound", function()
+    for _, s in ipairs(SCHEMES) do
+      local cs, b = arclen.conic(P0, P1, P2, 1e308, {scheme = s, tol = 1e-6})
+      assert.is_true(b <= 1e-6, s)
+      for _, c in ipairs(cs) do
+        for k = 1, 8 do assert.is_true(c[k] == c[k], s) end
+        assert.is_true(dist_polygon(c[1], c[2]) <= 1e-12, s)   -- on the conic
+      end
+      cs, b = arclen.conic(P0, P1, P2, 5e-324, {scheme = s, tol = 1e-6})
+      assert.is_true(b <= 1e-6, s)
+      for _, c in ipairs(cs) do   -- the chord x + y = 1
+        assert.is_true(abs(c[1] + c[2] - 1) <= 1e-12, s)
+      end
+    end
+    -- level 0 at the limits: finite cubics, the bound finite (w -> 0) or inf
+    local cs, b = arclen.conic(P0, P1, P2, 5e-324)
+    assert.is_true(b == b and b < math.huge and cs[1][3] == 1 and abs(cs[1][4]) < 1e-300)
+    cs, b = arclen.conic(P0, P1, P2, 1e308)
+    assert.are.equal(math.huge, b)
+    assert.is_true(cs[1][3] == 1 and abs(cs[1][4] - 4 / 3) < 1e-15)
+  end)
+end)
+
 -- ---- pictures ---------------------------------------------------------------
 
 describe("arclen.conicplot", function()

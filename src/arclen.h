@@ -274,7 +274,9 @@ int arclen_fit_error(const arclen_fit *f, int truth, int inverse, int npts,
 /* ---- conic.c: cubic approximation of conics ------------------------- */
 /* Floater (1996).  A conic is the rational quadratic Bezier curve with
 ** control points p[6] = x0 y0 x1 y1 x2 y2 and weight w > 0 (eq. 1):
-** ellipse w < 1, parabola w = 1, hyperbola w > 1.  Level r: the 2^r pieces
+** ellipse w < 1, parabola w = 1, hyperbola w > 1; any finite w > 0 (w ->
+** inf: the control polygon, w -> 0: the chord; A, B, bounds ~ w^2 are inf
+** beyond the double range, never NaN).  Level r: the 2^r pieces
 ** of the subdivision scheme (eq. 4), each replaced by one cubic. */
 enum {
   ARCLEN_CONIC_QUADRATIC,   /* Prop 3: lambda = 2/3 */

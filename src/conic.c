@@ -59,19 +59,58 @@ static double lambda_delta(int scheme, double w) {
   }
 }
 
+/* Beyond 2^+-100 the forms in w^2 overflow or lose every digit (A and B
+** are differences of O(1) terms whose sum is O(w^2) at small w), while the
+** limits are meaningful: w -> inf is the control polygon (a degenerate
+** hyperbola), w -> 0 the chord; subdivision brings w_r of eq. (4) back
+** near 1 in a few levels.  There the forms below in 1/w, and A, B divided
+** by w^2, are used. */
+#define W_BIG 0x1p100
+#define W_SMALL 0x1p-100
+
 double arclen_conic_lambda(int scheme, double w) {
+  double v = 1 / w;
   switch (scheme) {
   case ARCLEN_CONIC_QUADRATIC: return 2.0 / 3;
   /* 2w/(sqrt(w^2+3) + w): Prop 4's form without cancellation at large w */
-  case ARCLEN_CONIC_G2: return 2 * w / (sqrt(w * w + 3) + w);
-  case ARCLEN_CONIC_MIDPOINT: return 4 * w / (3 * (1 + w));
-  case ARCLEN_CONIC_C2: return 2 * w * w / (1 + 2 * w * w);
+  case ARCLEN_CONIC_G2:
+    if (w > W_BIG) return 2 / (sqrt(1 + 3 * v * v) + 1);
+    return 2 * w / (sqrt(w * w + 3) + w);
+  case ARCLEN_CONIC_MIDPOINT:
+    if (w > W_BIG) return 4 / (3 * (1 + v));
+    return 4 * w / (3 * (1 + w));
+  case ARCLEN_CONIC_C2:
+    if (w > W_BIG) return 2 / (v * v + 2);
+    return 2 * w * w / (1 + 2 * w * w);
   /* Prop 9's 2(6w^2+1 - sqrt(3w^2+1))/(12w^2+3), rationalised:
   ** 6w^2 / (6w^2 + 1 + sqrt(3w^2+1)) (no cancellation at small w) */
   case ARCLEN_CONIC_G4:
+    if (w > W_BIG) return 6 / (6 + v * (v + sqrt(3 + v * v)));
     return 6 * w * w / (6 * w * w + 1 + sqrt(3 * w * w + 1));
   default: return NAN;
   }
+}
+
+/* lambda / w: finite at small w (where lambda ~ c w) */
+static double lambda_over_w(int scheme, double w) {
+  switch (scheme) {
+  case ARCLEN_CONIC_QUADRATIC: return (2.0 / 3) / w;   /* inf below 1e-308 */
+  case ARCLEN_CONIC_G2: return 2 / (sqrt(w * w + 3) + w);
+  case ARCLEN_CONIC_MIDPOINT: return 4 / (3 * (1 + w));
+  case ARCLEN_CONIC_C2: return 2 * w / (1 + 2 * w * w);
+  case ARCLEN_CONIC_G4: return 6 * w / (6 * w * w + 1 + sqrt(3 * w * w + 1));
+  default: return NAN;
+  }
+}
+
+/* Prop 2's A / w^2 and B / w^2 in its direct form (no cancellation far
+** from w = 1):  9 (lambda/w)^2 - 12 (1 - lambda),
+** 18 (lambda/w)^2 - 4 (9 (1 - lambda)^2 + 1). */
+static void scheme_AB_over_w2(int scheme, double w, double *a, double *b) {
+  double l = arclen_conic_lambda(scheme, w);
+  double lw = w > 1 ? l / w : lambda_over_w(scheme, w);
+  *a = 9 * lw * lw - 12 * (1 - l);
+  *b = 18 * lw * lw - 4 * (9 * (1 - l) * (1 - l) + 1);
 }
 
 /* Prop 2's A and B with lambda = 2/3 + delta expanded:
@@ -84,7 +123,15 @@ void arclen_conic_AB(double w, double delta, double *A, double *B) {
   *B = -8 * u + 24 * delta * v + 18 * delta * delta * (1 - 2 * w * w);
 }
 
+/* Outside [W_SMALL, W_BIG] by A / w^2 and B / w^2: A and B are O(w^2),
+** +-inf when that overflows (an honest value, never inf - inf). */
 void arclen_conic_scheme_AB(int scheme, double w, double *A, double *B) {
+  if (w > W_BIG || w < W_SMALL) {
+    double a, b;
+    scheme_AB_over_w2(scheme, w, &a, &b);
+    *A = a * w * w; *B = b * w * w;
+    return;
+  }
   arclen_conic_AB(w, lambda_delta(scheme, w), A, B);
 }
 
@@ -92,10 +139,13 @@ void arclen_conic_scheme_AB(int scheme, double w, double *A, double *B) {
 ** B(1-t)t + A t^2).  The interior critical point u1 (u = t - 1/2) exists
 ** iff 3B < -2A < 0 or 3B > -2A > 0. */
 double arclen_conic_gnorm(double A, double B) {
-  double m = fabs(2 * A + B) / 64;
+  double m;
+  /* A or B overflowed (w beyond 1e154): so does ||g||, about |A| + |B| */
+  if (!isfinite(A) || !isfinite(B)) return HUGE_VAL;
+  m = fabs(2 * A / 64 + B / 64);
   if ((3 * B < -2 * A && -2 * A < 0) || (3 * B > -2 * A && -2 * A > 0)) {
-    double d = 2 * A - B;
-    double m1 = 4 * fabs(A) * A * A / (27 * d * d);
+    double d = 2 * A - B, r = A / d;      /* A^3 / d^2 without overflow */
+    double m1 = 4 * fabs(A) * r * r / 27;
     if (m1 > m) m = m1;
   }
   return m;
@@ -113,6 +163,11 @@ double arclen_conic_weight(double w, int level) {
 static double level_factor(int scheme, double w) {
   double A, B;
   if (arclen_conic_lambda(scheme, w) > 1) return HUGE_VAL;
+  if (w > W_BIG || w < W_SMALL) {   /* ||g|| is homogeneous in (A, B) */
+    scheme_AB_over_w2(scheme, w, &A, &B);
+    return w < 1 ? 0.25 * arclen_conic_gnorm(A, B)
+                 : 0.25 * arclen_conic_gnorm(A, B) * w * w;
+  }
   arclen_conic_scheme_AB(scheme, w, &A, &B);
   return 0.25 * (w < 1 ? 1 / (w * w) : 1) * arclen_conic_gnorm(A, B);
 }
@@ -142,8 +197,12 @@ int arclen_conic_check(const double p[6], double w) {
 /* Split the conic piece t[6] = (a, b, c) with weight w at its mid-point
 ** (eq. 4): left (a, (a + w b)/(1 + w), m), right (m, (w b + c)/(1 + w), c). */
 static void split_half(const double t[6], double w, int right, double out[6]) {
-  double l1x = (t[0] + w * t[2]) / (1 + w), l1y = (t[1] + w * t[3]) / (1 + w);
-  double r1x = (w * t[2] + t[4]) / (1 + w), r1y = (w * t[3] + t[5]) / (1 + w);
+  /* (a + w b)/(1 + w) = (a v + b)/(v + 1), v = 1/w: w b must not overflow */
+  double v = w > W_BIG ? 1 / w : 1, s = w > W_BIG ? 1 : w;
+  double l1x = (t[0] * v + s * t[2]) / (v + s);
+  double l1y = (t[1] * v + s * t[3]) / (v + s);
+  double r1x = (s * t[2] + t[4] * v) / (v + s);
+  double r1y = (s * t[3] + t[5] * v) / (v + s);
   double mx = (l1x + r1x) / 2, my = (l1y + r1y) / 2;
   if (!right) {
     out[0] = t[0]; out[1] = t[1]; out[2] = l1x; out[3] = l1y;

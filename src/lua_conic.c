@@ -179,7 +179,10 @@ static int finish(lua_State *L, int optarg, const double *c, int n,
   return 3;
 }
 
-/* arclen.conic(p0, p1, p2, w [, opts]) -> cubics, bound, level */
+/* arclen.conic(p0, p1, p2, w [, opts]) -> cubics, bound, level.  Any
+** finite w > 0: w -> inf is the control polygon (a degenerate hyperbola),
+** w -> 0 the chord, and the subdivision of eq. (4) brings the pieces'
+** weights near 1; the level-0 bound is inf when ||g|| ~ w^2 overflows. */
 static int l_conic(lua_State *L) {
   double c[7];
   conic_opts co;
@@ -346,7 +349,9 @@ static int l_ellipse_conics(lua_State *L) {
   return 1;
 }
 
-/* arclen.conic_scheme(name, w) -> lambda, A, B, max|g| (Props 2, 13). */
+/* arclen.conic_scheme(name, w) -> lambda, A, B, max|g| (Props 2, 13),
+** for any finite w > 0; A, B, max|g| grow like w^2 and are +-inf beyond
+** w ~ 1e154 (never NaN). */
 static int l_conic_scheme(lua_State *L) {
   const char *name = luaL_checkstring(L, 1);
   int s = arclen_conic_scheme(name);
