@@ -312,11 +312,81 @@ static int split_groups(const poly *P, int lo, int *gs) {
   return ng;
 }
 
+/* ---- origin shift for clustered roots ----------------------------------
+** Roots clustered far from 0 (10000, 10001, 10010, 10100: Algorithm 1010's
+** case 17) are ill-determined by the coefficients in x, but well-separated
+** in y = x - s about their centroid s = -c[d-1] / (d c[d]) (Algorithm
+** 1010's shift).  The coefficients of p(y + s) come from a Taylor shift
+** in double-double, so the only new error is one rounding of each. */
+
+/* a + b = s + *e exactly (Knuth's TwoSum) */
+static double two_sum(double a, double b, double *e) {
+  double s = a + b, z = s - a;
+  *e = (a - (s - z)) + (b - z);
+  return s;
+}
+
+/* b[0..d] := coefficients of p(y + s) for p(x) = sum b[j] x^j, by the
+** repeated synthetic division b[j] += s b[j+1] (j = d-1..i, i = 0..d-1),
+** each step in double-double: hi + lo, lo from fma and TwoSum. */
+static void taylor_shift(double *b, int d, double s) {
+  double lo[5] = {0, 0, 0, 0, 0};
+  int i, j;
+  for (i = 0; i < d; i++)
+    for (j = d - 1; j >= i; j--) {
+      double ph = s * b[j + 1], pe = fma(s, b[j + 1], -ph) + s * lo[j + 1];
+      double e, h = two_sum(b[j], ph, &e);
+      e += lo[j] + pe;
+      b[j] = h + e;                 /* renormalise (|e| <= ulp(h)) */
+      lo[j] = e - (b[j] - h);
+    }
+}
+
+/* The largest root magnitude of the monic b (b[d] = 1) by its Newton
+** polygon: max over k of |b[d-k]|^(1/k), within a factor 2d of it. */
+static double root_radius(const double *b, int d) {
+  double r = 0;
+  int k;
+  for (k = 1; k <= d; k++) r = fmax(r, pow(fabs(b[d - k]), 1.0 / k));
+  return r;
+}
+
+/* Shift when the roots' radius about the centroid (root_radius) is below
+** |s| / SHIFT_GAIN: the shifted roots' sizes, hence the perturbation bound
+** sum |b_k| |y|^k, drop by about that factor.  Measured: case 17 of
+** spec/data/roots1010.tsv (radius 59 about s = 10028) is shifted for gains
+** up to 169; both roots specs pass for every gain from 1 to 128. */
+#ifndef SHIFT_GAIN
+#define SHIFT_GAIN 2
+#endif
+
+static int poly_roots_(const double *p, int n, double *re, double *im,
+                       int may_shift);
+
+/* The d roots (in the scale 2^E) of the monic c[0..d], c[d] = 1, solved
+** about the centroid if that pays (see SHIFT_GAIN); 0 if not shifted. */
+static int shifted_roots(const double *c, int d, int E, double *re,
+                         double *im) {
+  double b[5], s = -c[d - 1] / d;
+  int j, k;
+  if (d < 3 || s == 0) return 0;
+  for (j = 0; j <= d; j++) b[j] = c[j];
+  taylor_shift(b, d, s);
+  if (!(root_radius(b, d) * SHIFT_GAIN < fabs(s))) return 0;
+  poly_roots_(b, d, re, im, 0);
+  for (k = 0; k < d; k++) {
+    re[k] = ldexp(re[k] + s, E); im[k] = ldexp(im[k], E);
+  }
+  return 1;
+}
+
 /* All n roots of the polynomial p (by power, p[n] != 0, finite), each
 ** group of the Newton polygon solved alone in its own scale, then polished
 ** on the whole polynomial in that scale.  A root beyond the double range
-** comes out as +-inf in re or im: the honest answer, never NaN. */
-static int poly_roots(const double *p, int n, double *re, double *im) {
+** comes out as +-inf in re or im: the honest answer, never NaN.  One group
+** with clustered roots is solved about its centroid (may_shift, once). */
+static int poly_roots_(const double *p, int n, double *re, double *im,
+                       int may_shift) {
   poly P;
   int lo = 0, gs[5], ng, g, k, j, cnt = 0;
   poly_init(&P, p, n);
@@ -325,6 +395,12 @@ static int poly_roots(const double *p, int n, double *re, double *im) {
   }
   if (lo == n) return cnt;
   ng = split_groups(&P, lo, gs);
+  if (ng == 1 && may_shift) {
+    double c[5];
+    int E = group_scale(&P, lo, n);
+    for (j = lo; j <= n; j++) c[j - lo] = scaled(&P, j, n, E);
+    if (shifted_roots(c, n - lo, E, re + cnt, im + cnt)) return n;
+  }
   for (g = 0; g < ng; g++) {
     int a = gs[g], b = gs[g + 1], d = b - a, E = group_scale(&P, a, b);
     double m[4], c[5];
@@ -338,6 +414,10 @@ static int poly_roots(const double *p, int n, double *re, double *im) {
     cnt += d;
   }
   return cnt;
+}
+
+static int poly_roots(const double *p, int n, double *re, double *im) {
+  return poly_roots_(p, n, re, im, 1);
 }
 
 static int all_finite(const double *a, int n) {
