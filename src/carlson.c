@@ -201,6 +201,27 @@ double arclen_rc(double x, double y) {
   return sqrt(x / (x - y)) * rc_pos(x - y, -y);
 }
 
+static double rc_pos(double x, double y);
+
+/* R_J's lambda_m involves x, y, z only, so p_m - x_m = 4^-m (p - x): for p
+** far above x, y, z the duplication closes the gap only by 4 per step and
+** C95's stopping test needs log4(p / x) of them (about 500 for
+** rj(1, 2, 3, 1e300); the cap of 100 left the series at X ~ 1:
+** rj(1, 2, 3, 2^500) was 2.7e-195 for 6.7e-151).  Once x, y, z agree to
+** RJ_SETTLED relative, the rest is R_J(mu, mu, mu, p_m) with mu their mean
+** (R_J is symmetric in x, y, z, so the first-order error vanishes: what is
+** left is O(RJ_SETTLED^2) = 2^-80), in closed form (DLMF 19.20.7 with
+** x = y, R_C(mu, mu) = mu^-1/2):
+**   R_J(mu, mu, mu, p) = 3 (mu^-1/2 - R_C(mu, p)) / (p - mu).
+** For p >= RJ_FAR mu the subtraction loses under 1.1x: R_C(mu, 256 mu)
+** = acos(1/16) / sqrt(255 mu) = 0.094 mu^-1/2. */
+#define RJ_SETTLED 0x1p-40
+#define RJ_FAR 256
+
+static double rj_equal(double mu, double p) {
+  return 3 * (1 / sqrt(mu) - rc_pos(mu, p)) / (p - mu);
+}
+
 /* C95 Algorithm 3 (R_J); x, y, z >= 0 with at most one zero, p > 0. */
 static double rj_dup(double x, double y, double z, double p) {
   double a0 = (x + y + z + 2 * p) / 5, a = a0, x0 = x, y0 = y, z0 = z;
@@ -209,15 +230,19 @@ static double rj_dup(double x, double y, double z, double p) {
   double fourn = 1, sum = 0, dx, dy, dz, dp, e2, e3, xyz;
   int m;
   for (m = 0; m < DUP_MAX && q * fourn >= fabs(a); m++) {
-    double sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);
-    double lam = sx * sy + sx * sz + sy * sz;
-    double d = (sp + sx) * (sp + sy) * (sp + sz);
+    double mu = (x + y + z) / 3, sx, sy, sz, sp, lam, d, ope;
+    if (p >= RJ_FAR * mu
+        && max3(fabs(x - mu), fabs(y - mu), fabs(z - mu)) <= RJ_SETTLED * mu)
+      return fourn * rj_equal(mu, p) + 6 * sum;
+    sx = sqrt(x); sy = sqrt(y); sz = sqrt(z); sp = sqrt(p);
+    lam = sx * sy + sx * sz + sy * sz;
+    d = (sp + sx) * (sp + sy) * (sp + sz);
     /* R_C(1, 1 + e_m) with e_m = (p-x)(p-y)(p-z)/d_m^2.  When p is much
     ** smaller than x, y, z (every near-cusp Bezier curve) e_m is near -1
     ** and 1 + e_m cancels; expanding (p-x)(p-y)(p-z) = d_m prod(sp - s.)
     ** gives 1 + e_m = 2 sqrt(p_m)(p_m + lambda_m)/d_m without the
     ** subtraction.  Used always: it measured better for every e_m. */
-    double ope = 2 * sp * (p + lam) / d;
+    ope = 2 * sp * (p + lam) / d;
     sum += fourn / d * rc_dup(1, ope);
     x = (x + lam) / 4; y = (y + lam) / 4; z = (z + lam) / 4;
     p = (p + lam) / 4;
@@ -245,19 +270,15 @@ static double rj_pos(double x, double y, double z, double p) {
                       ldexp(p, 2 * k)), 3 * k);
 }
 
-double arclen_rj(double x, double y, double z, double p) {
+/* R_J's Cauchy principal value, p < 0 (DLMF 19.20.14, C95 (2.22)), written
+** with x <= y <= z, q = -p > 0 and r = z - (z - x)(z - y)/(z + q)
+** = (z(x + q) + y(z - x))/(z + q) > 0 (the sum form does not cancel):
+** (z + q) R_J(x,y,z,-q) = (r - z) R_J(x,y,z,r) - 3 R_F(x,y,z)
+**                         + 3 sqrt(xyz/(xy + rq)) R_C(xy + rq, rq).
+** (checked against mpmath's principal value, tools/ref_carlson.py)
+** Arguments up to 2^501: the products stay below 2^1002. */
+static double rj_pv(double x, double y, double z, double p) {
   double t, q, r, rq, v;
-  int zeros = (x == 0) + (y == 0) + (z == 0);
-  if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || zeros > 1 || !(p == p)
-      || fabs(p) == HUGE_VAL || p == 0)
-    return NAN;
-  if (p > 0) return rj_pos(x, y, z, p);
-  /* Cauchy principal value (DLMF 19.20.14, C95 (2.22)), written with
-  ** x <= y <= z, q = -p > 0 and r = z - (z - x)(z - y)/(z + q)
-  ** = (z(x + q) + y(z - x))/(z + q) > 0 (the sum form does not cancel):
-  ** (z + q) R_J(x,y,z,-q) = (r - z) R_J(x,y,z,r) - 3 R_F(x,y,z)
-  **                         + 3 sqrt(xyz/(xy + rq)) R_C(xy + rq, rq).
-  ** (checked against mpmath's principal value, tools/ref_carlson.py) */
   if (x > y) { t = x; x = y; y = t; }
   if (y > z) { t = y; y = z; z = t; }
   if (x > y) { t = x; x = y; y = t; }
@@ -268,6 +289,31 @@ double arclen_rj(double x, double y, double z, double p) {
   v = -t * rj_pos(x, y, z, r) - 3 * arclen_rf(x, y, z);
   if (x > 0) v += 3 * sqrt(x * y * z / (x * y + rq)) * rc_pos(x * y + rq, rq);
   return v / (z + q);
+}
+
+double arclen_rj(double x, double y, double z, double p) {
+  double m;
+  int e, k;
+  if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || !(p == p)
+      || fabs(p) == HUGE_VAL || p == 0)
+    return NAN;
+  if (p > 0) {
+    if ((x == 0) + (y == 0) + (z == 0) > 1) return NAN;
+    return rj_pos(x, y, z, p);
+  }
+  /* The principal value's products overflow beyond 2^512 (rj(1, 2, 3,
+  ** -1e308) gave NaN): R_J is homogeneous of degree -3/2 (DLMF 19.20.12
+  ** ff.), R_J(v) = 8^-k R_J(4^-k v), exact in binary, so the largest
+  ** argument is brought under 2^501 first; the value (about -3 R_F / |p|,
+  ** -2.2e-308 at (1, 2, 3, -1e308)) is representable.  A second argument
+  ** flushed to 0 by that is a domain error (NaN). */
+  m = fmax(max3(x, y, z), -p);
+  frexp(m, &e);
+  k = e > 500 ? (e - 500 + 1) / 2 : 0;
+  x = ldexp(x, -2 * k); y = ldexp(y, -2 * k); z = ldexp(z, -2 * k);
+  p = ldexp(p, -2 * k);
+  if ((x == 0) + (y == 0) + (z == 0) > 1 || p == 0) return NAN;
+  return ldexp(rj_pv(x, y, z, p), -3 * k);
 }
 
 /* R_G by DLMF 19.21.10 with z the middle argument, so that

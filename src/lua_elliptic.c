@@ -63,29 +63,18 @@ static int l_rc(lua_State *L) {
   return push_result(L, arclen_rc(v[0], v[1]));
 }
 
-/* R_J's principal value (p < 0) forms products of two arguments, which
-** overflow beyond 2^512 (rj(1, 2, 3, -1e308) gave NaN).  R_J is homogeneous
-** of degree -3/2 (DLMF 19.20.12 ff.): R_J(x,y,z,p) = 8^-k R_J(4^-k x, ...),
-** exact in binary, so the arguments are brought under 2^500 first; the value
-** (about -3 R_F(x,y,z) / |p|, -2.2e-308 at (1, 2, 3, -1e308)) is
-** representable.  If the scaling flushes a second argument to 0 the spread
-** is beyond what the reduction serves: a named error. */
+/* arclen_rj scales a principal value's arguments under 2^501 itself
+** (R_J's homogeneity); NaN is left only when that flushes a second
+** argument to 0: a spread beyond what the reduction serves. */
 static int l_rj(lua_State *L) {
-  double v[4], m, r;
-  int e, k = 0, i;
+  double v[4], r;
   check_args(L, v, 4, 1);     /* p < 0: Cauchy principal value */
   at_most_one_zero(L, v, 3);
-  m = fmax(fmax(v[0], v[1]), fmax(v[2], fabs(v[3])));
-  frexp(m, &e);
-  if (v[3] < 0 && e > 500) {
-    k = (e - 500 + 1) / 2;
-    for (i = 0; i < 4; i++) v[i] = ldexp(v[i], -2 * k);
-  }
   r = arclen_rj(v[0], v[1], v[2], v[3]);
   if (r != r)
     luaL_argerror(L, 4, "p's principal value (p < 0) is out of reach: "
                         "|p| and x, y, z spread beyond the double range");
-  lua_pushnumber(L, ldexp(r, -3 * k));
+  lua_pushnumber(L, r);
   return 1;
 }
 
