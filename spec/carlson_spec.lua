@@ -75,6 +75,32 @@ describe("carlson", function()
     end
   end
 
+  -- One argument from 1e-300 to 1e300 among O(1) ones, and vice versa
+  -- (tools/ref_carlson_extreme.py, quadrature over log t).  The same
+  -- duplication runs on exactly scaled arguments (powers of 4), and R_J's
+  -- closed-form tail for p far above x, y, z (R_J(mu,mu,mu,p), DLMF
+  -- 19.20.7) loses at most 1.1x in its subtraction, so the bars are the
+  -- random rows' ones: 4 eps, principal values 8 eps times the condition.
+  -- A reference below the double range (R_D ~ 1e-447) must come out 0.
+  local extreme = H.tsv("carlson_extreme.tsv")
+  for _, kind in ipairs({"extreme", "pv"}) do
+    local limit = kind == "pv" and 8 or 4
+    it(kind .. " ratios up to 1e600 (rj(1, 2, 3, 2^500), rj(1, 2, 3, 1e300), ...): max error <= "
+       .. limit .. (kind == "pv" and " eps times the condition" or " eps"), function()
+      local n, worst = 0, H.worst()
+      for _, row in ipairs(extreme) do
+        if row.kind == kind then
+          n = n + 1
+          local a = args(row)
+          local e = err_eps(R[row.fn](table.unpack(a)), row)
+          worst:add(e / tonumber(row.cond), row.fn .. "(" .. table.concat(a, ", ") .. ")")
+        end
+      end
+      assert.is_true(n >= (kind == "pv" and 36 or 200), "too few rows: " .. n)
+      assert.is_true(worst.err <= limit, ("worst %s: %.3g eps"):format(tostring(worst.id), worst.err))
+    end)
+  end
+
   it("zero arguments with a finite integral", function()
     assert.is_true(math.abs(R.rc(0, 0.25) - math.pi) <= 2 * EPS * math.pi)
     assert.are.equal(0, R.rc(0, -3))          -- principal value at x = 0

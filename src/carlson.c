@@ -276,24 +276,27 @@ static double rj_pos(double x, double y, double z, double p) {
 ** (z + q) R_J(x,y,z,-q) = (r - z) R_J(x,y,z,r) - 3 R_F(x,y,z)
 **                         + 3 sqrt(xyz/(xy + rq)) R_C(xy + rq, rq).
 ** (checked against mpmath's principal value, tools/ref_carlson.py)
-** Arguments up to 2^501: the products stay below 2^1002. */
+** The arguments come centred on 1 (arclen_rj), all within 2^+-500 unless
+** they spread beyond 2^1000, so products of two stay in range; xyz is
+** formed as z (xy / (xy + rq)): x, y, z of 1e200 with p = -1 gave inf. */
 static double rj_pv(double x, double y, double z, double p) {
-  double t, q, r, rq, v;
+  double t, q, r, v;
   if (x > y) { t = x; x = y; y = t; }
   if (y > z) { t = y; y = z; z = t; }
   if (x > y) { t = x; x = y; y = t; }
   q = -p;
   t = (z - x) * (z - y) / (z + q);       /* z - r */
   r = (z * (x + q) + y * (z - x)) / (z + q);
-  rq = r * q;
   v = -t * rj_pos(x, y, z, r) - 3 * arclen_rf(x, y, z);
-  if (x > 0) v += 3 * sqrt(x * y * z / (x * y + rq)) * rc_pos(x * y + rq, rq);
+  if (x > 0) {
+    double xy = x * y, w = xy + r * q;
+    v += 3 * sqrt(z * (xy / w)) * rc_pos(w, r * q);
+  }
   return v / (z + q);
 }
 
 double arclen_rj(double x, double y, double z, double p) {
-  double m;
-  int e, k;
+  int k;
   if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || !(p == p)
       || fabs(p) == HUGE_VAL || p == 0)
     return NAN;
@@ -302,18 +305,20 @@ double arclen_rj(double x, double y, double z, double p) {
     return rj_pos(x, y, z, p);
   }
   /* The principal value's products overflow beyond 2^512 (rj(1, 2, 3,
-  ** -1e308) gave NaN): R_J is homogeneous of degree -3/2 (DLMF 19.20.12
-  ** ff.), R_J(v) = 8^-k R_J(4^-k v), exact in binary, so the largest
-  ** argument is brought under 2^501 first; the value (about -3 R_F / |p|,
-  ** -2.2e-308 at (1, 2, 3, -1e308)) is representable.  A second argument
-  ** flushed to 0 by that is a domain error (NaN). */
-  m = fmax(max3(x, y, z), -p);
-  frexp(m, &e);
-  k = e > 500 ? (e - 500 + 1) / 2 : 0;
-  x = ldexp(x, -2 * k); y = ldexp(y, -2 * k); z = ldexp(z, -2 * k);
-  p = ldexp(p, -2 * k);
+  ** -1e308) gave NaN) and its R_J(x, y, z, r) for x, y, z of 1e-300 (a
+  ** NaN from 0 * inf): R_J is homogeneous of degree -3/2 (DLMF 19.20.12
+  ** ff.), R_J(v) = 8^k R_J(4^k v), exact in binary, so the arguments are
+  ** centred on 1 first as for p > 0 (scale_exp); the value (about
+  ** -3 R_F / |p|, -2.2e-308 at (1, 2, 3, -1e308)) is representable.  A
+  ** second argument flushed to 0 by that is a domain error (NaN). */
+  {
+    double v[4] = {x, y, z, -p};
+    k = scale_exp(v, 4);
+  }
+  x = ldexp(x, 2 * k); y = ldexp(y, 2 * k); z = ldexp(z, 2 * k);
+  p = ldexp(p, 2 * k);
   if ((x == 0) + (y == 0) + (z == 0) > 1 || p == 0) return NAN;
-  return ldexp(rj_pv(x, y, z, p), -3 * k);
+  return ldexp(rj_pv(x, y, z, p), 3 * k);
 }
 
 /* R_G by DLMF 19.21.10 with z the middle argument, so that
