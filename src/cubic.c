@@ -121,16 +121,16 @@ void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h) {
     if (v0 > big) big = v0;
   }
   if (big == 0) {
-    h->scale = 1;
+    h->exp = 0;
     h->zero = 1;
     return;
   }
   /* Scale by a power of two so that products cannot over/underflow and
   ** every scaled value is exact (frexp gives big = m 2^e, 0.5 <= m < 1). */
   frexp(big, &e);
-  h->scale = ldexp(1.0, e);
+  h->exp = e;
   if (e > -1000 && e < 1000) {      /* 2^-e is a normal double: multiply */
-    double inv = 1 / h->scale;
+    double inv = ldexp(1.0, -e);
     for (k = 0; k < dim; k++) {
       h->a2[k] *= inv;
       h->a1[k] *= inv;
@@ -143,7 +143,8 @@ void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h) {
       h->a0[k] = ldexp(h->a0[k], -e);
     }
   }
-  h->scale /= pre;    /* may overflow to inf: so does the length */
+  if (pre != 1) h->exp += 64;       /* ldexp(len, exp) overflows only if */
+                                    /* the length itself does */
 }
 
 /* Chord |z(b) - z(a)| in scaled units, from the antiderivative of the
@@ -229,7 +230,7 @@ int arclen_cubic_roots01(const double p[4], double roots[3]) {
 int arclen_critical_points(const double *c, int dim, double roots[3]) {
   arclen_hodo h;
   arclen_hodo_scaled(c, dim, &h);
-  if (h.zero || !isfinite(h.scale)) return 0;
+  if (h.zero) return 0;
   return arclen_hodo_critical(&h, roots);
 }
 

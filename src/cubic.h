@@ -8,12 +8,12 @@
 
 #include <math.h>
 
-/* z'(t) / scale = a2 t^2 + a1 t + a0, with scale a power of two chosen so
+/* z'(t) / 2^exp = a2 t^2 + a1 t + a0, with the power of two chosen so
 ** that the largest coefficient lies in [0.5, 1). */
 typedef struct arclen_hodo {
   int dim;
   int zero;                 /* the hodograph vanishes: a point */
-  double scale;
+  int exp;                  /* results in curve units: ldexp(x, exp) */
   double a2[3], a1[3], a0[3];
 } arclen_hodo;
 

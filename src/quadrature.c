@@ -271,12 +271,12 @@ static int check_args(const double *c, int dim, const arclen_opts *o) {
   return ARCLEN_OK;
 }
 
-static void fill_info(arclen_info *info, const integrator *in, double scale) {
+static void fill_info(arclen_info *info, const integrator *in, int exp) {
   if (!info) return;
   info->evals = in->evals;
   info->pieces = in->pieces;
   info->depth = in->depth;
-  info->err = in->err * scale;
+  info->err = ldexp(in->err, exp);
   info->branch = NULL;
   info->calls = 0;
 }
@@ -298,12 +298,12 @@ int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
   } else if (!in.h.zero) {
     /* Zero chords between every pair of cuts but a moving point: the
     ** curve returns to where it was; bound L below by a coarse rule. */
-    in.lest = 0.5 * arclen_length_gl(c, dim, 8) / in.h.scale * in.width;
+    in.lest = 0.5 * apply_rule(&in.h, rule_at_least(8), 0.5, 0.5) * in.width;
     if (in.lest > 0)
       while (next_piece(&in, &pa, &pb, &piece, NULL)) sum += piece;
   }
-  *len = (o->t0 > o->t1 ? -sum : sum) * in.h.scale;
-  fill_info(info, &in, in.h.scale);
+  *len = ldexp(o->t0 > o->t1 ? -sum : sum, in.h.exp);
+  fill_info(info, &in, in.h.exp);
   return ARCLEN_OK;
 }
 
@@ -350,8 +350,8 @@ int arclen_time_gauss(const double *c, int dim, double s,
   in.want_err = info != NULL;
   if (in.h.zero) { *t = 1; return ARCLEN_OK; }
   if (!(in.lest > 0))
-    in.lest = 0.5 * arclen_length_gl(c, dim, 8) / in.h.scale;
-  goal = s / in.h.scale;
+    in.lest = 0.5 * apply_rule(&in.h, rule_at_least(8), 0.5, 0.5);
+  goal = ldexp(s, -in.h.exp);
   *t = 1;
   while (next_piece(&in, &pa, &pb, &piece, &r)) {
     if (cum + piece >= goal) {
@@ -362,7 +362,7 @@ int arclen_time_gauss(const double *c, int dim, double s,
     }
     cum += piece;
   }
-  fill_info(info, &in, in.h.scale);
+  fill_info(info, &in, in.h.exp);
   return ARCLEN_OK;
 }
 
@@ -370,7 +370,7 @@ double arclen_length_gl(const double *c, int dim, int n) {
   arclen_hodo h;
   arclen_hodo_scaled(c, dim, &h);
   if (h.zero) return 0;
-  return apply_rule(&h, rule_at_least(n), 0.5, 0.5) * h.scale;
+  return ldexp(apply_rule(&h, rule_at_least(n), 0.5, 0.5), h.exp);
 }
 
 /* ---- the plain API ---------------------------------------------------- */
