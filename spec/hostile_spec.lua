@@ -148,7 +148,7 @@ end
 
 local HOSTILE = {
   {"nil", nil}, {"a string", "x"}, {"a numeric string", "1"}, {"true", true},
-  {"an empty table", {}}, {"a function", print}, {"a coroutine", coroutine.create(print)},
+  {"an empty table", {}}, {"a function", print}, {"a coroutine", coroutine.create(function() end)},
   {"a file", io.stdout}, {"NaN", NAN}, {"inf", INF}, {"-inf", -INF},
   {"1e308", 1e308}, {"-1e308", -1e308}, {"a subnormal", 5e-324}, {"-0", -0.0},
   {"2^53+1", 2^53 + 1}, {"a nested table", {{}, {{}}}}, {"a table of NaN", {NAN, NAN, NAN, NAN, NAN, NAN, NAN, NAN}},
