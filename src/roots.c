@@ -34,7 +34,8 @@ int arclen_quadratic(double a2, double a1, double a0, double re[2],
   /* the discriminant with one rounding error: fma keeps a1^2's low bits */
   {
     double p = a1 * a1, pe = fma(a1, a1, -p);
-    double r = 4 * a2 * a0, re_ = fma(4 * a2, a0, -r);
+    /* 4 (a2 a0), not (4 a2) a0: a2 near DBL_MAX with a0 = 0 gave inf * 0 */
+    double t = a2 * a0, r = 4 * t, re_ = 4 * fma(a2, a0, -t);
     d = (p - r) + (pe - re_);
   }
   if (d >= 0) {
