@@ -25,10 +25,18 @@ int arclen_quadratic(double a2, double a1, double a0, double re[2],
   /* The roots do not change when every coefficient is scaled by a power of
   ** two (exact): with m ~ 1, a1^2 and a2 a0 neither underflow (subnormal
   ** coefficients gave a root 0.25 for +-2.9e-143i) nor overflow (found by
-  ** fuzz/fuzz_roots); a2 and a0 stay finite since |a2 a0| <= m^2. */
+  ** fuzz/fuzz_roots). */
+  if (a0 == 0) {               /* x (a2 x + a1): no discriminant needed */
+    re[0] = 0; re[1] = -a1 / a2;
+    im[0] = im[1] = 0;
+    return 2;
+  }
   if (m < 0x1p-450 || m > 0x1p450) {
     int e;
     frexp(m, &e);
+    /* ... but never so far that a2 or a0 overflows (a0 tiny, a2 = 47) */
+    e = e > ilogb(fmax(fabs(a2), fabs(a0))) - 1020
+            ? e : ilogb(fmax(fabs(a2), fabs(a0))) - 1020;
     a2 = ldexp(a2, -e); a1 = ldexp(a1, -e); a0 = ldexp(a0, -e);
   }
   /* the discriminant with one rounding error: fma keeps a1^2's low bits */
