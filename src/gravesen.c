@@ -104,6 +104,11 @@ static int gravesen(const double *c, int dim, const arclen_opts *o,
   double big = 0.0;
   int sp = 0, depth = 0, i, capped = 0, ex = 0;
   if (dim != 2 && dim != 3) { *len = NAN; return ARCLEN_EDIM; }
+  if (t0 == t1) {          /* empty range: 0, as gauss (a cut-out point */
+    *len = 0.0;            /* of a far curve has rounding-sized legs) */
+    if (info) arclen_info_init(info);
+    return ARCLEN_OK;
+  }
   if (t0 > t1) { double w = t0; t0 = t1; t1 = w; sign = -1.0; }
   if (t0 != 0.0 || t1 != 1.0) {
     /* Cut the curve moved to P0 = 0: blossoming in absolute coordinates
