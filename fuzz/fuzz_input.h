@@ -161,6 +161,13 @@ static inline int fz_known_3d_issue(const double *c, int dim) {
     big = fmax(big, d);
     if (d > 0) small = fmin(small, d);
   }
+  /* and a stop (a zero leg) in 3D: the quartic's multiple root at the
+  ** stop is found to ~1e-4 only (gauss sub-ranges err 1e-12, elliptic
+  ** 1e-8; reported) */
+  for (i = 0; i < 3; i++)
+    if (c[3 * i] == c[3 * i + 3] && c[3 * i + 1] == c[3 * i + 4] &&
+        c[3 * i + 2] == c[3 * i + 5])
+      return 1;
   return big > 0 && small < ldexp(big, -200);
 #else
   (void)c; (void)dim;

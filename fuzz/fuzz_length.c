@@ -97,6 +97,14 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     ** loose tolerance keeps the fuzzer fast; termination at 1e-12 is the
     ** hostile spec's job. */
     if (slow_method(m->name) && o.rtol < 1e-9) o.rtol = 1e-9;
+#ifdef FUZZ_SKIP_KNOWN
+    /* Open issue (reported): elliptic in 3D on a curve with a zero leg
+    ** (a stop, e.g. P1 = P2 = P3) errs up to 1e-8 (collinear/cusp forms) */
+    if (dim == 3 && !strcmp(m->name, "elliptic") &&
+        (fz_dist(c, 3, 0, 1) == 0 || fz_dist(c, 3, 1, 2) == 0 ||
+         fz_dist(c, 3, 2, 3) == 0))
+      continue;
+#endif
     g = guarantee(m->name, o.rtol, steps);
     rc = m->length(c, dim, &o, &len, &info);
     if (rc == ARCLEN_EDIM) continue;
