@@ -162,6 +162,13 @@ describe("sub-ranges, splitting and geometry", function()
       arclen.length({{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 0, 0}}))
     assert.are.equal(arclen.length(c3), arclen.length(0, 0, 0, 10, 0, 0, 10, 10, 0, 0, 0, 0))
   end)
+  it("3D stops with components of very different sizes (found by fuzz_length)", function()
+    -- x runs 0 -> -1 and back to 0 (a stop at t = 1/2 in x), z lifts it by
+    -- 1e-154 or 1e-80: the length is 1.5 (and 0.87 up to t = 0.7) to within
+    -- the size of the lift
+    assert.is_true(H.relerr(arclen.length({0, 0, 0, -1, 0, 0, -1, 0, 0, 0, 1e-154, 0}, {tol = 1e-15}), 1.5) <= 1e-14)
+    assert.is_true(H.relerr(arclen.length({0, 0, 0, -1, 0, 0, -1, 0, 0, 0, 1e-80, 0}, {t1 = 0.7}), 0.87) <= 1e-12)
+  end)
   it("critical points are the speed's extrema", function()
     local cr = arclen.critical({0, 0, 10, 10, 0, 10, 10, 0})
     assert.are.equal(1, #cr)

@@ -10,6 +10,7 @@
 #include <math.h>
 #include <string.h>
 
+#include "arclen.h"
 #include "cubic.h"
 
 /* A computed imaginary part below this relative size is rounding noise:
@@ -80,46 +81,51 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
   }
 }
 
-/* Aberth-Ehrlich iteration for the roots of a monic real polynomial of
-** degree n <= 4 (coefficients c[0..n-1] of t^0..t^(n-1)).  Converges
-** cubically to simple roots, linearly to multiple ones; capped. */
-static void aberth(const double *c, int n, double complex *z) {
-  double radius = 0;
-  int i, j, it;
-  for (i = 0; i < n; i++) radius = fmax(radius, pow(fabs(c[i]), 1.0 / (n - i)));
-  radius = 2 * radius + 1e-300;   /* Fujiwara's bound: every root lies inside */
-  for (i = 0; i < n; i++)          /* off-axis start, avoiding symmetry */
-    z[i] = radius * cexp(I * (TWO_PI * i / n + 0.4));
-  for (it = 0; it < 200; it++) {
-    double change = 0;
-    for (i = 0; i < n; i++) {
-      double complex p = 1, dp = 0, s = 0, w;
-      for (j = n - 1; j >= 0; j--) {     /* Horner for p and p' */
-        dp = dp * z[i] + p;
-        p = p * z[i] + c[j];
-      }
-      if (p == 0) continue;
-      for (j = 0; j < n; j++)
-        if (j != i) s += 1 / (z[i] - z[j]);
-      w = (p / dp) / (1 - (p / dp) * s);
-      if (!isfinite(creal(w)) || !isfinite(cimag(w))) continue;
-      z[i] -= w;
-      change = fmax(change, cabs(w) / (cabs(z[i]) + 1e-300));
+/* 3D: Q = |a2|^2 t^4 + 2 a2.a1 t^3 + (|a1|^2 + 2 a2.a0) t^2 + 2 a1.a0 t + |a0|^2
+** has no complex factorisation; its roots come from the quartic solver
+** (roots.c: scaled, split on the Newton polygon, polished -- components of
+** very different sizes put the roots in groups far apart).  They are
+** matched into conjugate pairs by closeness of (re, |im|): each root is
+** paired with the nearest unused root's conjugate. */
+/* A root of Q near the real axis is a near-double root: from Q's
+** coefficients its position is only good to ~sqrt(eps).  Read it off the
+** hodograph instead: Newton on Q'/2 = h.h' finds the speed's minimum t*,
+** and there Q(t) ~ Q(t*) + |h'|^2 (t - t*)^2, so the branch points sit at
+** t* +- i |h(t*)| / |h'(t*)| (to first order, exact enough to tell a cusp
+** from a near-cusp of 1e-9). */
+static double complex near_cusp(const arclen_hodo *h, double complex z) {
+  double t = creal(z), hv[3], d1[3], d2[3], g, dg, hh, dd;
+  int it, k;
+  if (!(fabs(cimag(z)) < 1e-3 * (1 + fabs(t))) || !(fabs(t) < 1e6)) return z;
+  for (it = 0; it < 20; it++) {
+    g = dg = 0;
+    for (k = 0; k < 3; k++) {
+      hv[k] = (h->a2[k] * t + h->a1[k]) * t + h->a0[k];
+      d1[k] = 2 * h->a2[k] * t + h->a1[k];
+      d2[k] = 2 * h->a2[k];
+      g += hv[k] * d1[k];
+      dg += d1[k] * d1[k] + hv[k] * d2[k];
     }
-    if (change < 1e-16) break;
+    if (!(dg > 0)) return z;
+    t -= g / dg;
+    if (fabs(g / dg) <= 1e-16 * (1 + fabs(t))) break;
   }
+  hh = dd = 0;
+  for (k = 0; k < 3; k++) {
+    hv[k] = (h->a2[k] * t + h->a1[k]) * t + h->a0[k];
+    d1[k] = 2 * h->a2[k] * t + h->a1[k];
+    hh += hv[k] * hv[k];
+    dd += d1[k] * d1[k];
+  }
+  if (!(dd > 0) || !(fabs(t - creal(z)) < 1e-3 * (1 + fabs(t)))) return z;
+  return t + I * sqrt(hh / dd);
 }
 
-/* 3D: Q = |a2|^2 t^4 + 2 a2.a1 t^3 + (|a1|^2 + 2 a2.a0) t^2 + 2 a1.a0 t + |a0|^2
-** has no complex factorisation; its roots come from Aberth's iteration.
-** They are matched into conjugate pairs by closeness of (re, |im|): each
-** root is paired with the nearest unused root whose imaginary part has the
-** other sign or is near zero. */
 static void branch3(const arclen_hodo *h, arclen_branch *b) {
-  double q[5] = {0, 0, 0, 0, 0}, m[4];
+  double q[5] = {0, 0, 0, 0, 0}, re[4], im[4];
   double complex z[4];
   int used[4] = {0, 0, 0, 0};
-  int k, j, deg = 4;
+  int k, j, n, deg = 4;
   for (k = 0; k < 3; k++) {
     q[4] += h->a2[k] * h->a2[k];
     q[3] += 2 * h->a2[k] * h->a1[k];
@@ -130,14 +136,14 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
   while (deg > 0 && q[deg] == 0) deg--;
   b->lead = sqrt(q[deg]);
   if (deg == 0) return;
-  for (k = 0; k < deg; k++) m[k] = q[k] / q[deg];
-  aberth(m, deg, z);
-  for (k = 0; k < deg; k++) {
+  n = arclen_quartic(q[4], q[3], q[2], q[1], q[0], re, im);
+  for (k = 0; k < n; k++) z[k] = re[k] + I * im[k];
+  for (k = 0; k < n; k++) {
     int best = -1;
     double bestd = HUGE_VAL;
     if (used[k]) continue;
     used[k] = 1;
-    for (j = 0; j < deg; j++) {
+    for (j = 0; j < n; j++) {
       double dist;
       if (used[j]) continue;
       dist = cabs(z[j] - conj(z[k]));
@@ -145,7 +151,8 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
     }
     if (best >= 0) used[best] = 1;
     /* the pair's mean: (z + conj(partner)) / 2 */
-    add_pair(b, best >= 0 ? (z[k] + conj(z[best])) / 2 : z[k], REAL_ROOT_RTOL3);
+    add_pair(b, near_cusp(h, best >= 0 ? (z[k] + conj(z[best])) / 2 : z[k]),
+             REAL_ROOT_RTOL3);
   }
 }
 
