@@ -76,12 +76,14 @@ bench: $(BUILD)/libarclen.a
 	$(MAKE) -C bench run
 
 install: $(MODULE)
-	mkdir -p $(DESTDIR)$(LIBDIR) $(DESTDIR)$(SHAREDIR)/arclen
+	mkdir -p $(DESTDIR)$(LIBDIR) $(DESTDIR)$(SHAREDIR)/arclen $(DESTDIR)$(PREFIX)/bin
 	cp $(MODULE) $(DESTDIR)$(LIBDIR)/arclen.so
 	cp lua/arclen/*.lua $(DESTDIR)$(SHAREDIR)/arclen/
+	sed '1s|.*|#!/usr/bin/env $(LUA_BIN)|' bin/arclen > $(DESTDIR)$(PREFIX)/bin/arclen
+	chmod 755 $(DESTDIR)$(PREFIX)/bin/arclen
 
 uninstall:
-	rm -f $(DESTDIR)$(LIBDIR)/arclen.so
+	rm -f $(DESTDIR)$(LIBDIR)/arclen.so $(DESTDIR)$(PREFIX)/bin/arclen
 	rm -rf $(DESTDIR)$(SHAREDIR)/arclen
 
 clean:
