@@ -803,3 +803,41 @@ describe("arclen.conicplot", function()
     assert.matches("^<svg", cp.levels_svg())
   end)
 end)
+
+describe("conic_length fuzz reproducers (chord <= length <= polygon)", function()
+  -- legs measured after scaling by a power of two: no overflow at 1e185
+  local function dist(a, b)
+    local x, y = a[1] - b[1], a[2] - b[2]
+    local m = math.max(math.abs(x), math.abs(y))
+    if m == 0 then return 0 end
+    return m * math.sqrt((x / m) ^ 2 + (y / m) ^ 2)
+  end
+  local cases = {
+    {"spread 1e185, w = 22", {0, -5.44e185}, {-1, 22}, {129, -1}, 22},
+    {"p0, p1 8 ulps apart, w = 1", {-1, -1.0000000000000018}, {-1, -1}, {10, 1}, 1},
+    {"p0, p1 8 ulps apart, w = 1.5e8", {-1, -1.0000000000000018}, {-1, -1}, {10, 1}, 1.5e8},
+    {"p1, p2 1 ulp apart, w = 1.5e8", {0, 0}, {1, 1}, {1.0000000000000002, 1}, 1.5e8},
+    {"p1, p2 1 ulp apart, w = 1e4", {0, 0}, {1, 1}, {1.0000000000000002, 1}, 1e4},
+    {"w = 1.5e8 isosceles", {0, 0}, {1, 1}, {2, 0}, 1.5e8},
+  }
+  for _, c in ipairs(cases) do
+    it(c[1], function()
+      local L = arclen.conic_length(c[2], c[3], c[4], c[5])
+      local chord, poly = dist(c[2], c[4]), dist(c[2], c[3]) + dist(c[3], c[4])
+      -- both bars at 1e-14 relative: the arc's own rounding (a few ulps),
+      -- the reported failures were 1e-9 to 100% off
+      assert.is_true(L >= chord * (1 - 1e-14), ("%.17g < chord %.17g"):format(L, chord))
+      assert.is_true(L <= poly * (1 + 1e-14), ("%.17g > polygon %.17g"):format(L, poly))
+    end)
+  end
+  it("w -> inf: the length tends to the polygon from below", function()
+    local poly = 2 * math.sqrt(2)
+    local prev = 0
+    for _, w in ipairs({1e2, 1e4, 1e6, 1.5e8}) do
+      local L = arclen.conic_length({0, 0}, {1, 1}, {2, 0}, w)
+      assert.is_true(L > prev and L <= poly, w .. ": " .. L)
+      prev = L
+    end
+    assert.is_true(poly - prev < 1e-7, "w = 1.5e8: " .. poly - prev)
+  end)
+end)

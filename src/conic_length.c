@@ -93,10 +93,12 @@ static double hyperbola_arc(double A, double B, double t0, double span,
   double t1 = t0 + span;
   double ch0 = cosh(t0), ch1 = cosh(t1), sh0 = sinh(t0), sh1 = sinh(t1);
   double s0 = tanh(t0), s1 = tanh(t1);
-  double r = A / B, g0, g1, d0, d1, num, bracket, sp, cp2, dp2, dterm;
+  double r = A / B, g0, g1, num, bracket, sp, cp2, dp2, q, dterm;
   if (span <= 0) return 0;
-  g0 = B * sqrt(1 + (r * s0) * (r * s0));
-  g1 = B * sqrt(1 + (r * s1) * (r * s1));
+  /* G = sqrt(B^2 + A^2 tanh^2) by hypot: A/B overflows its square for
+  ** very thin hyperbolas (points spread beyond 2^500) */
+  g0 = hypot(B, A * s0);
+  g1 = hypot(B, A * s1);
   /* G1 tan1 - G0 tan0 = sinh(span) sinh(t0+t1) [(A^2+B^2) -
   ** A^2/(ch0 ch1)^2] / (G1 sinh t1 + G0 sinh t0) */
   num = sinh(span) * sinh(t0 + t1) / (g1 * sh1 + g0 * sh0);
@@ -109,17 +111,26 @@ static double hyperbola_arc(double A, double B, double t0, double span,
     bracket = num * (B * B + A * A * (X * (X + 2) / (cc * cc)));
   }
   /* sin psi = (s1^2 - s0^2)/(s1 c0 D0 + s0 c1 D1), c = 1/cosh, D = G/B,
-  ** s1^2 - s0^2 = sinh(span) sinh(t0+t1)/(ch0 ch1)^2 */
-  d0 = g0 / B; d1 = g1 / B;
-  /* (s1 c0 D0 + s0 c1 D1) ch0 ch1 = s1 ch1 D0 + s0 ch0 D1 */
-  sp = (sinh(span) * sinh(t0 + t1) / (ch0 * ch1))
-       / (s1 * ch1 * d0 + s0 * ch0 * d1);
+  ** s1^2 - s0^2 = sinh(span) sinh(t0+t1)/(ch0 ch1)^2, and
+  ** (s1 c0 D0 + s0 c1 D1) ch0 ch1 B = s1 ch1 G0 + s0 ch0 G1 */
+  sp = (sinh(span) * sinh(t0 + t1) / (ch0 * ch1)) * B
+       / (s1 * ch1 * g0 + s0 * ch0 * g1);
   if (sp > 1) sp = 1;
   cp2 = (1 - sp) * (1 + sp);
-  dp2 = 1 + (r * sp) * (r * sp);
+  q = r * sp;
   *calls += 1;
-  dterm = sp * sp * sp / 3 * arclen_rd(cp2, dp2, 1) + s0 * s1 * sp;
-  return bracket - A * r * dterm;
+  if (q <= 0x1p500) {
+    dp2 = 1 + q * q;
+    dterm = A * r * (sp * sp * sp / 3 * arclen_rd(cp2, dp2, 1) + s0 * s1 * sp);
+  } else {
+    /* R_D is homogeneous of degree -3/2 (DLMF 19.16.2): scaled by 1/q
+    ** its arguments stay finite when q^2 would overflow;
+    ** A r sp^3 q^(-3/2) = A sp^(3/2) / sqrt(r) */
+    double lam = 1 / q;
+    dterm = A * sp * sqrt(sp / r) / 3 * arclen_rd(cp2 * lam, q + lam, lam)
+            + A * r * s0 * s1 * sp;
+  }
+  return bracket - dterm;
 }
 
 /* Parabola (w = 1): speed 2|a + t e|, a = p1 - p0, e = p0 - 2 p1 + p2;
@@ -142,6 +153,26 @@ static double parabola(double ax, double ay, double ex, double ey) {
   /* asinh(u1/k) - asinh(u0/k) = asinh((u1 + u0)/(u1 S0 + u0 S1)) */
   as = asinh((u1 + u0) / (u1 * S0 + u0 * S1));
   return q * (el + k * k * as);
+}
+
+/* U - V (mv[0..1]) and U + V (mv[2..3]) for U = al d, V = s h, al =
+** w/(1-w^2), s = |1-w^2|^(-1/2), with p0 at the origin.  For w >> 1, al
+** and -s agree to 1/(2 w^2) relative, so U - V formed directly loses all
+** digits when a leg is short; d + h = a = p1 - p0, d - h = -c = p1 - p2
+** and g = -(al + s) = 1/((w^2-1)(w + sqrt(w^2-1))) give it exactly. */
+static void umvm(double x1, double y1, double x2, double y2, double w,
+                 double onew, double s, double mv[4]) {
+  double al = w / onew, hx = x2 / 2, hy = y2 / 2;
+  if (w > 1) {
+    /* U - V = al a + g h,  U + V = -al c - g h */
+    double g = 1 / ((-onew) * (w + sqrt(-onew)));
+    mv[0] = al * x1 + g * hx; mv[1] = al * y1 + g * hy;
+    mv[2] = -al * (x2 - x1) - g * hx; mv[3] = -al * (y2 - y1) - g * hy;
+  } else {
+    double dx = x1 - hx, dy = y1 - hy;
+    mv[0] = dx * al - hx * s; mv[1] = dy * al - hy * s;
+    mv[2] = dx * al + hx * s; mv[3] = dy * al + hy * s;
+  }
 }
 
 int arclen_conic_length(const double p[6], double w, double *len,
@@ -170,7 +201,7 @@ int arclen_conic_length(const double p[6], double w, double *len,
     if (info != NULL) info->branch = "parabola";
   } else {
     double onew = (1 - w) * (1 + w);          /* 1 - w^2, exact enough */
-    double uv, pp, qq, A, B, cross, th0;
+    double uv, pp, qq, A, B, cross, th0, mv[4];
     hx = px2 / 2; hy = py2 / 2;
     dx = px1 - hx; dy = py1 - hy;
     sc = w / onew;
@@ -178,9 +209,13 @@ int arclen_conic_length(const double p[6], double w, double *len,
     sc = 1 / sqrt(fabs(onew));
     vx = hx * sc; vy = hy * sc;
     uv = ux * vx + uy * vy;
-    cross = fabs(ux * vy - uy * vx);
+    /* U x V = (w / (1 - w^2)) |1 - w^2|^(-1/2) d x h and d x h = a x c / 2
+    ** (a = p1 - p0, c = p2 - p1): the triangle's area, not a difference of
+    ** the nearly parallel U, V of a short leg */
+    cross = fabs((px1 * (py2 - py1) - py1 * (px2 - px1)) / 2 * (w / onew) * sc);
+    umvm(px1, py1, px2, py2, w, onew, sc, mv);
     /* |U|^2 - |V|^2 as (U - V).(U + V) */
-    qq = (ux - vx) * (ux + vx) + (uy - vy) * (uy + vy);
+    qq = mv[0] * mv[2] + mv[1] * mv[3];
     if (w < 1) {
       double a = acos(w), R;
       pp = (ux * ux + uy * uy + vx * vx + vy * vy) / 2;
@@ -193,7 +228,7 @@ int arclen_conic_length(const double p[6], double w, double *len,
       if (info != NULL) info->branch = "ellipse";
     } else {
       double b = asinh(sqrt((w - 1) * (w + 1)));
-      double um = hypot(ux - vx, uy - vy), up = hypot(ux + vx, uy + vy);
+      double um = hypot(mv[0], mv[1]), up = hypot(mv[2], mv[3]);
       pp = um * up;                                 /* A^2 + B^2 */
       if (qq >= 0) { A = sqrt((pp + qq) / 2); B = cross / A; }
       else { B = sqrt((pp - qq) / 2); A = cross / B; }
