@@ -87,6 +87,28 @@ describe("roots", function()
     assert.is_true(f[2][1] == 0 and math.abs(f[2][2] / 1e308 - 1) < 4e-16, tostring(f[2][2]))
   end)
 
+  it("quartic_factor's factors hold small roots beside a large one to their own scale", function()
+    -- 2^-15 x^4 + 2 x^3 + 3 x^2 + 3: one root near -65536, three of size 1;
+    -- a residual measured against the largest coefficient left the small
+    -- factor's roots at 1.5e-11 (fuzz/fuzz_roots).  Bar: the harness's
+    -- backward error, |p(z)| <= 4096 eps sum |a_k| |z|^k.
+    local a = {3, 0, 3, 2, 2^-15}           -- a[k+1] is the coefficient of x^k
+    local p1, q1, p2, q2 = arclen.quartic_factor(a[5], a[4], a[3], a[2], a[1])
+    for _, f in ipairs({{p1, q1}, {p2, q2}}) do
+      for _, z in ipairs(arclen.quadratic(1, f[1], f[2])) do
+        local x, y, pr, pi, s = z[1], z[2], 0, 0, 0
+        local az = math.sqrt(x * x + y * y)
+        for k = 5, 1, -1 do
+          pr, pi = pr * x - pi * y + a[k], pr * y + pi * x
+          s = s * az + math.abs(a[k])
+        end
+        assert.is_true(math.sqrt(pr * pr + pi * pi) <= 4096 * 2^-52 * s,
+          string.format("root %.17g%+.17gi: residual %g of scale %g", x, y,
+            math.sqrt(pr * pr + pi * pi), s))
+      end
+    end
+  end)
+
   it("lower degrees when leading coefficients vanish; bad input names the argument", function()
     assert.are.equal(1, #arclen.quadratic(0, 2, -4))
     assert.are.equal(2, #arclen.quartic(0, 0, 1, 0, -1))

@@ -131,10 +131,20 @@ static int solve4(double j[4][4], double *f) {
   return 1;
 }
 
+/* Componentwise backward error of the factorisation: each equation's
+** residual relative to the size of its terms, so a factor of small
+** coefficients (roots 2^-17 beside one of 1) is held to its own scale,
+** not to the largest coefficient's (found by fuzz/fuzz_roots). */
 static double resid_norm(const double *v, const double *m) {
-  double f[4];
+  double f[4], w[4], r = 0;
+  int k;
   factor_residual(v, m, f, NULL);
-  return fabs(f[0]) + fabs(f[1]) + fabs(f[2]) + fabs(f[3]);
+  w[0] = fabs(v[0]) + fabs(v[2]) + fabs(m[0]);
+  w[1] = fabs(v[1]) + fabs(v[3]) + fabs(v[0] * v[2]) + fabs(m[1]);
+  w[2] = fabs(v[0] * v[3]) + fabs(v[2] * v[1]) + fabs(m[2]);
+  w[3] = fabs(v[1] * v[3]) + fabs(m[3]);
+  for (k = 0; k < 4; k++) r += w[k] > 0 ? fabs(f[k]) / w[k] : fabs(f[k]);
+  return r;
 }
 
 /* Monic quartic x^4 + m0 x^3 + m1 x^2 + m2 x + m3 (scaled) into
