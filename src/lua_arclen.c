@@ -100,21 +100,30 @@ static double opt_number(lua_State *L, int arg, const char *key, double lo,
   return v;
 }
 
-void arclenL_checkopts(lua_State *L, int arg, arclenL_opts *lo) {
-  arclen_opts_init(&lo->o);
-  lo->method = arclen_find_method("gauss");
-  lo->info = 0;
-  if (lua_isnoneornil(L, arg)) return;
-  arg = arg < 0 ? lua_gettop(L) + arg + 1 : arg;
+int arclenL_optbegin(lua_State *L, int arg) {
+  if (lua_isnoneornil(L, arg)) return 0;
   if (lua_type(L, arg) != LUA_TTABLE)
     luaL_argerror(L, arg, lua_pushfstring(L,
         "options table expected, got %s", luaL_typename(L, arg)));
   lua_pushnil(L);
-  while (lua_next(L, arg)) {
-    const char *key;
-    if (lua_type(L, -2) != LUA_TSTRING)
-      luaL_argerror(L, arg, "option names must be strings");
-    key = lua_tostring(L, -2);
+  return 1;
+}
+
+const char *arclenL_optnext(lua_State *L, int arg) {
+  if (!lua_next(L, arg)) return NULL;
+  if (lua_type(L, -2) != LUA_TSTRING)
+    luaL_argerror(L, arg, "option names must be strings");
+  return lua_tostring(L, -2);
+}
+
+void arclenL_checkopts(lua_State *L, int arg, arclenL_opts *lo) {
+  const char *key;
+  arclen_opts_init(&lo->o);
+  lo->method = arclen_find_method("gauss");
+  lo->info = 0;
+  arg = arg < 0 ? lua_gettop(L) + arg + 1 : arg;
+  if (!arclenL_optbegin(L, arg)) return;
+  while ((key = arclenL_optnext(L, arg)) != NULL) {
     if (strcmp(key, "tol") == 0) {
       if (lua_type(L, -1) != LUA_TNUMBER)
         luaL_argerror(L, arg, "tol must be a number");

@@ -19,6 +19,13 @@ double arclenL_optfinite(lua_State *L, int arg, double def, const char *what);
 /* A relative tolerance in [ARCLEN_RTOL_MIN, ARCLEN_RTOL_MAX]. */
 double arclenL_checktol(lua_State *L, int arg, double v);
 
+/* Walking an options table: arclenL_optbegin returns 0 when arg is absent
+** or nil, raises unless it is a table, else starts the walk; then
+**   while ((key = arclenL_optnext(L, arg)) != NULL) { value at -1; pop it }
+** raises on a key that is not a string.  arg must be an absolute index. */
+int arclenL_optbegin(lua_State *L, int arg);
+const char *arclenL_optnext(lua_State *L, int arg);
+
 /* The common options table at arg (absent or nil: defaults):
 ** tol, method, t0, t1, steps, info.  Unknown keys are an error. */
 typedef struct arclenL_opts {

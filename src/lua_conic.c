@@ -21,16 +21,9 @@ static void check_conic_opts(lua_State *L, int arg, conic_opts *co) {
   co->scheme = ARCLEN_CONIC_MIDPOINT;
   co->level = 0;
   co->tol = 0;
-  if (lua_isnoneornil(L, arg)) return;
-  if (lua_type(L, arg) != LUA_TTABLE)
-    luaL_argerror(L, arg, lua_pushfstring(L, "options table expected, got %s",
-                                          luaL_typename(L, arg)));
-  lua_pushnil(L);
-  while (lua_next(L, arg)) {
-    const char *key;
-    if (lua_type(L, -2) != LUA_TSTRING)
-      luaL_argerror(L, arg, "option names must be strings");
-    key = lua_tostring(L, -2);
+  const char *key;
+  if (!arclenL_optbegin(L, arg)) return;
+  while ((key = arclenL_optnext(L, arg)) != NULL) {
     if (strcmp(key, "scheme") == 0) {
       if (lua_type(L, -1) != LUA_TSTRING)
         luaL_argerror(L, arg, "scheme must be a string");

@@ -49,16 +49,9 @@ static int opt_name(lua_State *L, int arg, const char *key,
 static void check_fit_opts(lua_State *L, int arg, arclen_fit_opts *o) {
   int has_tol = 0;
   arclen_fit_opts_init(o);
-  if (lua_isnoneornil(L, arg)) return;
-  if (lua_type(L, arg) != LUA_TTABLE)
-    luaL_argerror(L, arg, lua_pushfstring(L,
-        "options table expected, got %s", luaL_typename(L, arg)));
-  lua_pushnil(L);
-  while (lua_next(L, arg)) {
-    const char *key;
-    if (lua_type(L, -2) != LUA_TSTRING)
-      luaL_argerror(L, arg, "option names must be strings");
-    key = lua_tostring(L, -2);
+  const char *key;
+  if (!arclenL_optbegin(L, arg)) return;
+  while ((key = arclenL_optnext(L, arg)) != NULL) {
     if (strcmp(key, "method") == 0) {
       o->method = opt_name(L, arg, "method", method_names) == 1
                       ? ARCLEN_FIT_PAPER : ARCLEN_FIT_HERMITE;
