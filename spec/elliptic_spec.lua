@@ -91,6 +91,25 @@ describe("elliptic", function()
     assert.are.equal(a, -b)
   end)
 
+  -- 3D roots of Q = |z'|^2 that are multiple: Newton on Q pins them only to
+  -- ~sqrt(eps) (erred 6e-9); the pair is rebuilt from its centre (src/elliptic3d.c).
+  -- Closed forms, and the default method at tol 1e-15 on sub-ranges.
+  local function multiple(c, exact)
+    assert.is_true(H.relerr(elliptic(c, 0, 1), exact) <= 1e-13)
+    for _, r in ipairs({{0, 0.5}, {0.3, 0.9}, {0.9, 1}, {0.49, 0.51}}) do
+      local want = arclen.length(c, {tol = 1e-15, t0 = r[1], t1 = r[2]})
+      assert.is_true(H.relerr(elliptic(c, r[1], r[2]), want) <= 1e-13,
+        ("[%g, %g]"):format(r[1], r[2]))
+    end
+  end
+  it("3D double complex pair: Q = 18 (3t^2 - 3t + 1)^2, length 3/sqrt 2", function()
+    multiple({0, 0, 0, 0, -1, -1, -1, -1, 0, 0, 0, 0}, 3 / math.sqrt(2))
+  end)
+  it("3D quadruple real root: a collinear stop, length = its chord", function()
+    local h = 4.370938204228878
+    multiple({0, h, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, h)
+  end)
+
   it("a near-quadratic cubic takes the far-root series", function()
     -- degree-elevated quadratic (0,0) (3,6) (6,0), perturbed by 1e-6
     local c = {0, 0, 2, 4, 4, 4 + 1e-6, 6, 0}

@@ -15,6 +15,12 @@
 #include "elliptic.h"
 
 #define POLISH_CAP 80   /* linear phase inside a close pair, then quadratic */
+#define CENTRE_CAP 40   /* Newton on Q' at a simple root: quadratic */
+/* Polished roots closer than this (relative) are a cluster: Newton on Q
+** pins a double root only to ~sqrt(eps), so the pair is rebuilt from its
+** centre (the integral depends on the half-split d only through d^2,
+** which Q at the centre gives to full accuracy). */
+#define CLOSE_REL 1e-6
 
 /* Q(s) and Q'(s) from the hodograph, s complex. */
 static double complex q_eval(const double a2[3], const double a1[3],
@@ -42,6 +48,44 @@ static double complex polish(const double a2[3], const double a1[3],
     next = creal(next) + I * fabs(cimag(next));
     q = q_eval(a2, a1, a0, next, &dq);
     if (cabs(q) < bestq) { best = next; bestq = cabs(q); }
+    if (cabs(next - s) <= 0x1p-60 * (1 + cabs(next))) break;
+    s = next;
+  }
+  return best;
+}
+
+/* Q''(s); *d3 = Q'''(s) (Q'''' = 24 |A2|^2 is constant). */
+static double complex q_eval2(const double a2[3], const double a1[3],
+                              const double a0[3], double complex s,
+                              double complex *d3) {
+  double complex q2 = 0, q3 = 0;
+  int k;
+  for (k = 0; k < 3; k++) {
+    double complex v = (a2[k] * s + a1[k]) * s + a0[k];
+    double complex v1 = 2 * a2[k] * s + a1[k];
+    q2 += 2 * (v1 * v1 + 2 * a2[k] * v);
+    q3 += 12 * a2[k] * v1;
+  }
+  *d3 = q3;
+  return q2;
+}
+
+/* The centre m of a close pair of roots of Q by Newton on Q', which has a
+** simple root there: Q = c (t-m)^2 (t-m*)^2 gives
+** Q' = 2c (t-m) (t-m*) (2t - m - m*). */
+static double complex centre(const double a2[3], const double a1[3],
+                             const double a0[3], double complex s) {
+  double complex best = s, d1, d3;
+  double bestq;
+  int i;
+  q_eval(a2, a1, a0, s, &d1);
+  bestq = cabs(d1);
+  for (i = 0; i < CENTRE_CAP && bestq > 0; i++) {
+    double complex d2 = q_eval2(a2, a1, a0, s, &d3), next;
+    if (d2 == 0) break;
+    next = s - d1 / d2;
+    q_eval(a2, a1, a0, next, &d1);
+    if (cabs(d1) < bestq) { best = next; bestq = cabs(d1); }
     if (cabs(next - s) <= 0x1p-60 * (1 + cabs(next))) break;
     s = next;
   }
@@ -108,6 +152,22 @@ int arclen_ell_length3d(const double a2[3], const double a1[3],
   }
   s1 = polish(a2, a1, a0, s1);
   s2 = polish(a2, a1, a0, s2);
+  if (cabs(s1 - s2) <= CLOSE_REL * fmax(1, cabs(s1))) {
+    /* Q(m+u) = Q(m) + A u^2 + B u^3 + C u^4 about the centre (Q'(m) = 0):
+    ** the pair is u = +-d - (B/2A) d^2 + O(d^3), d^2 = -Q(m)/A, so its
+    ** midpoint is m - (B/2A) d^2 and its half-split squared d^2 + O(d^4) */
+    double complex m = centre(a2, a1, a0, (s1 + s2) / 2), dq, b3, d2;
+    double complex q0 = q_eval(a2, a1, a0, m, &dq);
+    double complex a = q_eval2(a2, a1, a0, m, &b3) / 2;
+    if (a != 0) {
+      d2 = -q0 / a;
+      m -= b3 / 6 * d2 / (2 * a);
+      s1 = m + csqrt(d2);
+      s2 = m - csqrt(d2);
+      s1 = creal(s1) + I * fabs(cimag(s1));
+      s2 = creal(s2) + I * fabs(cimag(s2));
+    }
+  }
   *len = n2 * arclen_ell_product(creal(s1), cimag(s1), creal(s2), cimag(s2),
                                  y, x, branch, calls);
   return ARCLEN_OK;
