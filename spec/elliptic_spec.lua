@@ -8,34 +8,14 @@ local function elliptic(c, t0, t1)
   return arclen.length(c, {method = "elliptic", t0 = t0, t1 = t1, info = true})
 end
 
-local function families(rows)
-  local seen, list = {}, {}
-  for _, row in ipairs(rows) do
-    if not seen[row.family] then seen[row.family] = true; list[#list + 1] = row.family end
-  end
-  return list
-end
-
 local function check_file(file)
   local rows = H.tsv(file)
-  for _, family in ipairs(families(rows)) do
+  for _, family in ipairs(H.families(rows)) do
     local bound = family == "henkel" and 5e-15 or 1e-13
     it(file .. " " .. family .. ": s(1/4), s(1/2), s(3/4), L within " .. bound, function()
-      local worst = H.worst()
-      for _, row in ipairs(rows) do
-        if row.family == family then
-          local c = H.curve(row)
-          for _, p in ipairs({{0.25, "L25"}, {0.5, "L50"}, {0.75, "L75"}, {1, "L"}}) do
-            local want = tonumber(row[p[2]])
-            local got = elliptic(c, 0, p[1])
-            if want == 0 then
-              assert.are.equal(0, got, row.id .. ": a point has length 0 exactly")
-            else
-              worst:add(H.relerr(got, want), row.id .. " t=" .. p[1])
-            end
-          end
-        end
-      end
+      local worst = H.worst_lengths(rows, family, function(c, t1)
+        return elliptic(c, 0, t1)
+      end)
       assert.is_true(worst.err <= bound,
         ("worst %s: %.3g > %.3g"):format(tostring(worst.id), worst.err, bound))
     end)

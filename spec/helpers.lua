@@ -49,6 +49,40 @@ function helpers.curves(name, family)
   return out
 end
 
+-- The families of reference rows, in the order they first appear.
+function helpers.families(rows)
+  local seen, list = {}, {}
+  for _, row in ipairs(rows) do
+    if not seen[row.family] then
+      seen[row.family] = true
+      list[#list + 1] = row.family
+    end
+  end
+  return list
+end
+
+-- The worst relative error of length(c, t1) against the references
+-- s(1/4), s(1/2), s(3/4), s(1) over one family's rows; a point must
+-- measure 0 exactly.
+function helpers.worst_lengths(rows, family, length)
+  local worst = helpers.worst()
+  for _, row in ipairs(rows) do
+    if row.family == family then
+      local c = helpers.curve(row)
+      for _, p in ipairs({{0.25, "L25"}, {0.5, "L50"}, {0.75, "L75"}, {1, "L"}}) do
+        local want = tonumber(row[p[2]])
+        local got = length(c, p[1])
+        if want == 0 then
+          assert(got == 0, row.id .. ": a point has length 0 exactly")
+        else
+          worst:add(helpers.relerr(got, want), row.id .. " t=" .. p[1])
+        end
+      end
+    end
+  end
+  return worst
+end
+
 -- |got - want| / |want| (absolute when want is 0).
 function helpers.relerr(got, want)
   if want == 0 then return math.abs(got) end

@@ -4,40 +4,17 @@
 local arclen = require("arclen")
 local H = require("helpers")
 
-local function families(rows)
-  local seen, list = {}, {}
-  for _, row in ipairs(rows) do
-    if not seen[row.family] then
-      seen[row.family] = true
-      list[#list + 1] = row.family
-    end
-  end
-  return list
-end
-
 -- Bound of the relative error for a requested tolerance.
 local function bound(tol) return tol < 1e-14 and 1e-14 or tol end
 
 local function check_lengths(file)
   local rows = H.tsv(file)
-  for _, family in ipairs(families(rows)) do
+  for _, family in ipairs(H.families(rows)) do
     for _, tol in ipairs({1e-12, 1e-15}) do
       it(family .. ": length at t = 1/4, 1/2, 3/4, 1 within " .. bound(tol) .. " (tol " .. tol .. ")", function()
-        local worst = H.worst()
-        for _, row in ipairs(rows) do
-          if row.family == family then
-            local c = H.curve(row)
-            for _, p in ipairs({{0.25, "L25"}, {0.5, "L50"}, {0.75, "L75"}, {1, "L"}}) do
-              local want = tonumber(row[p[2]])
-              local got = arclen.length(c, {tol = tol, t1 = p[1]})
-              if want == 0 then
-                assert.are.equal(0, got, row.id .. ": a point has length 0 exactly")
-              else
-                worst:add(H.relerr(got, want), row.id .. " t=" .. p[1])
-              end
-            end
-          end
-        end
+        local worst = H.worst_lengths(rows, family, function(c, t1)
+          return arclen.length(c, {tol = tol, t1 = t1})
+        end)
         assert.is_true(worst.err <= bound(tol),
           ("worst %s: %.3g > %.3g"):format(tostring(worst.id), worst.err, bound(tol)))
       end)
@@ -58,7 +35,7 @@ end
 
 local function check_times(file)
   local rows = H.tsv(file)
-  for _, family in ipairs(families(rows)) do
+  for _, family in ipairs(H.families(rows)) do
     for _, tol in ipairs({1e-12, 1e-15}) do
       it(family .. ": time at L/4, L/2, 3L/4 with |s(t) - s| <= " .. bound(tol) .. " L (tol " .. tol .. ")", function()
         local worst = H.worst()
