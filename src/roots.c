@@ -6,6 +6,7 @@
 ** coefficients, and quadratics solved without cancellation.
 ** The code is ours; the method follows that paper.
 */
+#include <float.h>
 #include <math.h>
 
 #include "arclen.h"
@@ -65,13 +66,24 @@ static double cubic_val(double b, double c, double d, double x, double *dv) {
   return ((x + b) * x + c) * x + d;
 }
 
+/* x polished by Newton on the monic cubic, kept while |value| falls. */
+static double cubic_polish(double b, double c, double d, double x) {
+  double fx, dv, best = x, bestf = fabs(cubic_val(b, c, d, x, &dv));
+  int i;
+  for (i = 0; i < NEWTON_CAP && bestf > 0 && dv != 0; i++) {
+    x -= cubic_val(b, c, d, x, &dv) / dv;
+    fx = fabs(cubic_val(b, c, d, x, &dv));
+    if (!(fx < bestf)) break;
+    best = x; bestf = fx;
+  }
+  return best;
+}
+
 /* The real root of largest value (three real roots) or the single real
 ** root, by Cardano/Viete on the depressed cubic, polished by Newton. */
 static double cubic_root(double b, double c, double d) {
   double p = c - b * b / 3, q = (2 * b * b / 27 - c / 3) * b + d;
-  double x, fx, dv, best, bestf;
-  double disc = q * q / 4 + p * p * p / 27;
-  int i;
+  double x, disc = q * q / 4 + p * p * p / 27;
   if (disc > 0) {
     double u = cbrt(-q / 2 - copysign(sqrt(disc), q));
     x = (u != 0 ? u - p / (3 * u) : 0) - b / 3;
@@ -80,14 +92,7 @@ static double cubic_root(double b, double c, double d) {
     ar = fmax(-1, fmin(1, ar));
     x = 2 * m * cos(acos(ar) / 3) - b / 3;   /* the largest root */
   }
-  best = x; bestf = fabs(cubic_val(b, c, d, x, &dv));
-  for (i = 0; i < NEWTON_CAP && bestf > 0 && dv != 0; i++) {
-    x -= cubic_val(b, c, d, x, &dv) / dv;
-    fx = fabs(cubic_val(b, c, d, x, &dv));
-    if (!(fx < bestf)) break;
-    best = x; bestf = fx;
-  }
-  return best;
+  return cubic_polish(b, c, d, x);
 }
 
 /* Residual of the factorisation (x^2+p1 x+q1)(x^2+p2 x+q2) of the monic
@@ -147,43 +152,100 @@ static double resid_norm(const double *v, const double *m) {
   return r;
 }
 
-/* Monic quartic x^4 + m0 x^3 + m1 x^2 + m2 x + m3 (scaled) into
-** v = {p1, q1, p2, q2}. */
-static void factor_monic(const double *m, double *v) {
-  double a = m[0], b = m[1], c = m[2], d = m[3];
-  /* Ferrari: quartic = (x^2 + a x/2 + y/2)^2 - (e x + f)^2 where y is a
-  ** root of the resolvent y^3 - b y^2 + (ac - 4d) y + (4bd - a^2 d - c^2);
-  ** the largest root makes e^2 = a^2/4 - b + y >= 0 (Algorithm 1010's
-  ** LDL^T pivot). */
-  double y = cubic_root(-b, a * c - 4 * d, 4 * b * d - a * a * d - c * c);
-  double e2 = a * a / 4 - b + y, f2 = y * y / 4 - d, g = a * y / 2 - c;
-  double e, f, best, jac[4][4], fv[4], w[4];
+/* The monic cubic y^3 + b y^2 + c y + d (scaled): its largest real root
+** and the deflated quadratic y^2 + e y + f. */
+static double cubic_deflate(double b, double c, double d, double *e,
+                            double *f) {
+  double r = cubic_root(b, c, d), f1, f2;
+  /* f from the equation that leaves the smaller residual in the other */
+  *e = b + r;
+  f1 = c + r * *e;
+  f2 = r != 0 ? -d / r : f1;
+  *f = fabs(r * f1 + d) <= fabs(f2 - r * *e - c) ? f1 : f2;
+  return r;
+}
+
+/* Residual at or below this (a sum of four relative residuals, each
+** evaluated with about two roundings) is rounding noise: stop there. */
+#define FACTOR_GOOD (8 * DBL_EPSILON)
+
+/* Newton on the four coefficient equations from v, each step kept only
+** while the residual falls; returns the residual.  The cap is above
+** NEWTON_CAP: at a double pair of factors (x^2 + x/2 + 1/2)^2 the Jacobian
+** (whose determinant is the factors' resultant) is singular and Newton
+** only halves the error per step, from the ~eps^(1/4) that a double root
+** of the resolvent leaves in e = sqrt(e^2) down to the sqrt(eps) whose
+** square is the rounding level of the residual: about 13 halvings. */
+#define FACTOR_NEWTON_CAP 40
+
+static double factor_newton(const double *m, double *v) {
+  double best = resid_norm(v, m), jac[4][4], fv[4], w[4], r;
   int i, k;
+  for (i = 0; i < FACTOR_NEWTON_CAP && best > FACTOR_GOOD / 8; i++) {
+    factor_residual(v, m, fv, jac);
+    if (!solve4(jac, fv)) break;
+    for (k = 0; k < 4; k++) w[k] = v[k] - fv[k];
+    r = resid_norm(w, m);
+    if (!(r < best)) break;
+    best = r;
+    for (k = 0; k < 4; k++) v[k] = w[k];
+  }
+  return best;
+}
+
+/* Ferrari's factors of the monic quartic from a resolvent root y:
+** quartic = (x^2 + a x/2 + y/2)^2 - (e x + f)^2 with e^2 = a^2/4 - b + y,
+** f^2 = y^2/4 - d and e f = (a y/2 - c)/2.  Variant 0 takes the larger of
+** e, f from its square and the other from e f; variant 1 both from their
+** squares (sign from e f): when both squares are rounding noise (a double
+** pair of factors) the quotient can be noise over noise. */
+static void ferrari_start(const double *m, double y, int variant,
+                          double *v) {
+  double a = m[0], b = m[1], d = m[3];
+  double e2 = a * a / 4 - b + y, f2 = y * y / 4 - d, g = a * y / 2 - m[2];
+  double e, f;
   if (e2 < 0) e2 = 0;
   if (f2 < 0) f2 = 0;
-  /* e f = g/2: take the better-determined one from its square */
-  if (e2 * e2 >= f2 * f2 && e2 > 0) { e = sqrt(e2); f = g / (2 * e); }
+  if (variant == 1) { e = sqrt(e2); f = copysign(sqrt(f2), g); }
+  else if (e2 * e2 >= f2 * f2 && e2 > 0) { e = sqrt(e2); f = g / (2 * e); }
   else if (f2 > 0) { f = sqrt(f2); e = g / (2 * f); }
   else { e = 0; f = 0; }
-  /* p = a/2 +- e, q = y/2 +- f; the smaller of each pair from the
-  ** products q1 q2 = d (and p1 + p2 = a is refined by Newton below) */
+  /* p = a/2 +- e, q = y/2 +- f; the smaller q from q1 q2 = d */
   v[0] = a / 2 + e; v[2] = a / 2 - e;
   v[1] = y / 2 + f; v[3] = y / 2 - f;
   if (fabs(v[1]) > fabs(v[3]) && v[1] != 0) v[3] = d / v[1];
   else if (v[3] != 0) v[1] = d / v[3];
-  /* Newton on the four coefficient equations while the residual falls */
-  best = resid_norm(v, m);
-  for (i = 0; i < NEWTON_CAP && best > 0; i++) {
-    factor_residual(v, m, fv, jac);
-    if (!solve4(jac, fv)) break;
-    for (k = 0; k < 4; k++) w[k] = v[k] - fv[k];
-    {
-      double r = resid_norm(w, m);
-      if (!(r < best)) break;
-      best = r;
-      for (k = 0; k < 4; k++) v[k] = w[k];
-    }
+}
+
+/* Monic quartic x^4 + m0 x^3 + m1 x^2 + m2 x + m3 (scaled) into
+** v = {p1, q1, p2, q2}: Ferrari's split from a root of the resolvent
+** y^3 - b y^2 + (ac - 4d) y + (4bd - a^2 d - c^2), then Newton on the
+** factors' coefficients (Algorithm 1010).  The largest real root gives
+** real factors (e^2 >= 0); but where it is double, as for a double pair
+** of factors (-(2x^2+x+1)^2 rounded), rounding can make it a complex pair
+** and Cardano returns the simple root instead (e^2 < 0: a garbage split,
+** relative residual 12).  So every root is tried, the real part of a
+** complex pair as a real candidate, each polished on the cubic and then
+** as factors, keeping the least residual. */
+static void factor_monic(const double *m, double *v) {
+  double a = m[0], b = m[1], c = m[2], d = m[3], y[3], e, f, best = HUGE_VAL;
+  double rr[2], ri[2], w[4], r;
+  double rb = -b, rc = a * c - 4 * d, rd = 4 * b * d - a * a * d - c * c;
+  int i, k, variant, ny = 1;
+  y[0] = cubic_deflate(rb, rc, rd, &e, &f);
+  if (arclen_quadratic(1, e, f, rr, ri) == 2) {
+    y[ny++] = cubic_polish(rb, rc, rd, rr[0]);
+    if (ri[0] == 0) y[ny++] = cubic_polish(rb, rc, rd, rr[1]);
   }
+  for (i = 0; i < ny && best > FACTOR_GOOD; i++)
+    for (variant = 0; variant < 2 && best > FACTOR_GOOD; variant++) {
+      ferrari_start(m, y[i], variant, w);
+      r = factor_newton(m, w);
+      if (r < best || i + variant == 0) {
+        best = r;
+        for (k = 0; k < 4; k++) v[k] = w[k];
+      }
+    }
 }
 
 /* ---- scaling and the Newton polygon ------------------------------------
@@ -285,33 +347,74 @@ static void polish_root(const double *c, int n, double *zr, double *zi) {
   }
 }
 
-/* The monic cubic y^3 + b y^2 + c y + d (scaled): its largest real root
-** and the deflated quadratic y^2 + e y + f. */
-static double cubic_deflate(double b, double c, double d, double *e,
-                            double *f) {
-  double r = cubic_root(b, c, d), f1, f2;
-  /* f from the equation that leaves the smaller residual in the other */
-  *e = b + r;
-  f1 = c + r * *e;
-  f2 = r != 0 ? -d / r : f1;
-  *f = fabs(r * f1 + d) <= fabs(f2 - r * *e - c) ? f1 : f2;
+/* Bairstow's residual of the factor y^2 + u y + v of c[0..n] (n <= 4):
+** the remainder of c / (y^2 + u y + v) is b1 (y + u) + b0, from the
+** recurrence b_k = c_k - u b_(k+1) - v b_(k+2).  bu, bv: the derivatives
+** of (b1, b0) in u and v; returns the relative size |b1|/B1 + |b0|/B0,
+** B_k the same recurrence on absolute values (its rounding bound). */
+static double bairstow(const double *c, int n, double u, double v,
+                       double *b, double *bu, double *bv) {
+  double x[7] = {0}, xu[7] = {0}, xv[7] = {0}, ab[7] = {0}, r = 0;
+  int k;
+  for (k = n; k >= 0; k--) {
+    x[k] = c[k] - u * x[k + 1] - v * x[k + 2];
+    xu[k] = -x[k + 1] - u * xu[k + 1] - v * xu[k + 2];
+    xv[k] = -x[k + 2] - u * xv[k + 1] - v * xv[k + 2];
+    ab[k] = fabs(c[k]) + fabs(u) * ab[k + 1] + fabs(v) * ab[k + 2];
+  }
+  for (k = 0; k < 2; k++) {
+    b[k] = x[k]; bu[k] = xu[k]; bv[k] = xv[k];
+    r += ab[k] > 0 ? fabs(x[k]) / ab[k] : 0;
+  }
   return r;
 }
 
-/* Roots (in y) of the monic y^d + m[0] y^(d-1) + ... + m[d-1], d <= 4. */
-static int monic_roots(const double *m, int d, double *re, double *im) {
+/* The quadratic factor y^2 + u y + v of a group, found from the group's
+** own coefficients, polished by Newton (Bairstow) on the whole scaled
+** polynomial c[0..n], each step kept only while the residual falls.
+** Per-root Newton (polish_root) stalls at a near-double pair, where p' is
+** about 0: -x (x+1)^2 + 3.75e-12 x^4 kept the group's double root -1
+** (relative residual 3.8e-13, fuzz/fuzz_roots); the pair's factor is
+** well-determined (backward error eps) even where its roots are not.
+** The Jacobian is singular at an exact double root, so, as for the
+** quartic's factors, convergence there is linear: FACTOR_NEWTON_CAP. */
+static void polish_factor(const double *c, int n, double *u, double *v) {
+  double b[2], bu[2], bv[2], nb[2], nbu[2], nbv[2], det, du, dv, r, best;
+  int i;
+  best = bairstow(c, n, *u, *v, b, bu, bv);
+  for (i = 0; i < FACTOR_NEWTON_CAP && best > FACTOR_GOOD / 8; i++) {
+    det = bu[1] * bv[0] - bv[1] * bu[0];
+    if (det == 0 || !isfinite(det)) break;
+    du = (b[1] * bv[0] - bv[1] * b[0]) / det;
+    dv = (bu[1] * b[0] - b[1] * bu[0]) / det;
+    r = bairstow(c, n, *u - du, *v - dv, nb, nbu, nbv);
+    if (!(r < best)) break;
+    best = r; *u -= du; *v -= dv;
+    b[0] = nb[0]; b[1] = nb[1]; bu[0] = nbu[0]; bu[1] = nbu[1];
+    bv[0] = nbv[0]; bv[1] = nbv[1];
+  }
+}
+
+/* Roots (in y) of the monic y^d + m[0] y^(d-1) + ... + m[d-1], d <= 4, a
+** group of the whole polynomial c[0..n] in the same scale. */
+static int group_roots(const double *m, int d, const double *c, int n,
+                       double *re, double *im) {
   double v[4], e, f;
-  int n;
+  int k;
   switch (d) {
     case 1: re[0] = -m[0]; im[0] = 0; return 1;
-    case 2: return arclen_quadratic(1, m[0], m[1], re, im);
+    case 2:
+      e = m[0]; f = m[1];
+      polish_factor(c, n, &e, &f);
+      return arclen_quadratic(1, e, f, re, im);
     case 3:
       re[0] = cubic_deflate(m[0], m[1], m[2], &e, &f); im[0] = 0;
+      polish_factor(c, n, &e, &f);
       return 1 + arclen_quadratic(1, e, f, re + 1, im + 1);
     default:
       factor_monic(m, v);
-      n = arclen_quadratic(1, v[0], v[1], re, im);
-      return n + arclen_quadratic(1, v[2], v[3], re + n, im + n);
+      k = arclen_quadratic(1, v[0], v[1], re, im);
+      return k + arclen_quadratic(1, v[2], v[3], re + k, im + k);
   }
 }
 
@@ -424,8 +527,8 @@ static int poly_roots_(const double *p, int n, double *re, double *im,
     int a = gs[g], b = gs[g + 1], d = b - a, E = group_scale(&P, a, b);
     double m[4], c[5];
     for (k = 1; k <= d; k++) m[k - 1] = scaled(&P, b - k, b, E);
-    monic_roots(m, d, re + cnt, im + cnt);
     for (j = 0; j <= n; j++) c[j] = scaled(&P, j, b, E);
+    group_roots(m, d, c, n, re + cnt, im + cnt);
     for (k = cnt; k < cnt + d; k++) {
       polish_root(c, n, &re[k], &im[k]);
       re[k] = ldexp(re[k], E); im[k] = ldexp(im[k], E);
@@ -474,6 +577,28 @@ static void pair_factor(double r1, double i1, double r2, double i2,
   q[1] = (r1 == 0 || r2 == 0) ? 0 : r1 * r2;
 }
 
+/* The factors q from paired roots, Newton-polished as a whole in the
+** quartic's own scale x = 2^E y (the roots are each polished on p, but a
+** pair's coefficients then carry each root's error, eps / separation for
+** a near-double root), kept only if the residual falls.  Skipped where a
+** scaled coefficient of p or q underflows (to a subnormal or to 0): one
+** scale cannot hold every group then, and the residual would be blind. */
+static void factor_polish(const poly *P, double *q) {
+  double m[4], v[4], w[4];
+  int k, E = group_scale(P, 0, 4);
+  for (k = 1; k <= 4; k++) m[k - 1] = scaled(P, 4 - k, 4, E);
+  v[0] = ldexp(q[0], -E); v[1] = ldexp(q[1], -2 * E);
+  v[2] = ldexp(q[2], -E); v[3] = ldexp(q[3], -2 * E);
+  for (k = 0; k < 4; k++) {
+    if (!isfinite(v[k]) || (q[k] != 0 && fabs(v[k]) < DBL_MIN)) return;
+    if (P->f[3 - k] != 0 && fabs(m[k]) < DBL_MIN) return;
+    w[k] = v[k];
+  }
+  if (!(factor_newton(m, w) < resid_norm(v, m))) return;
+  q[0] = ldexp(w[0], E); q[1] = ldexp(w[1], 2 * E);
+  q[2] = ldexp(w[2], E); q[3] = ldexp(w[3], 2 * E);
+}
+
 int arclen_quartic_factor(double a4, double a3, double a2, double a1,
                           double a0, double q[4]) {
   double p[5], re[4], im[4];
@@ -492,16 +617,21 @@ int arclen_quartic_factor(double a4, double a3, double a2, double a1,
     q[2] = ldexp(v[2], E); q[3] = ldexp(v[3], 2 * E);
     return ARCLEN_OK;
   }
-  /* spread roots: a group of degree 2 is a factor as it stands (in x,
-  ** y^2 + m0 y + m1 with x = 2^E y); the other roots pair up, conjugates
-  ** together, reals by size (largest with next largest).  poly_roots lists
-  ** group g's roots at gs[g]..gs[g+1]-1 (exact zeros, if any, first). */
+  /* spread roots: a group of degree 2 is a factor, y^2 + m0 y + m1 in
+  ** x = 2^E y, once Bairstow has polished it on the whole polynomial (its
+  ** own coefficients neglect the other groups: 2^-SPLIT_BITS-sized
+  ** relative errors, residual 8e-8 found by fuzz/fuzz_roots); the other
+  ** roots pair up, conjugates together, reals by size (largest with next
+  ** largest).  poly_roots lists group g's roots at gs[g]..gs[g+1]-1
+  ** (exact zeros, if any, first). */
   poly_roots(p, 4, re, im);
   for (i = 0; i < ng && p[0] != 0 && nq == 0; i++) {
     int b = gs[i + 1], E = group_scale(&P, gs[i], b);
+    double c[5], u = scaled(&P, b - 1, b, E), v = scaled(&P, b - 2, b, E);
     if (b - gs[i] != 2) continue;
-    q[0] = ldexp(scaled(&P, b - 1, b, E), E);
-    q[1] = ldexp(scaled(&P, b - 2, b, E), 2 * E);
+    for (k = 0; k <= 4; k++) c[k] = scaled(&P, k, b, E);
+    polish_factor(c, 4, &u, &v);
+    q[0] = ldexp(u, E); q[1] = ldexp(v, 2 * E);
     used[gs[i]] = used[gs[i] + 1] = 1;
     nq = 1;
   }
@@ -523,5 +653,6 @@ int arclen_quartic_factor(double a4, double a3, double a2, double a1,
     used[t] = 1;
     pair_factor(re[s], fabs(im[s]), re[t], im[t], q + 2 * nq);
   }
+  factor_polish(&P, q);
   return ARCLEN_OK;
 }
