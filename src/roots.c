@@ -347,51 +347,66 @@ static void polish_root(const double *c, int n, double *zr, double *zi) {
   }
 }
 
-/* Bairstow's residual of the factor y^2 + u y + v of c[0..n] (n <= 4):
-** the remainder of c / (y^2 + u y + v) is b1 (y + u) + b0, from the
-** recurrence b_k = c_k - u b_(k+1) - v b_(k+2).  bu, bv: the derivatives
-** of (b1, b0) in u and v; returns the relative size |b1|/B1 + |b0|/B0,
-** B_k the same recurrence on absolute values (its rounding bound). */
-static double bairstow(const double *c, int n, double u, double v,
-                       double *b, double *bu, double *bv) {
-  double x[7] = {0}, xu[7] = {0}, xv[7] = {0}, ab[7] = {0}, r = 0;
+/* The remainder of c[0..n] / (y^2 + u y + v), n <= 4, is b1 (y + u) + b0
+** by the recurrence b_k = c_k - u b_(k+1) - v b_(k+2) (Bairstow); b, and
+** its derivatives bu, bv in u and v, for k = 0, 1. */
+static void bairstow(const double *c, int n, double u, double v, double *b,
+                     double *bu, double *bv) {
+  double x[7] = {0}, xu[7] = {0}, xv[7] = {0};
   int k;
   for (k = n; k >= 0; k--) {
     x[k] = c[k] - u * x[k + 1] - v * x[k + 2];
     xu[k] = -x[k + 1] - u * xu[k + 1] - v * xu[k + 2];
     xv[k] = -x[k + 2] - u * xv[k + 1] - v * xv[k + 2];
-    ab[k] = fabs(c[k]) + fabs(u) * ab[k + 1] + fabs(v) * ab[k + 2];
   }
-  for (k = 0; k < 2; k++) {
-    b[k] = x[k]; bu[k] = xu[k]; bv[k] = xv[k];
-    r += ab[k] > 0 ? fabs(x[k]) / ab[k] : 0;
+  for (k = 0; k < 2; k++) { b[k] = x[k]; bu[k] = xu[k]; bv[k] = xv[k]; }
+}
+
+/* How well the roots of y^2 + u y + v solve c[0..n]: the largest
+** componentwise backward error |c(z)| / sum |c_k| |z|^k over them (the
+** fuzz invariant; Horner's rounding puts its floor near n eps).  A
+** residual of the remainder (b1, b0) is no yardstick: it is rounded
+** against terms far larger than the small root's own (spread 2^-17 of
+** the scale: 2e-13 relative left in a factor's root). */
+static double factor_bwd(const double *c, int n, double u, double v) {
+  double re[2], im[2], worst = 0;
+  int i, k, nr = arclen_quadratic(1, u, v, re, im);
+  for (i = 0; i < nr; i++) {
+    double pr = c[n], pi = 0, s = fabs(c[n]), az = hypot(re[i], im[i]), t;
+    for (k = n - 1; k >= 0; k--) {
+      t = pr * re[i] - pi * im[i] + c[k];
+      pi = pr * im[i] + pi * re[i]; pr = t;
+      s = s * az + fabs(c[k]);
+    }
+    t = hypot(pr, pi);
+    if (t > 0) worst = fmax(worst, s > 0 ? t / s : HUGE_VAL);
+    if (!(t < HUGE_VAL)) return HUGE_VAL;        /* NaN or overflow */
   }
-  return r;
+  return worst;
 }
 
 /* The quadratic factor y^2 + u y + v of a group, found from the group's
-** own coefficients, polished by Newton (Bairstow) on the whole scaled
-** polynomial c[0..n], each step kept only while the residual falls.
-** Per-root Newton (polish_root) stalls at a near-double pair, where p' is
-** about 0: -x (x+1)^2 + 3.75e-12 x^4 kept the group's double root -1
-** (relative residual 3.8e-13, fuzz/fuzz_roots); the pair's factor is
-** well-determined (backward error eps) even where its roots are not.
-** The Jacobian is singular at an exact double root, so, as for the
-** quartic's factors, convergence there is linear: FACTOR_NEWTON_CAP. */
+** own coefficients, polished by Newton on Bairstow's remainder of the
+** whole scaled polynomial c[0..n], each step kept only while the factor's
+** roots solve c better (factor_bwd).  Per-root Newton (polish_root)
+** stalls at a near-double pair, where p' is about 0: -x (x+1)^2 +
+** 3.75e-12 x^4 kept the group's double root -1 (relative residual
+** 3.8e-13, fuzz/fuzz_roots); the pair's factor is well-determined even
+** where its roots are not.  The Jacobian is singular at an exact double
+** root, so, as for the quartic's factors, convergence there is linear:
+** FACTOR_NEWTON_CAP. */
 static void polish_factor(const double *c, int n, double *u, double *v) {
-  double b[2], bu[2], bv[2], nb[2], nbu[2], nbv[2], det, du, dv, r, best;
+  double b[2], bu[2], bv[2], det, nu, nv, r, best = factor_bwd(c, n, *u, *v);
   int i;
-  best = bairstow(c, n, *u, *v, b, bu, bv);
-  for (i = 0; i < FACTOR_NEWTON_CAP && best > FACTOR_GOOD / 8; i++) {
+  for (i = 0; i < FACTOR_NEWTON_CAP && best > 0; i++) {
+    bairstow(c, n, *u, *v, b, bu, bv);
     det = bu[1] * bv[0] - bv[1] * bu[0];
     if (det == 0 || !isfinite(det)) break;
-    du = (b[1] * bv[0] - bv[1] * b[0]) / det;
-    dv = (bu[1] * b[0] - b[1] * bu[0]) / det;
-    r = bairstow(c, n, *u - du, *v - dv, nb, nbu, nbv);
+    nu = *u - (b[1] * bv[0] - bv[1] * b[0]) / det;
+    nv = *v - (bu[1] * b[0] - b[1] * bu[0]) / det;
+    r = factor_bwd(c, n, nu, nv);
     if (!(r < best)) break;
-    best = r; *u -= du; *v -= dv;
-    b[0] = nb[0]; b[1] = nb[1]; bu[0] = nbu[0]; bu[1] = nbu[1];
-    bv[0] = nbv[0]; bv[1] = nbv[1];
+    best = r; *u = nu; *v = nv;
   }
 }
 
@@ -584,9 +599,10 @@ static void pair_factor(double r1, double i1, double r2, double i2,
 ** scaled coefficient of p or q underflows (to a subnormal or to 0): one
 ** scale cannot hold every group then, and the residual would be blind. */
 static void factor_polish(const poly *P, double *q) {
-  double m[4], v[4], w[4];
+  double m[4], c[5], v[4], w[4];
   int k, E = group_scale(P, 0, 4);
-  for (k = 1; k <= 4; k++) m[k - 1] = scaled(P, 4 - k, 4, E);
+  for (k = 1; k <= 4; k++) m[k - 1] = c[4 - k] = scaled(P, 4 - k, 4, E);
+  c[4] = 1;
   v[0] = ldexp(q[0], -E); v[1] = ldexp(q[1], -2 * E);
   v[2] = ldexp(q[2], -E); v[3] = ldexp(q[3], -2 * E);
   for (k = 0; k < 4; k++) {
@@ -594,7 +610,12 @@ static void factor_polish(const poly *P, double *q) {
     if (P->f[3 - k] != 0 && fabs(m[k]) < DBL_MIN) return;
     w[k] = v[k];
   }
-  if (!(factor_newton(m, w) < resid_norm(v, m))) return;
+  /* Newton lowers the coefficients' residual; keep it if the roots of
+  ** the factors solve p better too */
+  factor_newton(m, w);
+  if (!(fmax(factor_bwd(c, 4, w[0], w[1]), factor_bwd(c, 4, w[2], w[3])) <
+        fmax(factor_bwd(c, 4, v[0], v[1]), factor_bwd(c, 4, v[2], v[3]))))
+    return;
   q[0] = ldexp(w[0], E); q[1] = ldexp(w[1], 2 * E);
   q[2] = ldexp(w[2], E); q[3] = ldexp(w[3], 2 * E);
 }
@@ -627,8 +648,9 @@ int arclen_quartic_factor(double a4, double a3, double a2, double a1,
   poly_roots(p, 4, re, im);
   for (i = 0; i < ng && p[0] != 0 && nq == 0; i++) {
     int b = gs[i + 1], E = group_scale(&P, gs[i], b);
-    double c[5], u = scaled(&P, b - 1, b, E), v = scaled(&P, b - 2, b, E);
+    double c[5], u, v;
     if (b - gs[i] != 2) continue;
+    u = scaled(&P, b - 1, b, E); v = scaled(&P, b - 2, b, E);
     for (k = 0; k <= 4; k++) c[k] = scaled(&P, k, b, E);
     polish_factor(c, 4, &u, &v);
     q[0] = ldexp(u, E); q[1] = ldexp(v, 2 * E);
