@@ -12,6 +12,7 @@
 
 #include "arclen.h"
 #include "cubic.h"
+#include "elliptic.h"
 
 /* A computed imaginary part below this relative size is rounding noise:
 ** the root is real (a cusp).  In 2D the roots come from a quadratic formula
@@ -136,6 +137,14 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
   while (deg > 0 && q[deg] == 0) deg--;
   b->lead = sqrt(q[deg]);
   if (deg == 0) return;
+  if (deg == 4 && arclen_ell_roots3d(h->a2, h->a1, h->a0, re, im) == ARCLEN_OK) {
+    /* the elliptic method's roots: polished on the hodograph, and close
+    ** ones (a stop: a quadruple root, found to eps^(1/4) from Q's
+    ** coefficients) set in a frame about their cluster (elliptic3d.c) */
+    add_pair(b, re[0] + I * im[0], REAL_ROOT_RTOL3);
+    add_pair(b, re[1] + I * im[1], REAL_ROOT_RTOL3);
+    return;
+  }
   n = arclen_quartic(q[4], q[3], q[2], q[1], q[0], re, im);
   for (k = 0; k < n; k++) z[k] = re[k] + I * im[k];
   for (k = 0; k < n; k++) {

@@ -169,9 +169,12 @@ double arclen_ell_product(double a1, double b1, double a2, double b2,
 #define HUGE_COORD 1e300
 
 /* The hodograph of c (dim 2 or 3), scaled by an exact power of two so its
-** largest coefficient is in [0.5, 1); returns the scale (0: a point). */
-static double scaled_hodograph(const double *c, int dim, double a2[3],
-                               double a1[3], double a0[3]) {
+** largest coefficient is in [0.5, 1); returns 0 for a point, else 1 with
+** the scale's exponent in *ex (kept as an exponent: for coordinates near
+** DBL_MAX the hodograph, 6 x a leg, exceeds the double range while the
+** length fits -- results are set by ldexp). */
+static int scaled_hodograph(const double *c, int dim, double a2[3],
+                            double a1[3], double a0[3], int *ex) {
   double tmp[12], pre = 1, big = 0;
   int k, e;
   for (k = 0; k < 4 * dim; k++)
@@ -187,7 +190,8 @@ static double scaled_hodograph(const double *c, int dim, double a2[3],
     a1[k] = ldexp(a1[k], -e);
     a0[k] = ldexp(a0[k], -e);
   }
-  return ldexp(1.0, e) / pre;
+  *ex = pre == 1 ? e : e + 64;
+  return 1;
 }
 
 /* 2D: the complex hodograph's roots by the stable quadratic formula
@@ -228,10 +232,10 @@ static double length2d(const double a2[3], const double a1[3],
 
 int arclen_length_elliptic(const double *c, int dim, const arclen_opts *o,
                            double *len, arclen_info *info) {
-  double a2[3], a1[3], a0[3], scale, y = o->t0, x = o->t1, v;
+  double a2[3], a1[3], a0[3], y = o->t0, x = o->t1, v;
   const char *branch = "point";
   long calls = 0;
-  int e;
+  int e, ex = 0, nonzero;
   *len = NAN;
   if (info != NULL) arclen_info_init(info);
   if (dim != 2 && dim != 3) return ARCLEN_EDIM;
@@ -239,18 +243,20 @@ int arclen_length_elliptic(const double *c, int dim, const arclen_opts *o,
   if (e != ARCLEN_OK) return e;
   if (!(y >= 0 && y <= 1 && x >= 0 && x <= 1)) return ARCLEN_ERANGE;
   if (x < y) { v = x; x = y; y = v; }
-  scale = scaled_hodograph(c, dim, a2, a1, a0);
-  if (scale == 0 || x == y) {
+  nonzero = scaled_hodograph(c, dim, a2, a1, a0, &ex);
+  if (!nonzero || x == y) {
     v = 0;                               /* a point, or an empty range */
     if (x == y) branch = "empty";
   } else if (dim == 2) {
-    v = length2d(a2, a1, a0, y, x, &branch, &calls) * scale;
+    v = length2d(a2, a1, a0, y, x, &branch, &calls);
   } else {
     e = arclen_ell_length3d(a2, a1, a0, y, x, &branch, &calls, &v);
     if (e != ARCLEN_OK) return e;
-    v *= scale;
   }
-  if (!isfinite(v) && isfinite(scale)) {
+  /* in hodograph units v is at most 3 (|a_k| < 1): never inf */
+  if (isfinite(v)) {
+    v = ldexp(v, ex);
+  } else {
     /* never NaN: should a branch fail (none has on the reference sets),
     ** the error-controlled default method answers, and says so */
     arclen_opts g = *o;

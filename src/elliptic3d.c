@@ -7,6 +7,23 @@
 ** the hodograph itself: near a cusp every z'_k(s) is small, so this form
 ** keeps the root's imaginary part b to full accuracy where the expanded
 ** coefficients c_i would give only sqrt(eps) (shared/notes/elliptic.md).
+**
+** Roots close together are where Newton on Q fails: each of two roots a
+** distance d apart is placed only to eps/d, and an error in their centre
+** moves the length by as much.  The length is a function of the hodograph,
+** |L(h + dh) - L(h)| <= int |dh|, so what is needed is roots that belong
+** exactly to a hodograph within rounding of h: such roots are computed in
+** a frame about the cluster, where h's Taylor coefficients (rounded once,
+** a perturbation of h of relative size eps) set the local quartic to its
+** own scale.
+** - four roots near one real point (a stop, a near-collinear stop): the
+**   real local quartic about that point, split by the quartic solver;
+** - a pair well off the real axis (hodograph nearly in a plane through the
+**   origin): the local quartic about the pair's centre m (complex) is
+**   (u^2 + p u + q)(c4 u^2 + g1 u + g0); the small factor is read off by a
+**   fixed-point iteration that contracts like (d / distance to the other
+**   pair)^2.  Its roots -p/2 +- sqrt(p^2/4 - q) keep the centre exact and
+**   the integral depends on their split only through its square.
 */
 #include <complex.h>
 #include <math.h>
@@ -15,12 +32,15 @@
 #include "elliptic.h"
 
 #define POLISH_CAP 80   /* linear phase inside a close pair, then quadratic */
-#define CENTRE_CAP 40   /* Newton on Q' at a simple root: quadratic */
-/* Polished roots closer than this (relative) are a cluster: Newton on Q
-** pins a double root only to ~sqrt(eps), so the pair is rebuilt from its
-** centre (the integral depends on the half-split d only through d^2,
-** which Q at the centre gives to full accuracy). */
-#define CLOSE_REL 1e-6
+#define FACTOR_CAP 60   /* contraction <= 1/16 per step (PAIR_OFF below) */
+/* Roots closer than this (relative to the frame's scale) are a cluster:
+** beyond it Newton's eps/d leaves < 5e-15 (measured, tools/ref_close3d.py) */
+#define CLOSE_REL 0.05
+/* A close pair whose imaginary parts exceed PAIR_OFF times its split is
+** far from its conjugates (the factor iteration contracts like
+** (1/(2 PAIR_OFF))^2 = 1/16); nearer the axis all four roots are one
+** cluster, taken in the real frame. */
+#define PAIR_OFF 2
 
 /* Q(s) and Q'(s) from the hodograph, s complex. */
 static double complex q_eval(const double a2[3], const double a1[3],
@@ -54,53 +74,130 @@ static double complex polish(const double a2[3], const double a1[3],
   return best;
 }
 
-/* Q''(s); *d3 = Q'''(s) (Q'''' = 24 |A2|^2 is constant). */
-static double complex q_eval2(const double a2[3], const double a1[3],
-                              const double a0[3], double complex s,
-                              double complex *d3) {
-  double complex q2 = 0, q3 = 0;
-  int k;
-  for (k = 0; k < 3; k++) {
-    double complex v = (a2[k] * s + a1[k]) * s + a0[k];
-    double complex v1 = 2 * a2[k] * s + a1[k];
-    q2 += 2 * (v1 * v1 + 2 * a2[k] * v);
-    q3 += 12 * a2[k] * v1;
-  }
-  *d3 = q3;
-  return q2;
-}
-
-/* The centre m of a close pair of roots of Q by Newton on Q', which has a
-** simple root there: Q = c (t-m)^2 (t-m*)^2 gives
-** Q' = 2c (t-m) (t-m*) (2t - m - m*). */
-static double complex centre(const double a2[3], const double a1[3],
-                             const double a0[3], double complex s) {
-  double complex best = s, d1, d3;
-  double bestq;
-  int i;
-  q_eval(a2, a1, a0, s, &d1);
-  bestq = cabs(d1);
-  for (i = 0; i < CENTRE_CAP && bestq > 0; i++) {
-    double complex d2 = q_eval2(a2, a1, a0, s, &d3), next;
-    if (d2 == 0) break;
-    next = s - d1 / d2;
-    q_eval(a2, a1, a0, next, &d1);
-    if (cabs(d1) < bestq) { best = next; bestq = cabs(d1); }
-    if (cabs(next - s) <= 0x1p-60 * (1 + cabs(next))) break;
-    s = next;
-  }
-  return best;
-}
-
 static double dot3(const double *u, const double *v) {
   return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+}
+
+/* The two roots of Q = |a2 t^2 + a1 t + a0|^2 in the upper half plane
+** that make Q = c4 |t - s1|^2 |t - s2|^2; unit: the frame's length scale
+** (1 globally, the cluster's size in a local frame). */
+static int roots(const double a2[3], const double a1[3], const double a0[3],
+                 double unit, double complex *s1, double complex *s2) {
+  /* Q = |A2|^2 t^4 + 2 A2.A1 t^3 + (|A1|^2 + 2 A2.A0) t^2 + 2 A1.A0 t
+  **     + |A0|^2 */
+  double q[4], re[4], im[4], t;
+  int i, j, e = arclen_quartic_factor(dot3(a2, a2), 2 * dot3(a2, a1),
+                                      dot3(a1, a1) + 2 * dot3(a2, a0),
+                                      2 * dot3(a1, a0), dot3(a0, a0), q);
+  if (e != ARCLEN_OK) return e;
+  /* Q >= 0, so its real roots are double; a factor with two distinct
+  ** real roots (a near-collinear Q split the other way) is re-paired:
+  ** the four roots sorted, neighbours together.  Newton starts off the
+  ** real axis (on it, it would stay there). */
+  arclen_quadratic(1, q[0], q[1], re, im);
+  arclen_quadratic(1, q[2], q[3], re + 2, im + 2);
+  if (im[0] != 0 && im[2] != 0) {
+    *s1 = re[0] + I * fabs(im[0]);
+    *s2 = re[2] + I * fabs(im[2]);
+  } else {
+    for (i = 1; i < 4; i++)          /* insertion sort by real part */
+      for (j = i; j > 0 && re[j] < re[j - 1]; j--) {
+        t = re[j]; re[j] = re[j - 1]; re[j - 1] = t;
+        t = im[j]; im[j] = im[j - 1]; im[j - 1] = t;
+      }
+    *s1 = (re[0] + re[1]) / 2 + I * fmax(fabs(re[1] - re[0]) / 2, fabs(im[0]));
+    *s2 = (re[2] + re[3]) / 2 + I * fmax(fabs(re[3] - re[2]) / 2, fabs(im[2]));
+  }
+  if (cimag(*s1) == 0) *s1 += I * 0x1p-30 * (unit + fabs(creal(*s1)));
+  if (cimag(*s2) == 0) *s2 += I * 0x1p-30 * (unit + fabs(creal(*s2)));
+  *s1 = polish(a2, a1, a0, *s1);
+  *s2 = polish(a2, a1, a0, *s2);
+  return ARCLEN_OK;
+}
+
+/* A close pair s1, s2 off the real axis, rebuilt from the local quartic
+** about its centre m: Q(m + u) = sum_k (v_k + w_k u + a2_k u^2)^2 with
+** v = h(m), w = h'(m) (each rounded once), e_j its coefficients; the
+** factor u^2 + p u + q of the small roots by the fixed point
+** q = e0/g0, p = (e1 - q g1)/g0, g1 = e3 - p e4, g0 = e2 - p g1 - q e4.
+** Left as it was if the iteration does not settle. */
+static void close_pair(const double a2[3], const double a1[3],
+                       const double a0[3], double complex *s1,
+                       double complex *s2) {
+  double complex m = (*s1 + *s2) / 2, e[5] = {0, 0, 0, 0, 0};
+  double complex p = 0, q = 0, g0, g1, r;
+  int k, i;
+  for (k = 0; k < 3; k++) {
+    double complex v = (a2[k] * m + a1[k]) * m + a0[k];
+    double complex w = 2 * a2[k] * m + a1[k];
+    e[0] += v * v;
+    e[1] += 2 * v * w;
+    e[2] += w * w + 2 * a2[k] * v;
+    e[3] += 2 * a2[k] * w;
+    e[4] += a2[k] * a2[k];
+  }
+  for (i = 0; i < FACTOR_CAP; i++) {
+    double complex p0 = p, q0 = q;
+    g1 = e[3] - p * e[4];
+    g0 = e[2] - p * g1 - q * e[4];
+    if (g0 == 0) return;
+    q = e[0] / g0;
+    p = (e[1] - q * g1) / g0;
+    if (p == p0 && q == q0) break;
+  }
+  if (i == FACTOR_CAP || !isfinite(creal(p) + cimag(p) + creal(q) + cimag(q)))
+    return;
+  r = csqrt(p * p / 4 - q);
+  *s1 = m - p / 2 + r;
+  *s2 = m - p / 2 - r;
+  *s1 = creal(*s1) + I * fabs(cimag(*s1));
+  *s2 = creal(*s2) + I * fabs(cimag(*s2));
+}
+
+/* s1, s2 (frame scale unit) a pair for close_pair? */
+static int is_pair(double complex s1, double complex s2, double unit) {
+  double d = cabs(s1 - s2);
+  return d <= CLOSE_REL * fmax(unit, fmax(cabs(s1), cabs(s2))) &&
+         fmin(cimag(s1), cimag(s2)) > PAIR_OFF * d;
+}
+
+int arclen_ell_roots3d(const double a2[3], const double a1[3],
+                       const double a0[3], double re[2], double im[2]) {
+  double complex s1, s2;
+  int e = roots(a2, a1, a0, 1, &s1, &s2);
+  if (e != ARCLEN_OK) return e;
+  if (fmax(cabs(s1 - s2), fmax(cimag(s1), cimag(s2))) <=
+      CLOSE_REL * fmax(1, fabs(creal(s1)))) {
+    /* four roots near one real point: about their mean c (Q''' = 0:
+    ** c = -c3/(4 c4), from the hodograph to rounding, where the roots
+    ** themselves are known to eps^(1/4) only), h(c + u) = a2 u^2 + b1 u
+    ** + b0, whose roots are set to their own scale */
+    double c = -dot3(a2, a1) / (2 * dot3(a2, a2)), b1[3], b0[3], unit;
+    double complex u1, u2;
+    int k;
+    for (k = 0; k < 3; k++) {
+      b1[k] = 2 * a2[k] * c + a1[k];
+      b0[k] = (a2[k] * c + a1[k]) * c + a0[k];
+    }
+    unit = fmax(cabs(s1 - c), cabs(s2 - c));
+    if (roots(a2, b1, b0, unit, &u1, &u2) == ARCLEN_OK) {
+      if (is_pair(u1, u2, 0)) close_pair(a2, b1, b0, &u1, &u2);
+      s1 = c + u1;
+      s2 = c + u2;
+    }
+  } else if (is_pair(s1, s2, 1)) {
+    close_pair(a2, a1, a0, &s1, &s2);
+  }
+  re[0] = creal(s1); im[0] = cimag(s1);
+  re[1] = creal(s2); im[1] = cimag(s2);
+  return ARCLEN_OK;
 }
 
 int arclen_ell_length3d(const double a2[3], const double a1[3],
                         const double a0[3], double y, double x,
                         const char **branch, long *calls, double *len) {
-  double n2 = sqrt(dot3(a2, a2)), n1 = sqrt(dot3(a1, a1)), q[4];
-  double complex s1, s2;
+  double n2 = sqrt(dot3(a2, a2)), n1 = sqrt(dot3(a1, a1));
+  double re[2], im[2];
   int e;
   if (n2 == 0) {
     /* z' = A1 t + A0: |A1| |t - s| with s = a + ib, a = -A1.A0/|A1|^2
@@ -120,55 +217,9 @@ int arclen_ell_length3d(const double a2[3], const double a1[3],
     *len = n1 * arclen_ell_j0(y - a, x - a, b);
     return ARCLEN_OK;
   }
-  /* Q = |A2|^2 t^4 + 2 A2.A1 t^3 + (|A1|^2 + 2 A2.A0) t^2 + 2 A1.A0 t
-  **     + |A0|^2 */
-  e = arclen_quartic_factor(dot3(a2, a2), 2 * dot3(a2, a1),
-                            dot3(a1, a1) + 2 * dot3(a2, a0),
-                            2 * dot3(a1, a0), dot3(a0, a0), q);
+  e = arclen_ell_roots3d(a2, a1, a0, re, im);
   if (e != ARCLEN_OK) return e;
-  {
-    /* Q >= 0, so its real roots are double; a factor with two distinct
-    ** real roots (a near-collinear Q split the other way) is re-paired:
-    ** the four roots sorted, neighbours together.  Newton starts off the
-    ** real axis (on it, it would stay there). */
-    double re[4], im[4], t;
-    int i, j;
-    arclen_quadratic(1, q[0], q[1], re, im);
-    arclen_quadratic(1, q[2], q[3], re + 2, im + 2);
-    if (im[0] != 0 && im[2] != 0) {
-      s1 = re[0] + I * fabs(im[0]);
-      s2 = re[2] + I * fabs(im[2]);
-    } else {
-      for (i = 1; i < 4; i++)          /* insertion sort by real part */
-        for (j = i; j > 0 && re[j] < re[j - 1]; j--) {
-          t = re[j]; re[j] = re[j - 1]; re[j - 1] = t;
-          t = im[j]; im[j] = im[j - 1]; im[j - 1] = t;
-        }
-      s1 = (re[0] + re[1]) / 2 + I * fmax(fabs(re[1] - re[0]) / 2, fabs(im[0]));
-      s2 = (re[2] + re[3]) / 2 + I * fmax(fabs(re[3] - re[2]) / 2, fabs(im[2]));
-    }
-    if (cimag(s1) == 0) s1 += I * 0x1p-30 * (1 + fabs(creal(s1)));
-    if (cimag(s2) == 0) s2 += I * 0x1p-30 * (1 + fabs(creal(s2)));
-  }
-  s1 = polish(a2, a1, a0, s1);
-  s2 = polish(a2, a1, a0, s2);
-  if (cabs(s1 - s2) <= CLOSE_REL * fmax(1, cabs(s1))) {
-    /* Q(m+u) = Q(m) + A u^2 + B u^3 + C u^4 about the centre (Q'(m) = 0):
-    ** the pair is u = +-d - (B/2A) d^2 + O(d^3), d^2 = -Q(m)/A, so its
-    ** midpoint is m - (B/2A) d^2 and its half-split squared d^2 + O(d^4) */
-    double complex m = centre(a2, a1, a0, (s1 + s2) / 2), dq, b3, d2;
-    double complex q0 = q_eval(a2, a1, a0, m, &dq);
-    double complex a = q_eval2(a2, a1, a0, m, &b3) / 2;
-    if (a != 0) {
-      d2 = -q0 / a;
-      m -= b3 / 6 * d2 / (2 * a);
-      s1 = m + csqrt(d2);
-      s2 = m - csqrt(d2);
-      s1 = creal(s1) + I * fabs(cimag(s1));
-      s2 = creal(s2) + I * fabs(cimag(s2));
-    }
-  }
-  *len = n2 * arclen_ell_product(creal(s1), cimag(s1), creal(s2), cimag(s2),
+  *len = n2 * arclen_ell_product(re[0], im[0], re[1], im[1],
                                  y, x, branch, calls);
   return ARCLEN_OK;
 }
