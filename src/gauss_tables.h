@@ -13,7 +13,7 @@ typedef struct arclen_gauss_rule {
   const double *w;
 } arclen_gauss_rule;
 
-/* Ascending in n, ended by a rule with n == 0. */
+/* Every order n = 1..64 at index n - 1, ended by a rule with n == 0. */
 extern const arclen_gauss_rule arclen_gauss_rules[];
 
 #endif

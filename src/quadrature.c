@@ -14,6 +14,7 @@
 ** no order up to NMAX meets their share of the tolerance.
 */
 #include <math.h>
+#include <stddef.h>
 #include <stdint.h>
 #include <string.h>
 
@@ -21,20 +22,27 @@
 #include "cubic.h"
 #include "gauss_tables.h"
 
+#ifndef FOOTCUT
+#define FOOTCUT 0.2
+#endif
+#ifndef GRADE
+#define GRADE 4.0
+#endif
 #define NMAX 48          /* highest order used before bisecting instead */
 #define MAXDEPTH 60      /* bisection levels below a critical piece */
 #define MAXSTACK (4 + 2 * MAXDEPTH)  /* pending pieces: depth-first search */
-#define RHO_CAP 64.0     /* a larger ellipse only inflates M */
+/* e = b^2 of the ellipse with rho = 64 ((rho - 1/rho)/2 squared): a larger
+** ellipse only inflates M. */
+#define E_CAP 1023.5000610351562
 /* Cap on bisections per integration: the depth cap alone allows 2^60
 ** pieces when every piece fails; 10^5 is far above what rtol 1e-15 needs
 ** on the hardest reference curve (found by fuzz/fuzz_length). */
 #define MAXSPLITS 100000L
 
-/* The rule with n points, or the smallest one with more. */
+/* The rule with n points (1 <= n <= 64, every order is tabulated at
+** index n - 1 by tools/gen_gauss_tables.py), clamped into that range. */
 static const arclen_gauss_rule *rule_at_least(int n) {
-  const arclen_gauss_rule *r = arclen_gauss_rules;
-  while (r[1].n != 0 && r->n < n) r++;
-  return r;
+  return &arclen_gauss_rules[n < 1 ? 0 : n > 64 ? 63 : n - 1];
 }
 
 /* hh * sum w_i f(c + hh x_i): the rule on [c - hh, c + hh]. */
@@ -72,93 +80,117 @@ static double rough_log(double x) {
          2 * z * (1 + z2 * (1.0 / 3 + z2 * (1.0 / 5 + z2 * (1.0 / 7 + z2 / 9))));
 }
 
-/* rho of the Bernstein ellipse with foci c -+ hh through the point z:
-** the semi-axis sum a + b = rho, with a = (|z - f1| + |z - f2|) / 2. */
-static double ellipse_rho(double c, double hh, double re, double im) {
-  double u = (re - c) / hh, v = im / hh, a;
-  if (fabs(u) + v > 1e100) return HUGE_VAL;   /* squares would overflow */
-  a = (sqrt((u - 1) * (u - 1) + v * v) + sqrt((u + 1) * (u + 1) + v * v)) / 2;
-  return a + sqrt((a - 1) * (a + 1));
-}
-
+/* The bound for one piece [c - hh, c + hh], in units of hh (u = (t - c)/hh).
+** For a branch point z = u + iv the Bernstein ellipse through it has
+** semi-axes a, b with a^2 - 1 = b^2 = e, where (|z|^2 - 1 = p)
+**     e = (p + sqrt(p^2 + 4 v^2)) / 2 = 2 v^2 / (sqrt(p^2 + 4 v^2) - p),
+** the second form for p < 0 (no cancellation next to the interval); then
+** rho = a + b and rho^2 - 1 = 2 e + 2 sqrt(e (1 + e)), also cancellation
+** free.  The nearest branch point (least e) sets the ellipse.  On it every
+** |z - r_k| <= |c - r_k| + hh a, so M <= lead prod (|c - r_k| + hh a). */
 typedef struct piece_bound {
-  double rho;         /* reach of analyticity, capped at RHO_CAP */
-  double c;           /* hh * (64/15) M rho^2 / (rho^2 - 1) */
+  double logc;        /* log of the bound's constant over the target */
+  double log_rho2;    /* a lower bound of log(rho^2): what a point gains */
+  double m;           /* M, for the crude bound of an unresolved piece */
   int inside;         /* a real (double) root strictly inside: must split */
 } piece_bound;
 
+/* log(rho^2) from g = rho^2 - 1, never above the true value: the
+** alternating series log(1 + g) >= g - g^2/2 for small g, else the rough
+** log less its error. */
+static double log_rho2_below(double g) {
+  return g < 0.0625 ? g * (1 - g / 2) : rough_log(1 + g) - 1e-5;
+}
+
 static void bound_piece(const arclen_branch *br, double c, double hh,
-                        piece_bound *pb) {
-  double rho = HUGE_VAL, m, alpha;
-  int k;
+                        double logk, piece_bound *pb) {
+  double e = E_CAP, inv = 1 / hh, d[4], a, g, prod, rho2;
+  int k, np = 0;
   pb->inside = 0;
   for (k = 0; k < br->n; k += 2) {     /* roots come in conjugate pairs */
-    if (br->im[k] == 0) {            /* no branch point, but a kink inside */
-      if (fabs(br->re[k] - c) < hh * (1 - 1e-12)) pb->inside = 1;
+    double dr = br->re[k] - c, im = br->im[k];
+    if (fabs(dr) + im > 1e100 * hh) {  /* far: squares would overflow */
+      d[np++] = fabs(dr) + im;         /* >= the distance */
+      continue;
+    }
+    d[np++] = sqrt(dr * dr + im * im);
+    if (im == 0) {                     /* no branch point, but a kink */
+      if (fabs(dr) < hh * (1 - 1e-12)) pb->inside = 1;
     } else {
-      double r = ellipse_rho(c, hh, br->re[k], br->im[k]);
-      if (r < rho) rho = r;
+      double u = dr * inv, v = im * inv, p = u * u + v * v - 1;
+      double s = sqrt(p * p + 4 * v * v);
+      double ek = p >= 0 ? (p + s) / 2 : 2 * v * v / (s - p);
+      if (ek < e) e = ek;
     }
   }
-  if (rho > RHO_CAP) rho = RHO_CAP;
-  pb->rho = rho;
-  /* M <= lead * prod sqrt(|c - r_k| + alpha), alpha the ellipse's
-  ** semi-major axis in t units: every |z - r_k| on it is at most that;
-  ** a conjugate pair contributes |c - r_k| + alpha. */
-  alpha = hh * (rho + 1 / rho) / 2;
-  m = br->lead;
-  for (k = 0; k < br->n; k += 2)
-    m *= sqrt((br->re[k] - c) * (br->re[k] - c) + br->im[k] * br->im[k]) + alpha;
-  pb->c = hh * (64.0 / 15.0) * m * rho * rho / ((rho - 1) * (rho + 1));
-}
-
-/* The smallest order whose bound c rho^(-2n) is <= target, or NULL past
-** NMAX.  The logs are rough (3e-6): n gets a margin of 1e-3 (a factor of
-** 1.002 on the bound) and the bound of the chosen order is computed
-** exactly. */
-static const arclen_gauss_rule *choose_rule(const piece_bound *pb,
-                                            double target) {
-  const arclen_gauss_rule *r;
-  /* A bound that underflowed to 0 (a piece of subnormal width next to a
-  ** root) is met by any rule; bisecting it could never make it positive. */
-  if (pb->c == 0 && target >= 0) return rule_at_least(2);
-  if (!(pb->c > 0) || !(target > 0)) return NULL;
-  if (pb->c <= target) {
-    r = rule_at_least(2);
-  } else {
-    double n, rate = 2 * rough_log(pb->rho) - 1e-5;
-    if (!(rate > 0)) return NULL;           /* rho ~ 1: no order will do */
-    n = (rough_log(pb->c / target) + 1e-3) / rate;
-    if (!(n <= NMAX)) return NULL;          /* also catches NaN */
-    r = rule_at_least(n < 2 ? 2 : (int)ceil(n));
+  g = 2 * e + 2 * sqrt(e * (1 + e));          /* rho^2 - 1 */
+  rho2 = 1 + g;
+  a = hh * sqrt(1 + e);                        /* semi-major axis, t units */
+  prod = br->lead;
+  for (k = 0; k < np; k++) prod *= d[k] + a;
+  pb->m = prod;
+  pb->log_rho2 = log_rho2_below(g);
+  /* log(C / target), C = hh (64/15) M rho^2 / (rho^2 - 1) and target =
+  ** rtol lest 2 hh / width: logk holds the factors common to all pieces
+  ** (start()); the product is taken whole when it is a normal number. */
+  prod *= rho2 / g;
+  if (prod > 1e-300 && prod < 1e300) {
+    pb->logc = logk + rough_log(prod);
+  } else {                                     /* huge or tiny parts */
+    pb->logc = logk + log(br->lead) + log(rho2) - log(g);
+    for (k = 0; k < np; k++) pb->logc += log(d[k] + a);
   }
-  return r;
 }
 
-typedef struct span { double a, b; int depth; } span;
+/* The smallest order whose bound C rho^(-2n) is <= the target, or NULL
+** past NMAX.  The logs are rough (3e-6 each): logc gets a margin of 1e-3
+** (a factor of 1.001 on the bound). */
+static const arclen_gauss_rule *choose_rule(const piece_bound *pb) {
+  double n;
+  if (pb->logc <= 0) return rule_at_least(2);   /* C <= target already */
+  if (!(pb->log_rho2 > 0)) return NULL;         /* rho ~ 1: no order will do */
+  n = (pb->logc + 1e-3) / pb->log_rho2;
+  if (!(n <= NMAX)) return NULL;                /* also catches NaN */
+  return rule_at_least(n < 2 ? 2 : (int)ceil(n));
+}
+
+/* A pending piece with the rule its bound asks for (NULL: cut it). */
+typedef struct span {
+  double a, b;
+  int depth;
+  const arclen_gauss_rule *r;
+  piece_bound pb;
+} span;
 
 /* The state of one adaptive integration over [t0, t1] (t0 < t1). */
 typedef struct integrator {
   arclen_hodo h;
   arclen_branch br;
   double rtol, lest, width;   /* tolerance, lower bound of L, t1 - t0 */
+  double logk;                /* log((32/15) width / (rtol lest)) */
   double mins[2];             /* feet of near branch points in (t0, t1) */
   int nmin;
-  span stack[MAXSTACK];
   int top;
   long evals, pieces, splits;
   int depth;
   double err;                 /* sum of accepted pieces' bounds */
   int want_err;               /* info requested: sum the bounds */
+  span stack[MAXSTACK];       /* last: start() leaves it uninitialised */
 } integrator;
 
+/* Push [a, b] with the rule that meets its share of the tolerance.  The
+** bound is taken here, not when the piece is popped: the pieces pushed
+** together (the first cuts, the halves of a cut) have independent bounds,
+** whose chains of square roots and divisions then run side by side. */
 static void push(integrator *in, double a, double b, int depth) {
-  if (in->top < MAXSTACK) {
-    in->stack[in->top].a = a;
-    in->stack[in->top].b = b;
-    in->stack[in->top].depth = depth;
-    in->top++;
-  }
+  span *s = &in->stack[in->top];
+  if (in->top >= MAXSTACK) return;
+  s->a = a;
+  s->b = b;
+  s->depth = depth;
+  bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, in->logk, &s->pb);
+  s->r = s->pb.inside ? NULL : choose_rule(&s->pb);
+  in->top++;
 }
 
 /* Set up: the cuts are the feet of the branch points near [t0, t1] (the
@@ -167,19 +199,22 @@ static void push(integrator *in, double a, double b, int depth) {
 ** so these are the speed's minima that matter -- the roots of Q'.Q'' that
 ** lie under no nearby branch point cost a piece and gain nothing.  L is
 ** bounded below by the sum of chords between cuts, so every piece's share
-** of the tolerance is safe. */
-static void start(integrator *in, const double *c, int dim, double t0,
-                  double t1, double rtol) {
+** of the tolerance, rtol lest w / width for width w, is safe.  Returns 0
+** when there is nothing to integrate (a point, or a zero speed). */
+static int start(integrator *in, const double *c, int dim, double t0,
+                 double t1, double rtol) {
   int i, j;
   double prev;
-  memset(in, 0, sizeof *in);
+  /* every field but the stack, which push() fills before pop reads it */
+  memset(in, 0, offsetof(integrator, stack));
   arclen_hodo_scaled(c, dim, &in->h);
+  if (in->h.zero) return 0;
   arclen_branch_points(&in->h, &in->br);
   in->rtol = rtol;
   in->width = t1 - t0;
   for (i = 0; i < in->br.n; i += 2) {
     double foot = in->br.re[i];
-    if (foot > t0 && foot < t1 && in->br.im[i] < 0.5 * in->width) {
+    if (foot > t0 && foot < t1 && in->br.im[i] < FOOTCUT * in->width) {
       for (j = in->nmin; j > 0 && in->mins[j - 1] > foot; j--)
         in->mins[j] = in->mins[j - 1];     /* insertion: keep ascending */
       in->mins[j] = foot;
@@ -192,14 +227,25 @@ static void start(integrator *in, const double *c, int dim, double t0,
     in->lest += arclen_hodo_chord(&in->h, prev, next);
     prev = next;
   }
+  /* Zero chords between every pair of cuts but a moving point: the curve
+  ** returns to where it was; bound L below by a coarse rule. */
+  if (!(in->lest > 0))
+    in->lest = 0.5 * apply_rule(&in->h, rule_at_least(8), t0 + in->width / 2,
+                                in->width / 2);
+  if (!(in->lest > 0)) return 0;
+  in->logk = log((32.0 / 15.0) * in->width / in->rtol) - log(in->lest);
   /* Cut at every foot right away. */
   push(in, in->nmin ? in->mins[in->nmin - 1] : t0, t1, 0);
   for (i = in->nmin - 1; i >= 0; i--)
     push(in, i ? in->mins[i - 1] : t0, in->mins[i], 0);
+  return 1;
 }
 
 /* Where to cut a piece: at a foot of a branch point inside it (the one
-** nearest its middle), else in the middle. */
+** nearest its middle); else, when the nearest branch point lies off one
+** end, at GRADE times its distance from that end (a geometric mesh towards
+** the singularity: each piece then sees it at the same relative distance,
+** so no piece needs a high order); else in the middle. */
 static double cut_point(const integrator *in, double a, double b) {
   double mid = a + (b - a) / 2, best = mid, dist = HUGE_VAL;
   double margin = 1e-3 * (b - a);
@@ -211,16 +257,17 @@ static double cut_point(const integrator *in, double a, double b) {
       dist = fabs(m - mid);
     }
   }
-  return best;
-}
-
-/* The rule for [a, b] that meets its share of the tolerance, or NULL. */
-static const arclen_gauss_rule *rule_for(const integrator *in, double a,
-                                         double b, piece_bound *pb) {
-  double share = in->rtol * in->lest * (b - a) / in->width;
-  bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, pb);
-  if (pb->inside) return NULL;
-  return choose_rule(pb, share);
+  if (dist < HUGE_VAL) return best;
+  for (i = 0; i < in->br.n; i += 2) {
+    double re = in->br.re[i], im = in->br.im[i];
+    double off = re < a ? a - re : re > b ? re - b : 0;
+    double d = GRADE * (off + im);
+    if (im > 0 && d > margin && d < dist) {   /* real roots: no singularity */
+      dist = d;
+      best = re < mid ? a + d : b - d;
+    }
+  }
+  return dist < (b - a) / 2 ? best : mid;
 }
 
 /* Pop the next piece (in increasing t) and integrate it.  A piece is cut
@@ -230,31 +277,34 @@ static const arclen_gauss_rule *rule_for(const integrator *in, double a,
 static int next_piece(integrator *in, double *from, double *to, double *len,
                       const arclen_gauss_rule **rule) {
   while (in->top > 0) {
-    span s = in->stack[--in->top];
-    double c = s.a + (s.b - s.a) / 2, hh = (s.b - s.a) / 2;
-    double err = 0, cut = cut_point(in, s.a, s.b);
-    piece_bound pb;
-    const arclen_gauss_rule *r = rule_for(in, s.a, s.b, &pb);
-    if (r == NULL && s.depth < MAXDEPTH && in->splits < MAXSPLITS &&
-        cut > s.a && cut < s.b) {
-      in->splits++;
-      push(in, cut, s.b, s.depth + 1);
-      push(in, s.a, cut, s.depth + 1);
-      continue;
+    const span *s = &in->stack[--in->top];
+    double a = s->a, b = s->b, c = a + (b - a) / 2, hh = (b - a) / 2;
+    double err = 0;
+    const arclen_gauss_rule *r = s->r;
+    int depth = s->depth;
+    if (r == NULL && depth < MAXDEPTH && in->splits < MAXSPLITS) {
+      double cut = cut_point(in, a, b);
+      if (cut > a && cut < b) {        /* s is overwritten from here on */
+        in->splits++;
+        push(in, cut, b, depth + 1);
+        push(in, a, cut, depth + 1);
+        continue;
+      }
     }
     if (r == NULL) {          /* bisection floor: a piece of ~1e-18 width */
       r = rule_at_least(NMAX);
-      err = 2 * hh * pb.c;    /* crude: width x a bound of f near the piece */
-    } else if (in->want_err) {
-      err = pb.c * pow(pb.rho, -2.0 * r->n);
+      err = 2 * (2 * hh) * s->pb.m;  /* crude: the rule and the integral */
+    } else if (in->want_err) {       /* are each at most width x M */
+      err = in->rtol * in->lest * (2 * hh / in->width) *
+            exp(s->pb.logc - r->n * s->pb.log_rho2);
     }
     *len = apply_rule(&in->h, r, c, hh);
     in->evals += r->n;
     in->pieces++;
-    if (s.depth > in->depth) in->depth = s.depth;
+    if (depth > in->depth) in->depth = depth;
     in->err += err;
-    *from = s.a;
-    *to = s.b;
+    *from = a;
+    *to = b;
     if (rule) *rule = r;
     return 1;
   }
@@ -291,16 +341,9 @@ int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
   if (e) return e;
   if (a == b) { *len = 0; return ARCLEN_OK; }
   if (a > b) { double t = a; a = b; b = t; }
-  start(&in, c, dim, a, b, o->rtol * 0.5);  /* half for rounding */
-  in.want_err = info != NULL;
-  if (!in.h.zero && in.lest > 0) {
+  if (start(&in, c, dim, a, b, o->rtol * 0.5)) {  /* half for rounding */
+    in.want_err = info != NULL;
     while (next_piece(&in, &pa, &pb, &piece, NULL)) sum += piece;
-  } else if (!in.h.zero) {
-    /* Zero chords between every pair of cuts but a moving point: the
-    ** curve returns to where it was; bound L below by a coarse rule. */
-    in.lest = 0.5 * apply_rule(&in.h, rule_at_least(8), 0.5, 0.5) * in.width;
-    if (in.lest > 0)
-      while (next_piece(&in, &pa, &pb, &piece, NULL)) sum += piece;
   }
   *len = ldexp(o->t0 > o->t1 ? -sum : sum, in.h.exp);
   fill_info(info, &in, in.h.exp);
@@ -346,11 +389,11 @@ int arclen_time_gauss(const double *c, int dim, double s,
   if (e) return e;
   if (isnan(s)) return ARCLEN_EINVAL;
   if (s <= 0) { *t = 0; return ARCLEN_OK; }
-  start(&in, c, dim, 0, 1, o->rtol * 0.25);
+  if (!start(&in, c, dim, 0, 1, o->rtol * 0.25)) {
+    *t = 1;              /* a point: every s > 0 is past its end */
+    return ARCLEN_OK;
+  }
   in.want_err = info != NULL;
-  if (in.h.zero) { *t = 1; return ARCLEN_OK; }
-  if (!(in.lest > 0))
-    in.lest = 0.5 * apply_rule(&in.h, rule_at_least(8), 0.5, 0.5);
   goal = ldexp(s, -in.h.exp);
   *t = 1;
   while (next_piece(&in, &pa, &pb, &piece, &r)) {
