@@ -34,11 +34,6 @@ static void add_pair(arclen_branch *b, double complex z, double rtol) {
   b->n += 2;
 }
 
-/* 2D: z' = A2 t^2 + A1 t + A0 as a complex quadratic with roots s1, s2, so
-** Q = |A2|^2 |t - s1|^2 |t - s2|^2 exactly and the branch points are s_k and
-** their conjugates.  The root formula avoids cancellation: d is the square
-** root of the discriminant on the side of A1, q = -(A1 + d)/2, roots q/A2
-** and A0/q (see notes/elliptic.md). */
 static double complex cdiv(double complex p, double complex q) {
   /* p / q by the textbook formula: the operands are scaled (hodo_scaled),
   ** so |q|^2 cannot overflow, and C99's careful division is slow. */
@@ -47,38 +42,52 @@ static double complex cdiv(double complex p, double complex q) {
           I * (cimag(p) * creal(q) - creal(p) * cimag(q))) / d;
 }
 
-static double complex root_of(double complex w) {
-  /* principal square root in real arithmetic (Kahan's formulation) */
-  double u = creal(w), v = cimag(w), r = sqrt(u * u + v * v);
-  double s = sqrt((r + fabs(u)) / 2);
-  if (s == 0) return 0;
-  return u >= 0 ? s + I * (v / (2 * s)) : fabs(v) / (2 * s) + I * copysign(s, v);
-}
-
+/* 2D: z' = A2 t^2 + A1 t + A0 as a complex quadratic with roots s1, s2, so
+** Q = |A2|^2 |t - s1|^2 |t - s2|^2 exactly and the branch points are s_k and
+** their conjugates.  The root formula avoids cancellation: d is the square
+** root of the discriminant D = A1^2 - 4 A2 A0 on the side of A1 (principal
+** root in Kahan's formulation), q = -(A1 + d)/2, roots q/A2 and A0/q (see
+** notes/elliptic.md).  In real arithmetic: this runs on every default-method
+** call, and C99's complex product checks for NaN and may call out. */
 static void branch2(const arclen_hodo *h, arclen_branch *b) {
-  double complex A2 = h->a2[0] + I * h->a2[1];
-  double complex A1 = h->a1[0] + I * h->a1[1];
-  double complex A0 = h->a0[0] + I * h->a0[1];
-  double n2 = h->a2[0] * h->a2[0] + h->a2[1] * h->a2[1];
-  double n1 = h->a1[0] * h->a1[0] + h->a1[1] * h->a1[1];
+  double x2 = h->a2[0], y2 = h->a2[1], x1 = h->a1[0], y1 = h->a1[1];
+  double x0 = h->a0[0], y0 = h->a0[1];
+  double n2 = x2 * x2 + y2 * y2, n1 = x1 * x1 + y1 * y1;
   if (n2 > 0) {
-    double complex d = root_of(A1 * A1 - 4 * A2 * A0);
-    double complex q;
-    if (creal(A1) * creal(d) + cimag(A1) * cimag(d) < 0) d = -d;
-    q = -(A1 + d) / 2;
+    double dr = (x1 * x1 - y1 * y1) - 4 * (x2 * x0 - y2 * y0);
+    double di = 2 * x1 * y1 - 4 * (x2 * y0 + y2 * x0);
+    double r = sqrt(dr * dr + di * di), s = sqrt((r + fabs(dr)) / 2);
+    double inv2 = 1 / n2, qr, qi, sr, si, nq;
     b->lead = sqrt(n2);
-    if (q == 0) {                        /* A1 = A0 = 0: double root at 0 */
+    if (s > 0) {                         /* d = sqrt(D), on the side of A1 */
+      double ur = dr >= 0 ? s : fabs(di) / (2 * s);
+      double ui = dr >= 0 ? di / (2 * s) : copysign(s, di);
+      if (x1 * ur + y1 * ui < 0) { ur = -ur; ui = -ui; }
+      qr = -(x1 + ur) / 2;
+      qi = -(y1 + ui) / 2;
+    } else {
+      qr = -x1 / 2;
+      qi = -y1 / 2;
+    }
+    if (qr == 0 && qi == 0) {            /* A1 = A0 = 0: double root at 0 */
       add_pair(b, 0, REAL_ROOT_RTOL2);
       add_pair(b, 0, REAL_ROOT_RTOL2);
       return;
     }
-    add_pair(b, cdiv(q, A2), REAL_ROOT_RTOL2);
-    add_pair(b, cdiv(A0, q), REAL_ROOT_RTOL2);
+    /* q / A2 = q conj(A2) / |A2|^2 and A0 / q = A0 conj(q) / |q|^2 */
+    sr = (qr * x2 + qi * y2) * inv2;
+    si = (qi * x2 - qr * y2) * inv2;
+    add_pair(b, sr + I * si, REAL_ROOT_RTOL2);
+    nq = 1 / (qr * qr + qi * qi);
+    sr = (x0 * qr + y0 * qi) * nq;
+    si = (y0 * qr - x0 * qi) * nq;
+    add_pair(b, sr + I * si, REAL_ROOT_RTOL2);
   } else if (n1 > 0) {
     b->lead = sqrt(n1);
-    add_pair(b, -cdiv(A0, A1), REAL_ROOT_RTOL2);
+    add_pair(b, -cdiv(h->a0[0] + I * h->a0[1], h->a1[0] + I * h->a1[1]),
+             REAL_ROOT_RTOL2);
   } else {
-    b->lead = sqrt(h->a0[0] * h->a0[0] + h->a0[1] * h->a0[1]);
+    b->lead = sqrt(x0 * x0 + y0 * y0);
   }
 }
 
