@@ -196,59 +196,68 @@ static double factor_newton(const double *m, double *v) {
   return best;
 }
 
-/* Ferrari's factors of the monic quartic from a resolvent root y:
-** quartic = (x^2 + a x/2 + y/2)^2 - (e x + f)^2 with e^2 = a^2/4 - b + y,
-** f^2 = y^2/4 - d and e f = (a y/2 - c)/2.  Variant 0 takes the larger of
-** e, f from its square and the other from e f; variant 1 both from their
-** squares (sign from e f): when both squares are rounding noise (a double
-** pair of factors) the quotient can be noise over noise. */
-static void ferrari_start(const double *m, double y, int variant,
+/* Ferrari's split of the monic quartic x^4 + a x^3 + b x^2 + c x + d:
+** quartic = F^2 - D^2 = (F - D)(F + D), F = x^2 + (a/2) x + f0,
+** D = e x + f, with e^2 = u, f0 = (B + u)/2, e f = (g + u a/2)/2 and
+** f^2 = f0^2 - d, where B = b - a^2/4 and g = (a/2) B - c.  Eliminating
+** e and f leaves the resolvent for u = e^2,
+**   u^3 + (2B - a^2/4) u^2 + (B^2 - 4d - a g) u - g^2 = 0,
+** which has a root u >= 0 (the value at 0 is -g^2 <= 0): real factors.
+** It is the classical resolvent in y = 2 f0 shifted by B, but formed from
+** the coefficients: near a double pair of factors u ~ 0 and its size
+** rests on g^2, which the resolvent in y rounds away (x^4 - 5.4e-12 x^3
+** + 2 x^2 + 1: y = 2 + 2.7e-12 with 8 - a^2 = 8 in its constant term;
+** fuzz/fuzz_roots).  Variant 0 takes the larger of e, f from its square
+** and the other from e f; variant 1 both from their squares (sign from
+** e f): when both squares are rounding noise the quotient can be noise
+** over noise. */
+static void ferrari_start(const double *m, double u, int variant,
                           double *v) {
-  double a = m[0], b = m[1], d = m[3];
-  double e2 = a * a / 4 - b + y, f2 = y * y / 4 - d, g = a * y / 2 - m[2];
-  double e, f;
-  if (e2 < 0) e2 = 0;
+  double a2 = m[0] / 2, B = m[1] - a2 * a2, d = m[3], g = a2 * B - m[2];
+  double f0 = (B + u) / 2, e2 = u > 0 ? u : 0, f2 = f0 * f0 - d;
+  double ef = (g + a2 * u) / 2, e, f;
   if (f2 < 0) f2 = 0;
-  if (variant == 1) { e = sqrt(e2); f = copysign(sqrt(f2), g); }
-  else if (e2 * e2 >= f2 * f2 && e2 > 0) { e = sqrt(e2); f = g / (2 * e); }
-  else if (f2 > 0) { f = sqrt(f2); e = g / (2 * f); }
+  if (variant == 1) { e = sqrt(e2); f = copysign(sqrt(f2), ef); }
+  else if (e2 * e2 >= f2 * f2 && e2 > 0) { e = sqrt(e2); f = ef / e; }
+  else if (f2 > 0) { f = sqrt(f2); e = ef / f; }
   else { e = 0; f = 0; }
-  /* p = a/2 +- e, q = y/2 +- f; the smaller q from q1 q2 = d */
-  v[0] = a / 2 + e; v[2] = a / 2 - e;
-  v[1] = y / 2 + f; v[3] = y / 2 - f;
+  /* the smaller q from q1 q2 = d */
+  v[0] = a2 + e; v[2] = a2 - e;
+  v[1] = f0 + f; v[3] = f0 - f;
   if (fabs(v[1]) > fabs(v[3]) && v[1] != 0) v[3] = d / v[1];
   else if (v[3] != 0) v[1] = d / v[3];
 }
 
+static int poly_roots(const double *p, int n, double *re, double *im);
+
 /* Monic quartic x^4 + m0 x^3 + m1 x^2 + m2 x + m3 (scaled) into
 ** v = {p1, q1, p2, q2}: Ferrari's split from a root of the resolvent
-** y^3 - b y^2 + (ac - 4d) y + (4bd - a^2 d - c^2), then Newton on the
-** factors' coefficients (Algorithm 1010).  The largest real root gives
-** real factors (e^2 >= 0); but where it is double, as for a double pair
-** of factors (-(2x^2+x+1)^2 rounded), rounding can make it a complex pair
-** and Cardano returns the simple root instead (e^2 < 0: a garbage split,
-** relative residual 12).  So every root is tried, the real part of a
-** complex pair as a real candidate, each polished on the cubic and then
-** as factors, keeping the least residual. */
+** (ferrari_start), then Newton on the factors' coefficients (Algorithm
+** 1010).  The largest root gives real factors; but where it is double, as
+** for a double pair of factors (-(2x^2+x+1)^2 rounded), rounding can make
+** it a complex pair, and taking the one real root instead gave a garbage
+** split (relative residual 12).  So every root is tried, the real part of
+** a complex pair as a real candidate, keeping the least residual. */
 static void factor_monic(const double *m, double *v) {
-  double a = m[0], b = m[1], c = m[2], d = m[3], y[3], e, f, best = HUGE_VAL;
-  double rr[2], ri[2], w[4], r;
-  double rb = -b, rc = a * c - 4 * d, rd = 4 * b * d - a * a * d - c * c;
-  int i, k, variant, ny = 1;
-  y[0] = cubic_deflate(rb, rc, rd, &e, &f);
-  if (arclen_quadratic(1, e, f, rr, ri) == 2) {
-    y[ny++] = cubic_polish(rb, rc, rd, rr[0]);
-    if (ri[0] == 0) y[ny++] = cubic_polish(rb, rc, rd, rr[1]);
-  }
-  for (i = 0; i < ny && best > FACTOR_GOOD; i++)
+  double a2 = m[0] / 2, B = m[1] - a2 * a2, g = a2 * B - m[2];
+  double res[4], u[3], ui[3], best = HUGE_VAL, w[4], r;
+  int i, k, variant, nu;
+  res[3] = 1; res[2] = 2 * B - a2 * a2; res[1] = B * B - 4 * m[3] - 2 * a2 * g;
+  res[0] = -g * g;
+  /* by the Newton polygon: the small roots u ~ sqrt(g^2) of a near-double
+  ** pair sit beside roots of size 1, beyond Cardano's absolute accuracy */
+  nu = poly_roots(res, 3, u, ui);
+  for (i = 0; i < nu && best > FACTOR_GOOD; i++) {
+    if (ui[i] < 0) continue;          /* a complex pair: its real part once */
     for (variant = 0; variant < 2 && best > FACTOR_GOOD; variant++) {
-      ferrari_start(m, y[i], variant, w);
+      ferrari_start(m, u[i], variant, w);
       r = factor_newton(m, w);
-      if (r < best || i + variant == 0) {
-        best = r;
+      if (r < best || best == HUGE_VAL) {   /* (v is always set) */
+        best = isnan(r) ? HUGE_VAL * 0.5 : r;
         for (k = 0; k < 4; k++) v[k] = w[k];
       }
     }
+  }
 }
 
 /* ---- scaling and the Newton polygon ------------------------------------
