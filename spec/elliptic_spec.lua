@@ -90,6 +90,57 @@ describe("elliptic", function()
     multiple({0, h, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, h)
   end)
 
+  -- Space cubics whose Q = |z'|^2 has roots close together (tools/ref_close3d.py,
+  -- mpmath): a near double complex pair (hodograph nearly in a plane through
+  -- the origin) erred 3.5e-11, a perturbed collinear stop 3.6e-7 (sub-range
+  -- beside it 1.5e-5), fuzz-found 3D stops 7e-6.  Close roots are now set in a
+  -- frame about their cluster (src/elliptic3d.c).  The issue's bound: 1e-13.
+  describe("close roots of |z'|^2 in 3D (close3d.tsv)", function()
+    local rows = H.tsv("close3d.tsv")
+    for _, family in ipairs(H.families(rows)) do
+      it(family .. ": s(1/4), s(1/2), s(3/4), L and a sub-range by the cluster within 1e-13", function()
+        local worst = H.worst_lengths(rows, family, function(c, t1)
+          return elliptic(c, 0, t1)
+        end)
+        for _, row in ipairs(rows) do
+          if row.family == family then
+            local t0, t1 = tonumber(row.t0), tonumber(row.t1)
+            local got = elliptic(H.curve(row), t0, t1)
+            assert.is_true(got == got, row.id .. ": NaN")
+            worst:add(H.relerr(got, tonumber(row.Lsub)),
+              ("%s [%.17g, %.17g]"):format(row.id, t0, t1))
+          end
+        end
+        assert.is_true(worst.err <= 1e-13,
+          ("worst %s: %.3g > 1e-13"):format(tostring(worst.id), worst.err))
+      end)
+      -- the default method reads its error bound off the same roots
+      -- (src/branch.c): a stop's quadruple root came out of Q's coefficients
+      -- to eps^(1/4) and gauss erred 7e-9 at tol 1e-15
+      it(family .. ": the default method at tol 1e-15 within 1e-14 (3D branch points)", function()
+        local worst = H.worst_lengths(rows, family, function(c, t1)
+          return arclen.length(c, {tol = 1e-15, t1 = t1})
+        end)
+        assert.is_true(worst.err <= 1e-14,
+          ("worst %s: %.3g > 1e-14"):format(tostring(worst.id), worst.err))
+      end)
+    end
+  end)
+
+  it("a curve near DBL_MAX: the scale is an exponent, the length finite", function()
+    -- hodograph 3 x 9e307 > DBL_MAX; gave inf (found by fuzz/fuzz_length).
+    -- P1 = P2 = P3 = 0: a straight line to the origin, its length |P0|
+    -- (111 beside 9e307 changes it by 1e-612 relative)
+    local cases = {
+      {{111, -8.9873684494978208e307, 0, 0, 0, 0, 0, 0}, 8.9873684494978208e307},
+      {{-3.9595441405013419e307, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}, 3.9595441405013419e307},
+    }
+    for _, case in ipairs(cases) do
+      local got = elliptic(case[1], 0, 1)
+      assert.is_true(H.relerr(got, case[2]) <= 1e-15, tostring(got))
+    end
+  end)
+
   it("a near-quadratic cubic takes the far-root series", function()
     -- degree-elevated quadratic (0,0) (3,6) (6,0), perturbed by 1e-6
     local c = {0, 0, 2, 4, 4, 4 + 1e-6, 6, 0}
