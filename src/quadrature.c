@@ -92,7 +92,8 @@ typedef struct piece_bound {
   double logc;        /* log2 of the bound's constant over the target, but
                       ** for the factors common to all pieces (logk) */
   double log_rho2;    /* a lower bound of log2(rho^2): what a point gains */
-  double m;           /* M, for the crude bound of an unresolved piece */
+  double m;           /* M >= |f| on the ellipse (scaled units) */
+  double e;           /* the ellipse's b^2 / hh^2, e as above */
   int inside;         /* a real (double) root strictly inside: must split */
 } piece_bound;
 
@@ -135,6 +136,7 @@ static void bound_piece(const arclen_branch *br, double c, double hh,
   prod = br->lead;
   for (k = 0; k < np; k++) prod *= d[k] + a;
   pb->m = prod;
+  pb->e = e;
   pb->log_rho2 = log_rho2_below(g);
   /* log2(C / target), C = hh (64/15) M rho^2 / (rho^2 - 1) and target =
   ** rtol lest 2 hh / width, but for logk, the factors common to all pieces
@@ -181,6 +183,7 @@ typedef struct integrator {
   long evals, pieces, splits;
   int depth;
   double err;                 /* sum of accepted pieces' bounds */
+  piece_bound last;           /* the bound of the piece last accepted */
   int want_err;               /* info requested: sum the bounds */
   span stack[MAXSTACK];       /* last: start() leaves it uninitialised */
 } integrator;
@@ -312,6 +315,7 @@ static int next_piece(integrator *in, double *from, double *to, double *len,
     *from = a;
     *to = b;
     if (rule) *rule = r;
+    in->last = s->pb;
     return 1;
   }
   return 0;
@@ -361,11 +365,47 @@ int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
 ** always brackets the answer, and a step leaving it is replaced by
 ** bisection.  Each s(t) is the piece's rule on [a, t] (a sub-interval keeps
 ** the piece's branch-point distance or better). */
+/* Whether a Newton step d from t (d = -g/f) lands within tol of the goal
+** without evaluating there: s(t + d) - goal = g + f d + R = R (up to the
+** rule error of g, which the tolerance's other half covers), and Taylor
+** gives |R| <= max |f'| d^2 / 2.  On the piece f is analytic inside its
+** Bernstein ellipse with |f| <= M, which holds a disc of radius
+** r = a_semi - 1 = e / (sqrt(1 + e) + 1) (times hh) about every point of
+** the piece, so |f'| <= M / r (Cauchy's estimate). */
+static int newton_certified(const piece_bound *pb, double hh, double d,
+                            double tol) {
+  double r = hh * pb->e / (sqrt(1 + pb->e) + 1);
+  return pb->m * d * d <= 2 * tol * r;
+}
+
+/* A first guess for s(t) = goal in [a, b]: the cubic Hermite interpolant
+** of s from its values 0, plen and slopes (the speeds) at the ends,
+** inverted by a few Newton steps on u = (t - a)/(b - a) kept in (0, 1).  It
+** starts the safeguarded Newton two steps closer than the chord would. */
+static double hermite_guess(const arclen_hodo *h, double a, double b,
+                            double plen, double goal) {
+  double w = b - a, fa = w * arclen_hodo_speed(h, a);
+  double fb = w * arclen_hodo_speed(h, b), u = goal / plen;
+  int it;
+  for (it = 0; it < 6; it++) {
+    double u2 = u * u, u3 = u2 * u;
+    double s = plen * (3 * u2 - 2 * u3) + fa * (u - 2 * u2 + u3) +
+               fb * (u3 - u2) - goal;
+    double ds = plen * (6 * u - 6 * u2) + fa * (1 - 4 * u + 3 * u2) +
+                fb * (3 * u2 - 2 * u);
+    double next = ds > 0 ? u - s / ds : -1;
+    if (!(next > 0 && next < 1)) break;      /* keep the last good u */
+    u = next;
+  }
+  return a + w * u;
+}
+
 static double solve_in_piece(integrator *in, double a, double b, double plen,
                              double goal, double tol,
                              const arclen_gauss_rule *r) {
-  double lo = a, hi = b, t = a + (b - a) * (goal / plen);
+  double lo = a, hi = b, t = hermite_guess(&in->h, a, b, plen, goal);
   int it;
+  in->evals += 2;
   for (it = 0; it < 100; it++) {
     double g = apply_rule(&in->h, r, a + (t - a) / 2, (t - a) / 2) - goal;
     double f = arclen_hodo_speed(&in->h, t), next;
@@ -373,7 +413,11 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
     if (fabs(g) <= tol) break;
     if (g < 0) lo = t; else hi = t;
     next = f > 0 ? t - g / f : lo + (hi - lo) / 2;
-    if (!(next > lo && next < hi)) next = lo + (hi - lo) / 2;
+    if (!(next > lo && next < hi)) {
+      next = lo + (hi - lo) / 2;
+    } else if (newton_certified(&in->last, (b - a) / 2, next - t, tol)) {
+      return next;
+    }
     if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) break;
     t = next;
   }
