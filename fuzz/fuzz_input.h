@@ -145,34 +145,4 @@ static inline void fz_fail(const char *what, const double *c, int dim,
   abort();
 }
 
-/* Open issue (reported): in 3D, a hodograph whose components differ by
-** more than 2^200 in size (a collinear reversal with a 1e-80..1e-160
-** transverse part) makes branch.c's Aberth iteration miss the speed's
-** double root: gauss errs up to 4% (and elliptic 5%).  Built with
-** -DFUZZ_SKIP_KNOWN (the long runs), such curves are not checked, so that
-** the fuzzer spends its time elsewhere; CI's build checks them. */
-static inline int fz_known_3d_issue(const double *c, int dim) {
-#ifdef FUZZ_SKIP_KNOWN
-  double big = 0, small = HUGE_VAL;
-  int i;
-  if (dim != 3) return 0;
-  for (i = 0; i < 9; i++) {
-    double d = fabs(c[i + 3] - c[i]);
-    big = fmax(big, d);
-    if (d > 0) small = fmin(small, d);
-  }
-  /* and a stop (a zero leg) in 3D: the quartic's multiple root at the
-  ** stop is found to ~1e-4 only (gauss sub-ranges err 1e-12, elliptic
-  ** 1e-8; reported) */
-  for (i = 0; i < 3; i++)
-    if (c[3 * i] == c[3 * i + 3] && c[3 * i + 1] == c[3 * i + 4] &&
-        c[3 * i + 2] == c[3 * i + 5])
-      return 1;
-  return big > 0 && small < ldexp(big, -200);
-#else
-  (void)c; (void)dim;
-  return 0;
-#endif
-}
-
 #endif
