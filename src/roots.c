@@ -197,25 +197,28 @@ static double factor_newton(const double *m, double *v) {
 }
 
 /* Ferrari's split of the monic quartic x^4 + a x^3 + b x^2 + c x + d:
-** quartic = F^2 - D^2 = (F - D)(F + D), F = x^2 + (a/2) x + f0,
-** D = e x + f, with e^2 = u, f0 = (B + u)/2, e f = (g + u a/2)/2 and
-** f^2 = f0^2 - d, where B = b - a^2/4 and g = (a/2) B - c.  Eliminating
-** e and f leaves the resolvent for u = e^2,
+** quartic = F^2 - D^2 = (F - D)(F + D), F = x^2 + (a/2) x + y/2,
+** D = e x + f, where e^2 = a^2/4 - b + y, f^2 = y^2/4 - d and
+** e f = (a y/2 - c)/2, y a root of the classical resolvent
+**   y^3 - b y^2 + (ac - 4d) y + (4bd - a^2 d - c^2) = 0.
+** Its largest root makes e^2 >= 0 (real factors).  The same in u = e^2,
+** shifted by B = b - a^2/4 from the coefficients, with g = (a/2) B - c:
 **   u^3 + (2B - a^2/4) u^2 + (B^2 - 4d - a g) u - g^2 = 0,
-** which has a root u >= 0 (the value at 0 is -g^2 <= 0): real factors.
-** It is the classical resolvent in y = 2 f0 shifted by B, but formed from
-** the coefficients: near a double pair of factors u ~ 0 and its size
-** rests on g^2, which the resolvent in y rounds away (x^4 - 5.4e-12 x^3
-** + 2 x^2 + 1: y = 2 + 2.7e-12 with 8 - a^2 = 8 in its constant term;
-** fuzz/fuzz_roots).  Variant 0 takes the larger of e, f from its square
-** and the other from e f; variant 1 both from their squares (sign from
-** e f): when both squares are rounding noise the quotient can be noise
-** over noise. */
-static void ferrari_start(const double *m, double u, int variant,
-                          double *v) {
-  double a2 = m[0] / 2, B = m[1] - a2 * a2, d = m[3], g = a2 * B - m[2];
-  double f0 = (B + u) / 2, e2 = u > 0 ? u : 0, f2 = f0 * f0 - d;
-  double ef = (g + a2 * u) / 2, e, f;
+** y/2 = (B + u)/2, e f = (g + u a/2)/2; its value at 0 is -g^2 <= 0, so
+** it has a root u >= 0.  Each form holds its small roots to their own
+** size, which the other's shift loses: near a double pair of factors
+** u ~ |g| while y = 2 + 2.7e-12 in x^4 - 5.4e-12 x^3 + 2 x^2 + 1 (the
+** y-resolvent's constant 8 - a^2 rounds to 8: no real split survives);
+** with one root far beyond the other three (2^-17: 3.05e-5 x^4 + 9 x^3
+** - 43 x^2 + 51 x + 1) y ~ tiny while all three u crowd about a^2/4
+** (fuzz/fuzz_roots, both).  A candidate root gives e^2, y/2 = f0 and e f;
+** variant 0 takes the larger of e, f from its square and the other from
+** e f; variant 1 both from their squares (sign from e f): when both
+** squares are rounding noise the quotient can be noise over noise. */
+static void ferrari_start(const double *m, double e2, double f0, double ef,
+                          int variant, double *v) {
+  double a2 = m[0] / 2, d = m[3], f2 = f0 * f0 - d, e, f;
+  if (e2 < 0) e2 = 0;
   if (f2 < 0) f2 = 0;
   if (variant == 1) { e = sqrt(e2); f = copysign(sqrt(f2), ef); }
   else if (e2 * e2 >= f2 * f2 && e2 > 0) { e = sqrt(e2); f = ef / e; }
@@ -231,30 +234,38 @@ static void ferrari_start(const double *m, double u, int variant,
 static int poly_roots(const double *p, int n, double *re, double *im);
 
 /* Monic quartic x^4 + m0 x^3 + m1 x^2 + m2 x + m3 (scaled) into
-** v = {p1, q1, p2, q2}: Ferrari's split from a root of the resolvent
+** v = {p1, q1, p2, q2}: Ferrari's split from a root of a resolvent
 ** (ferrari_start), then Newton on the factors' coefficients (Algorithm
 ** 1010).  The largest root gives real factors; but where it is double, as
 ** for a double pair of factors (-(2x^2+x+1)^2 rounded), rounding can make
 ** it a complex pair, and taking the one real root instead gave a garbage
-** split (relative residual 12).  So every root is tried, the real part of
-** a complex pair as a real candidate, keeping the least residual. */
+** split (relative residual 12).  So every root of both resolvents is
+** tried, the real part of a complex pair as a real candidate, keeping the
+** least residual; the resolvents are solved by the Newton polygon, as
+** their small roots sit beside roots of size 1. */
 static void factor_monic(const double *m, double *v) {
-  double a2 = m[0] / 2, B = m[1] - a2 * a2, g = a2 * B - m[2];
-  double res[4], u[3], ui[3], best = HUGE_VAL, w[4], r;
-  int i, k, variant, nu;
-  res[3] = 1; res[2] = 2 * B - a2 * a2; res[1] = B * B - 4 * m[3] - 2 * a2 * g;
-  res[0] = -g * g;
-  /* by the Newton polygon: the small roots u ~ sqrt(g^2) of a near-double
-  ** pair sit beside roots of size 1, beyond Cardano's absolute accuracy */
-  nu = poly_roots(res, 3, u, ui);
-  for (i = 0; i < nu && best > FACTOR_GOOD; i++) {
-    if (ui[i] < 0) continue;          /* a complex pair: its real part once */
-    for (variant = 0; variant < 2 && best > FACTOR_GOOD; variant++) {
-      ferrari_start(m, u[i], variant, w);
-      r = factor_newton(m, w);
-      if (r < best || best == HUGE_VAL) {   /* (v is always set) */
-        best = isnan(r) ? HUGE_VAL * 0.5 : r;
-        for (k = 0; k < 4; k++) v[k] = w[k];
+  double a = m[0], b = m[1], c = m[2], d = m[3], a2 = a / 2;
+  double B = b - a2 * a2, g = a2 * B - c, res[2][4], r[3], ri[3];
+  double best = HUGE_VAL, w[4], t;
+  int form, i, k, variant, nr;
+  res[0][3] = 1; res[0][2] = 2 * B - a2 * a2;
+  res[0][1] = B * B - 4 * d - 2 * a2 * g; res[0][0] = -g * g;
+  res[1][3] = 1; res[1][2] = -b; res[1][1] = a * c - 4 * d;
+  res[1][0] = 4 * b * d - a * a * d - c * c;
+  for (form = 0; form < 2 && best > FACTOR_GOOD; form++) {
+    nr = poly_roots(res[form], 3, r, ri);
+    for (i = 0; i < nr && best > FACTOR_GOOD; i++) {
+      double e2, f0, ef;
+      if (ri[i] < 0) continue;       /* a complex pair: its real part once */
+      if (form == 0) { e2 = r[i]; f0 = (B + r[i]) / 2; ef = (g + a2 * r[i]) / 2; }
+      else { e2 = a2 * a2 - b + r[i]; f0 = r[i] / 2; ef = (a2 * r[i] - c) / 2; }
+      for (variant = 0; variant < 2 && best > FACTOR_GOOD; variant++) {
+        ferrari_start(m, e2, f0, ef, variant, w);
+        t = factor_newton(m, w);
+        if (t < best || best == HUGE_VAL) {   /* (v is always set) */
+          best = isnan(t) ? HUGE_VAL * 0.5 : t;
+          for (k = 0; k < 4; k++) v[k] = w[k];
+        }
       }
     }
   }
