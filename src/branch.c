@@ -131,11 +131,15 @@ static double complex near_cusp(const arclen_hodo *h, double complex z) {
   return t + I * sqrt(hh / dd);
 }
 
+/* Representatives of two roots of Q this close (relative) are a cluster:
+** as in elliptic3d.c (CLOSE_REL), where the roots are then recomputed. */
+#define CLUSTER_REL 0.05
+
 static void branch3(const arclen_hodo *h, arclen_branch *b) {
   double q[5] = {0, 0, 0, 0, 0}, re[4], im[4];
-  double complex z[4];
+  double complex z[4], rep[4];
   int used[4] = {0, 0, 0, 0};
-  int k, j, n, deg = 4;
+  int k, j, n, nr = 0, deg = 4;
   for (k = 0; k < 3; k++) {
     q[4] += h->a2[k] * h->a2[k];
     q[3] += 2 * h->a2[k] * h->a1[k];
@@ -146,14 +150,6 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
   while (deg > 0 && q[deg] == 0) deg--;
   b->lead = sqrt(q[deg]);
   if (deg == 0) return;
-  if (deg == 4 && arclen_ell_roots3d(h->a2, h->a1, h->a0, re, im) == ARCLEN_OK) {
-    /* the elliptic method's roots: polished on the hodograph, and close
-    ** ones (a stop: a quadruple root, found to eps^(1/4) from Q's
-    ** coefficients) set in a frame about their cluster (elliptic3d.c) */
-    add_pair(b, re[0] + I * im[0], REAL_ROOT_RTOL3);
-    add_pair(b, re[1] + I * im[1], REAL_ROOT_RTOL3);
-    return;
-  }
   n = arclen_quartic(q[4], q[3], q[2], q[1], q[0], re, im);
   for (k = 0; k < n; k++) z[k] = re[k] + I * im[k];
   for (k = 0; k < n; k++) {
@@ -168,10 +164,22 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
       if (dist < bestd) { bestd = dist; best = j; }
     }
     if (best >= 0) used[best] = 1;
-    /* the pair's mean: (z + conj(partner)) / 2 */
-    add_pair(b, near_cusp(h, best >= 0 ? (z[k] + conj(z[best])) / 2 : z[k]),
-             REAL_ROOT_RTOL3);
+    /* the pair's mean: (z + conj(partner)) / 2, in the upper half plane */
+    rep[nr] = best >= 0 ? (z[k] + conj(z[best])) / 2 : z[k];
+    rep[nr] = creal(rep[nr]) + I * fabs(cimag(rep[nr]));
+    nr++;
   }
+  if (deg == 4 && nr == 2 &&
+      cabs(rep[0] - rep[1]) <= CLUSTER_REL * fmax(1, cabs(rep[0])) &&
+      arclen_ell_roots3d(h->a2, h->a1, h->a0, re, im) == ARCLEN_OK) {
+    /* close roots (a stop: a quadruple root, found to eps^(1/4) from Q's
+    ** coefficients; a near double pair): the elliptic method's, set in a
+    ** frame about their cluster (elliptic3d.c) */
+    add_pair(b, re[0] + I * im[0], REAL_ROOT_RTOL3);
+    add_pair(b, re[1] + I * im[1], REAL_ROOT_RTOL3);
+    return;
+  }
+  for (k = 0; k < nr; k++) add_pair(b, near_cusp(h, rep[k]), REAL_ROOT_RTOL3);
 }
 
 void arclen_branch_points(const arclen_hodo *h, arclen_branch *b) {
