@@ -172,26 +172,35 @@ static double cubic_deflate(double b, double c, double d, double *e,
 ** evaluated with about two roundings) is rounding noise: stop there. */
 #define FACTOR_GOOD (8 * DBL_EPSILON)
 
-/* Newton on the four coefficient equations from v, each step kept only
-** while the residual falls; returns the residual.  The cap is above
-** NEWTON_CAP: at a double pair of factors (x^2 + x/2 + 1/2)^2 the Jacobian
-** (whose determinant is the factors' resultant) is singular and Newton
-** only halves the error per step, from the ~eps^(1/4) that a double root
-** of the resolvent leaves in e = sqrt(e^2) down to the sqrt(eps) whose
-** square is the rounding level of the residual: about 13 halvings. */
+/* Newton on the four coefficient equations from v; v ends as the iterate
+** of least residual, which is returned.  A step may raise the residual
+** on the way to convergence (as Bairstow's first step does in
+** polish_factor), so the iteration goes on until STALL steps in a row
+** bring nothing better.  The cap is above NEWTON_CAP: at a double pair of
+** factors (x^2 + x/2 + 1/2)^2 the Jacobian (whose determinant is the
+** factors' resultant) is singular and Newton only halves the error per
+** step, from the ~eps^(1/4) that a double root of the resolvent leaves in
+** e = sqrt(e^2) down to the sqrt(eps) whose square is the rounding level
+** of the residual: about 13 halvings. */
 #define FACTOR_NEWTON_CAP 40
+#define STALL 3
 
 static double factor_newton(const double *m, double *v) {
   double best = resid_norm(v, m), jac[4][4], fv[4], w[4], r;
-  int i, k;
+  int i, k, stall = 0;
+  for (k = 0; k < 4; k++) w[k] = v[k];
   for (i = 0; i < FACTOR_NEWTON_CAP && best > FACTOR_GOOD / 8; i++) {
-    factor_residual(v, m, fv, jac);
+    factor_residual(w, m, fv, jac);
     if (!solve4(jac, fv)) break;
-    for (k = 0; k < 4; k++) w[k] = v[k] - fv[k];
+    for (k = 0; k < 4; k++) w[k] -= fv[k];
     r = resid_norm(w, m);
-    if (!(r < best)) break;
-    best = r;
-    for (k = 0; k < 4; k++) v[k] = w[k];
+    if (!(r == r) || !isfinite(w[0] + w[1] + w[2] + w[3])) break;
+    if (r < best) {
+      best = r; stall = 0;
+      for (k = 0; k < 4; k++) v[k] = w[k];
+    } else if (++stall >= STALL) {
+      break;
+    }
   }
   return best;
 }
@@ -410,26 +419,34 @@ static double factor_bwd(const double *c, int n, double u, double v) {
 
 /* The quadratic factor y^2 + u y + v of a group, found from the group's
 ** own coefficients, polished by Newton on Bairstow's remainder of the
-** whole scaled polynomial c[0..n], each step kept only while the factor's
-** roots solve c better (factor_bwd).  Per-root Newton (polish_root)
+** whole scaled polynomial c[0..n], ending at the iterate whose roots
+** solve c best (factor_bwd).  Per-root Newton (polish_root)
 ** stalls at a near-double pair, where p' is about 0: -x (x+1)^2 +
 ** 3.75e-12 x^4 kept the group's double root -1 (relative residual
 ** 3.8e-13, fuzz/fuzz_roots); the pair's factor is well-determined even
 ** where its roots are not.  The Jacobian is singular at an exact double
 ** root, so, as for the quartic's factors, convergence there is linear:
-** FACTOR_NEWTON_CAP. */
+** FACTOR_NEWTON_CAP.  The first step from the group's coefficients may
+** raise factor_bwd (3.05e-5 x^4 + 25 x^3 - 115 x^2 - x: the small root
+** overshoots) before the second lands: the best iterate is kept, as in
+** factor_newton. */
 static void polish_factor(const double *c, int n, double *u, double *v) {
-  double b[2], bu[2], bv[2], det, nu, nv, r, best = factor_bwd(c, n, *u, *v);
-  int i;
+  double b[2], bu[2], bv[2], det, nu = *u, nv = *v, r;
+  double best = factor_bwd(c, n, *u, *v);
+  int i, stall = 0;
   for (i = 0; i < FACTOR_NEWTON_CAP && best > 0; i++) {
-    bairstow(c, n, *u, *v, b, bu, bv);
+    bairstow(c, n, nu, nv, b, bu, bv);
     det = bu[1] * bv[0] - bv[1] * bu[0];
     if (det == 0 || !isfinite(det)) break;
-    nu = *u - (b[1] * bv[0] - bv[1] * b[0]) / det;
-    nv = *v - (bu[1] * b[0] - b[1] * bu[0]) / det;
+    nu -= (b[1] * bv[0] - bv[1] * b[0]) / det;
+    nv -= (bu[1] * b[0] - b[1] * bu[0]) / det;
+    if (!isfinite(nu) || !isfinite(nv)) break;
     r = factor_bwd(c, n, nu, nv);
-    if (!(r < best)) break;
-    best = r; *u = nu; *v = nv;
+    if (r < best) {
+      best = r; stall = 0; *u = nu; *v = nv;
+    } else if (++stall >= STALL) {
+      break;
+    }
   }
 }
 
