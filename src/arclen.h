@@ -295,6 +295,9 @@ void arclen_conic_AB(double w, double delta, double *A, double *B);
 void arclen_conic_scheme_AB(int scheme, double w, double *A, double *B);
 double arclen_conic_gnorm(double A, double B);       /* Prop 13 */
 double arclen_conic_weight(double w, int level);     /* w_r of eq. (4) */
+/* Legs p1 - p0, p2 - p1 and chord p2 - p0 (v = ax ay cx cy kx ky), each one
+** rounding; returns 1 when they had to be halved to stay finite, else 0. */
+int arclen_conic_legs(const double p[6], double v[6]);
 /* 1 when p0 = p1, p1 = p2 or the three are collinear (to rounding). */
 int arclen_conic_degenerate(const double p[6]);
 /* ARCLEN_OK, EINVAL (non-finite point) or EDOMAIN (bad w, degenerate). */
@@ -309,13 +312,16 @@ int arclen_conic_bound(const double p[6], double w, int scheme, int level,
 int arclen_conic_level(const double p[6], double w, int scheme, double tol,
                        int *level, double *bound);
 /* The 2^level cubics of eq. (6) into out[8 << level]; *bound (may be NULL)
-** as arclen_conic_bound.  The first and last points are p0, p2 exactly. */
+** as arclen_conic_bound.  The first and last points are p0, p2 exactly.
+** EOVERFLOW when a control point lies beyond DBL_MAX (only the mid-point
+** scheme, whose lambda exceeds 1 for w > 2, leaves the triangle). */
 int arclen_conic_cubics(const double p[6], double w, int scheme, int level,
                         double *out, double *bound);
 void arclen_conic_point(const double p[6], double w, double t, double pt[2]);
 /* conic_length.c: the exact length of the whole arc (R_F, R_D; parabola
 ** in closed form).  info (may be NULL): branch ellipse/parabola/hyperbola,
-** calls = R-function calls.  0, EINVAL, EDOMAIN or EOVERFLOW. */
+** calls = R-function calls.  0, EINVAL, EDOMAIN or EOVERFLOW (the length
+** exceeds DBL_MAX: only when the control polygon does). */
 int arclen_conic_length(const double p[6], double w, double *len,
                         arclen_info *info);
 /* conic_arc.c: other descriptions reduced to (p0, p1, p2; w). */

@@ -172,16 +172,36 @@ static double level_factor(int scheme, double w) {
   return 0.25 * (w < 1 ? 1 / (w * w) : 1) * arclen_conic_gnorm(A, B);
 }
 
+/* The legs a = p1 - p0, c = p2 - p1 and the chord k = p2 - p0 into v = ax
+** ay cx cy kx ky, each one rounding of the inputs (so a short leg next to
+** far-away points keeps its digits).  When a difference would overflow
+** (points beyond +-DBL_MAX/2 on both sides) the halved inputs are
+** differenced instead and 1 is returned: v is then half the legs (halving
+** is exact but for subnormals, whose lost bit is below the difference's
+** own rounding).  Otherwise 0. */
+int arclen_conic_legs(const double p[6], double v[6]) {
+  static const int to[6] = {2, 3, 4, 5, 4, 5}, from[6] = {0, 1, 2, 3, 0, 1};
+  int i, half = 0;
+  for (i = 0; i < 6; i++) {
+    v[i] = p[to[i]] - p[from[i]];
+    if (!isfinite(v[i])) half = 1;
+  }
+  if (half)
+    for (i = 0; i < 6; i++) v[i] = p[to[i]] / 2 - p[from[i]] / 2;
+  return half;
+}
+
 int arclen_conic_degenerate(const double p[6]) {
-  double e1x, e1y, e2x, e2y, l1, l2, s;
-  e1x = p[2] - p[0]; e1y = p[3] - p[1];
-  e2x = p[4] - p[2]; e2y = p[5] - p[3];
-  l1 = hypot(e1x, e1y); l2 = hypot(e2x, e2y);
-  if (!(l1 > 0) || !(l2 > 0) || !isfinite(l1) || !isfinite(l2))
-    return 1;
+  double v[6], l1, l2, s;
+  int i;
+  for (i = 0; i < 6; i++)
+    if (!isfinite(p[i])) return 1;
+  arclen_conic_legs(p, v);   /* a half scale leaves the directions alone */
+  l1 = hypot(v[0], v[1]); l2 = hypot(v[2], v[3]);
+  if (!(l1 > 0) || !(l2 > 0)) return 1;
   /* sine of the turning angle at p1; below a few rounding errors the
   ** triangle is flat and the conic degenerates to a segment */
-  s = (e1x / l1) * (e2y / l2) - (e1y / l1) * (e2x / l2);
+  s = (v[0] / l1) * (v[3] / l2) - (v[1] / l1) * (v[2] / l2);
   return !(fabs(s) > 16 * DBL_EPSILON);
 }
 
@@ -197,8 +217,9 @@ int arclen_conic_check(const double p[6], double w) {
 /* Split the conic piece t[6] = (a, b, c) with weight w at its mid-point
 ** (eq. 4): left (a, (a + w b)/(1 + w), m), right (m, (w b + c)/(1 + w), c). */
 static void split_half(const double t[6], double w, int right, double out[6]) {
-  /* (a + w b)/(1 + w) = (a v + b)/(v + 1), v = 1/w: w b must not overflow */
-  double v = w > W_BIG ? 1 / w : 1, s = w > W_BIG ? 1 : w;
+  /* (a + w b)/(1 + w) = (a v + b)/(v + 1), v = 1/w, for w > 1: the sum
+  ** is at most |a| + |b| (w b itself must not overflow) */
+  double v = w > 1 ? 1 / w : 1, s = w > 1 ? 1 : w;
   double l1x = (t[0] * v + s * t[2]) / (v + s);
   double l1y = (t[1] * v + s * t[3]) / (v + s);
   double r1x = (s * t[2] + t[4] * v) / (v + s);
@@ -215,21 +236,33 @@ static void split_half(const double t[6], double w, int right, double out[6]) {
 
 /* Walk the 2^level pieces of level `level` in order, keeping the path from
 ** the root (no allocation: one triangle per depth).  Coordinates are
-** relative to p0 so that far-from-origin conics keep their digits.  For
-** each piece: the second difference |a - 2b + c| enters the bound; when out
-** is not NULL, the cubic of eq. (6) is written (absolute coordinates).
-** Returns max |a - 2b + c|. */
+** relative to p0 (far-from-origin conics keep their digits), and scaled
+** by 2^-*half (0, 1 or 2) so that they stay below DBL_MAX/4: sums of two
+** of them, and the control points up to 4/3 of the way along a leg, do
+** not overflow.  Points are written as 2^*half (t + p0 / 2^*half), which
+** overflows only where the point itself is beyond DBL_MAX.  For each
+** piece: the second difference |a - 2b + c| enters the bound; when out is
+** not NULL, the cubic of eq. (6) is written (absolute coordinates).
+** Returns max |a - 2b + c| (scaled as the coordinates). */
 static double walk(const double p[6], double w, int level, double lambda,
-                   double *out) {
+                   double *out, int *half) {
   double tri[ARCLEN_CONIC_MAXLEVEL + 1][6], wd[ARCLEN_CONIC_MAXLEVEL + 1];
-  double ox = p[0], oy = p[1], dmax = 0;
+  double v[6], ox, oy, sh, dmax = 0;
   long n = 1L << level, i;
   int d;
-  for (d = 0; d < 3; d++) {
-    tri[0][2 * d] = p[2 * d] - ox;
-    tri[0][2 * d + 1] = p[2 * d + 1] - oy;
+  *half = arclen_conic_legs(p, v);
+  for (d = 0; d < 6; d++)
+    if (fabs(v[d]) > DBL_MAX / 4) dmax = 1;
+  if (dmax > 0) {     /* halving a number this large is exact */
+    for (d = 0; d < 6; d++) v[d] /= 2;
+    ++*half;
+    dmax = 0;
   }
+  sh = ldexp(1, *half);
+  ox = p[0] / sh; oy = p[1] / sh;
   tri[0][0] = tri[0][1] = 0;
+  tri[0][2] = v[0]; tri[0][3] = v[1];
+  tri[0][4] = v[4]; tri[0][5] = v[5];
   wd[0] = w;
   for (d = 1; d <= level; d++) wd[d] = sqrt((1 + wd[d - 1]) / 2);
   for (i = 0; i < n; i++) {
@@ -250,12 +283,12 @@ static double walk(const double p[6], double w, int level, double lambda,
     if (hypot(dx, dy) > dmax) dmax = hypot(dx, dy);
     if (out != NULL) {
       double *c = out + 8 * i;
-      c[0] = t[0] + ox; c[1] = t[1] + oy;
-      c[2] = (t[0] + lambda * (t[2] - t[0])) + ox;
-      c[3] = (t[1] + lambda * (t[3] - t[1])) + oy;
-      c[4] = (t[4] + lambda * (t[2] - t[4])) + ox;
-      c[5] = (t[5] + lambda * (t[3] - t[5])) + oy;
-      c[6] = t[4] + ox; c[7] = t[5] + oy;
+      c[0] = (t[0] + ox) * sh; c[1] = (t[1] + oy) * sh;
+      c[2] = ((t[0] + lambda * (t[2] - t[0])) + ox) * sh;
+      c[3] = ((t[1] + lambda * (t[3] - t[1])) + oy) * sh;
+      c[4] = ((t[4] + lambda * (t[2] - t[4])) + ox) * sh;
+      c[5] = ((t[5] + lambda * (t[3] - t[5])) + oy) * sh;
+      c[6] = (t[4] + ox) * sh; c[7] = (t[5] + oy) * sh;
     }
   }
   if (out != NULL) {  /* the ends are the conic's ends, exactly */
@@ -263,6 +296,13 @@ static double walk(const double p[6], double w, int level, double lambda,
     out[8 * n - 2] = p[4]; out[8 * n - 1] = p[5];
   }
   return dmax;
+}
+
+/* Theorem 1's factor times max |a - 2b + c| (given scaled by 2^-half):
+** 0 stays 0 and inf stays inf, never 0 * inf. */
+static double scaled_bound(double factor, double dmax, int half) {
+  if (factor == 0) return 0;
+  return ldexp(factor * dmax, half);
 }
 
 static int check_args(const double p[6], double w, int scheme, int level) {
@@ -281,8 +321,11 @@ int arclen_conic_bound(const double p[6], double w, int scheme, int level,
   *bound = NAN;
   if (rc != ARCLEN_OK) return rc;
   wr = arclen_conic_weight(w, level);
-  *bound = level_factor(scheme, wr) * walk(p, w, level, 0, NULL);
-  if (isnan(*bound)) *bound = HUGE_VAL;   /* inf * 0 cannot happen; be safe */
+  {
+    int half;
+    double dmax = walk(p, w, level, 0, NULL, &half);
+    *bound = scaled_bound(level_factor(scheme, wr), dmax, half);
+  }
   return ARCLEN_OK;
 }
 
@@ -309,8 +352,15 @@ int arclen_conic_cubics(const double p[6], double w, int scheme, int level,
   if (rc != ARCLEN_OK) return rc;
   wr = arclen_conic_weight(w, level);
   {
-    double dmax = walk(p, w, level, arclen_conic_lambda(scheme, wr), out);
-    if (bound != NULL) *bound = level_factor(scheme, wr) * dmax;
+    int half;
+    long i;
+    double dmax = walk(p, w, level, arclen_conic_lambda(scheme, wr), out,
+                       &half);
+    if (bound != NULL) *bound = scaled_bound(level_factor(scheme, wr), dmax, half);
+    /* lambda > 1 (the mid-point scheme beyond w = 2) puts the inner control
+    ** points outside the triangle: near DBL_MAX they may not exist */
+    for (i = 0; i < 8L << level; i++)
+      if (!isfinite(out[i])) return ARCLEN_EOVERFLOW;
   }
   return ARCLEN_OK;
 }

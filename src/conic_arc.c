@@ -22,12 +22,18 @@ int arclen_conic_normal_weight(double w0, double w1, double w2, double *w) {
   return isfinite(*w) && *w > 0 ? ARCLEN_OK : ARCLEN_EDOMAIN;
 }
 
-/* The point of the ellipse at unit-frame coordinates (X, Y). */
-static void ellipse_map(const double e[5], double X, double Y, double *x,
-                        double *y) {
+/* The point of the ellipse at unit-frame coordinates (X, Y); where the
+** terms overflow, the halves are summed and doubled (which overflows only
+** when the point itself is beyond DBL_MAX).  Returns 0 or EOVERFLOW. */
+static int ellipse_map(const double e[5], double X, double Y, double *x,
+                       double *y) {
   double cp = cos(e[4]), sp = sin(e[4]);
   *x = e[0] + (e[2] * X) * cp - (e[3] * Y) * sp;
   *y = e[1] + (e[2] * X) * sp + (e[3] * Y) * cp;
+  if (isfinite(*x) && isfinite(*y)) return ARCLEN_OK;
+  *x = 2 * (e[0] / 2 + (e[2] / 2 * X) * cp - (e[3] / 2 * Y) * sp);
+  *y = 2 * (e[1] / 2 + (e[2] / 2 * X) * sp + (e[3] / 2 * Y) * cp);
+  return isfinite(*x) && isfinite(*y) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
 }
 
 /* The arc of the ellipse centre (cx, cy), semi-axes rx, ry, rotated by phi
@@ -36,7 +42,7 @@ static void ellipse_map(const double e[5], double X, double Y, double *x,
 ** of angle 2h is the image of a circular arc: w = cos h, and p1 the image
 ** of the tangents' intersection (cos m, sin m) / cos h.  Writes n conics
 ** of 7 numbers (p0, p1, p2, w) into out[28]; returns n (0 for dtheta = 0)
-** or an error code. */
+** or an error code (EOVERFLOW: a control point beyond DBL_MAX). */
 int arclen_ellipse_conics(double cx, double cy, double rx, double ry,
                           double phi, double theta, double dtheta,
                           double out[28]) {
@@ -61,9 +67,10 @@ int arclen_ellipse_conics(double cx, double cy, double rx, double ry,
     double b = k + 1 == n ? theta + dtheta : theta + dtheta * (k + 1) / n;
     double h = (b - a) / 2, m = a + h;
     double w = cos(h), *o = out + 7 * k;
-    ellipse_map(e, cos(a), sin(a), &o[0], &o[1]);
-    ellipse_map(e, cos(m) / w, sin(m) / w, &o[2], &o[3]);
-    ellipse_map(e, cos(b), sin(b), &o[4], &o[5]);
+    if (ellipse_map(e, cos(a), sin(a), &o[0], &o[1]) != ARCLEN_OK ||
+        ellipse_map(e, cos(m) / w, sin(m) / w, &o[2], &o[3]) != ARCLEN_OK ||
+        ellipse_map(e, cos(b), sin(b), &o[4], &o[5]) != ARCLEN_OK)
+      return ARCLEN_EOVERFLOW;   /* a point beyond DBL_MAX */
     o[6] = w;
   }
   return n;
@@ -95,7 +102,7 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
   if (rx == 0 || ry == 0) return ARCLEN_SVGARC_LINE;         /* F.6.2 */
   phi = fmod(phi_deg, 360.0) * (PI / 180);
   cp = cos(phi); sp = sin(phi);
-  dx = (x1 - x2) / 2; dy = (y1 - y2) / 2;
+  dx = x1 / 2 - x2 / 2; dy = y1 / 2 - y2 / 2;    /* x1 - x2 may overflow */
   x1p = cp * dx + sp * dy;                                   /* F.6.5.1 */
   y1p = -sp * dx + cp * dy;
   /* F.6.6.2: Lambda = x1'^2/rx^2 + y1'^2/ry^2 = h^2 (as ratios and by
@@ -109,6 +116,7 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
     rx *= h; ry *= h;
     /* a radius ~1e-320 scaled up to reach the endpoints: beyond DBL_MAX */
     if (!isfinite(rx) || !isfinite(ry)) return ARCLEN_EOVERFLOW;
+    u /= h; v /= h; h = 1;   /* the endpoints on the scaled ellipse */
     coef = 0;
   } else {
     /* F.6.5.2's radicand, divided through by rx^2 ry^2: (1 - Lambda)/Lambda;
@@ -119,10 +127,13 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
   }
   cxp = coef * (rx * (v / h));
   cyp = coef * -(ry * (u / h));
-  c[0] = cp * cxp - sp * cyp + (x1 + x2) / 2;                /* F.6.5.3 */
-  c[1] = sp * cxp + cp * cyp + (y1 + y2) / 2;
-  ux = (x1p - cxp) / rx; uy = (y1p - cyp) / ry;              /* F.6.5.5-6 */
-  vx = (-x1p - cxp) / rx; vy = (-y1p - cyp) / ry;
+  /* F.6.5.3, halved: the terms may overflow where the centre does not */
+  c[0] = 2 * ((cp * (cxp / 2) - sp * (cyp / 2)) + (x1 / 2 + x2 / 2) / 2);
+  c[1] = 2 * ((sp * (cxp / 2) + cp * (cyp / 2)) + (y1 / 2 + y2 / 2) / 2);
+  if (!isfinite(c[0]) || !isfinite(c[1])) return ARCLEN_EOVERFLOW;
+  /* F.6.5.5-6 with cx'/rx = coef v/h, cy'/ry = -coef u/h (no overflow) */
+  ux = u - coef * (v / h); uy = v + coef * (u / h);
+  vx = -u - coef * (v / h); vy = -v + coef * (u / h);
   t1 = vec_angle(1, 0, ux, uy);
   dt = vec_angle(ux, uy, vx, vy);
   if (!sweep && dt > 0) dt -= 2 * PI;

@@ -144,8 +144,12 @@ static double push_cubics(lua_State *L, const double *c, int n, int scheme,
     int j;
     /* a conic that rounding made degenerate (an arc of radius 2 at x = 9e15)
     ** leaves buf unwritten: an error, not garbage (spec/hostile_spec.lua) */
-    if (arclen_conic_cubics(c + 7 * k, c[7 * k + 6], scheme, level, buf,
-                            &b) != ARCLEN_OK)
+    int rc = arclen_conic_cubics(c + 7 * k, c[7 * k + 6], scheme, level,
+                                 buf, &b);
+    if (rc == ARCLEN_EOVERFLOW)   /* mid-point handles beyond +-DBL_MAX */
+      luaL_argerror(L, 1, "a control point of the cubics lies beyond the "
+                          "largest double");
+    if (rc != ARCLEN_OK)
       luaL_argerror(L, 1, "the arc is degenerate in double precision "
                           "(its control points coincide or are collinear)");
     if (b > bound || isnan(b)) bound = b;
@@ -208,6 +212,9 @@ static int l_ellipse_arc(lua_State *L) {
                             c);
   if (n == ARCLEN_ERANGE)
     luaL_argerror(L, 7, "the arc must not turn more than 2*pi");
+  if (n == ARCLEN_EOVERFLOW)
+    luaL_argerror(L, 3, "the arc's control points lie beyond the largest "
+                        "double");
   if (n < 0) return arclenL_argcode(L, 7, n);
   return finish(L, 8, c, n, &co);
 }
@@ -262,8 +269,14 @@ static int l_svg_arc(lua_State *L) {
     lua_pushinteger(L, 0);
     return 3;
   }
+  if (kind == ARCLEN_EOVERFLOW)
+    luaL_argerror(L, 3, "the arc's radii, centre or control points lie "
+                        "beyond the largest double");
   if (kind < 0) return arclenL_argcode(L, 1, kind);
   n = arclen_ellipse_conics(e[0], e[1], e[2], e[3], e[4], e[5], e[6], c);
+  if (n == ARCLEN_EOVERFLOW)
+    luaL_argerror(L, 3, "the arc's radii, centre or control points lie "
+                        "beyond the largest double");
   if (n <= 0) return arclenL_argcode(L, 1, n == 0 ? ARCLEN_EINVAL : n);
   snap_ends(c, n, x1, y1, x2, y2);
   return finish(L, 10, c, n, &co);
@@ -307,6 +320,8 @@ static int l_conic_length(lua_State *L) {
     }
   }
   rc = arclen_conic_length(c, c[6], &len, &info);
+  if (rc == ARCLEN_EOVERFLOW)     /* only when the polygon reaches DBL_MAX */
+    luaL_argerror(L, 1, "the conic's length exceeds the largest double");
   if (rc != ARCLEN_OK) return arclenL_argcode(L, 1, rc);
   lua_pushnumber(L, len);
   if (!want_info) return 1;
@@ -329,6 +344,9 @@ static int l_ellipse_conics(lua_State *L) {
                             c);
   if (n == ARCLEN_ERANGE)
     luaL_argerror(L, 7, "the arc must not turn more than 2*pi");
+  if (n == ARCLEN_EOVERFLOW)
+    luaL_argerror(L, 3, "the arc's control points lie beyond the largest "
+                        "double");
   if (n < 0) return arclenL_argcode(L, 7, n);
   lua_createtable(L, n, 0);
   for (k = 0; k < n; k++) {
