@@ -18,6 +18,10 @@ typedef struct arclen_hodo {
 } arclen_hodo;
 
 void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h);
+/* The hodograph of [t0, t1] in s in [-1, 1] (t = (t0 + t1)/2 + s (t1 - t0)/2),
+** its coefficients correct to rounding: lengths are (t1 - t0)/2 times its. */
+void arclen_hodo_local(const double *c, int dim, double t0, double t1,
+                       arclen_hodo *h);
 /* Speed in scaled units, |a2 t^2 + a1 t + a0| by Horner per coordinate;
 ** inline, since quadrature spends most of its time here. */
 static inline double arclen_hodo_speed(const arclen_hodo *h, double t) {

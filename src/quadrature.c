@@ -108,7 +108,7 @@ static double log_rho2_below(double g) {
 
 static void bound_piece(const arclen_branch *br, double c, double hh,
                         piece_bound *pb) {
-  double e = E_CAP, hh2 = hh * hh, inv2 = 1 / hh2, d[4], a, g, prod, rho2;
+  double e = E_CAP, inv = 1 / hh, d[4], a, g, prod, rho2;
   int k, np = 0;
   pb->inside = 0;
   for (k = 0; k < br->n; k += 2) {     /* roots come in conjugate pairs */
@@ -121,13 +121,13 @@ static void bound_piece(const arclen_branch *br, double c, double hh,
     if (im == 0) {                     /* no branch point, but a kink */
       if (fabs(dr) < hh * (1 - 1e-12)) pb->inside = 1;
     } else {
-      /* the formulas above times hh^2 (P = p hh^2, V = v^2 hh^2), both
-      ** forms computed and chosen by arithmetic: the sign of P is random,
-      ** a branch on it mispredicts a third of the time */
-      double P = dr * dr + im * im - hh2, V = im * im;
-      double m = (fabs(P) + sqrt(P * P + 4 * V * hh2)) / 2;
-      double e_out = m * inv2, e_in = V / m;   /* P < 0: |p| <= 1, finite */
-      double ek = e_in + (e_out - e_in) * (0.5 + copysign(0.5, P));
+      /* in units of hh (no underflow for tiny pieces); both forms are
+      ** computed and chosen by arithmetic: the sign of p is random, and a
+      ** branch on it mispredicted a third of the time */
+      double u = dr * inv, v = im * inv, p = u * u + v * v - 1;
+      double m = (fabs(p) + sqrt(p * p + 4 * v * v)) / 2;
+      double e_in = v * v / m;           /* p < 0: |p| <= 1, m is finite */
+      double ek = e_in + (m - e_in) * (0.5 + copysign(0.5, p));
       e = ek < e ? ek : e;
     }
   }
@@ -177,6 +177,7 @@ typedef struct integrator {
   arclen_hodo h;
   arclen_branch br;
   double rtol, lest, width;   /* tolerance, lower bound of L, t1 - t0 */
+  double unit;                /* dt/ds: the result's factor (sub-ranges) */
   double logk;                /* log2((32/15) width / (rtol lest)) */
   double mins[2];             /* feet of near branch points in (t0, t1) */
   int nmin;
@@ -217,7 +218,15 @@ static int start(integrator *in, const double *c, int dim, double t0,
   double prev;
   /* every field but the stack, which push() fills before pop reads it */
   memset(in, 0, offsetof(integrator, stack));
-  arclen_hodo_scaled(c, dim, &in->h);
+  in->unit = 1;
+  if (t0 == 0 && t1 == 1) {
+    arclen_hodo_scaled(c, dim, &in->h);
+  } else {              /* a sub-range: its own hodograph, on [-1, 1] */
+    arclen_hodo_local(c, dim, t0, t1, &in->h);
+    in->unit = (t1 - t0) / 2;
+    t0 = -1;
+    t1 = 1;
+  }
   if (in->h.zero) return 0;
   arclen_branch_points(&in->h, &in->br);
   in->rtol = rtol;
@@ -332,6 +341,15 @@ static int check_args(const double *c, int dim, const arclen_opts *o) {
   return ARCLEN_OK;
 }
 
+/* x in the integrator's scaled units and local variable as a length of
+** the curve: x unit 2^exp, with unit's exponent folded into exp so that
+** neither product over- or underflows on the way. */
+static double in_curve_units(const integrator *in, double x) {
+  int k;
+  double m = frexp(in->unit, &k);
+  return ldexp(x * m, in->h.exp + k);
+}
+
 static void fill_info(arclen_info *info, const integrator *in, int exp) {
   if (!info) return;
   info->evals = in->evals;
@@ -356,8 +374,11 @@ int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
     in.want_err = info != NULL;
     while (next_piece(&in, &pa, &pb, &piece, NULL)) sum += piece;
   }
-  *len = ldexp(o->t0 > o->t1 ? -sum : sum, in.h.exp);
-  fill_info(info, &in, in.h.exp);
+  *len = in_curve_units(&in, o->t0 > o->t1 ? -sum : sum);
+  if (info) {
+    fill_info(info, &in, in.h.exp);
+    info->err = in_curve_units(&in, in.err);
+  }
   return ARCLEN_OK;
 }
 
