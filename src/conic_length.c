@@ -94,12 +94,28 @@ static double ellipse_arc(double A, double B, double lo, double span,
 ** cancellation and the integral by the addition theorem:
 ** D(chi1) - D(chi0) = D(psi) + s0 s1 sin psi, D = (1/3) sin^3 R_D.  The
 ** second term is at most half the first (pointwise). */
-static double hyperbola_arc(double A, double B, double t0, double span,
-                            long *calls) {
-  double t1 = t0 + span;
-  double ch0 = cosh(t0), ch1 = cosh(t1), sh0 = sinh(t0), sh1 = sinh(t1);
-  double s0 = tanh(t0), s1 = tanh(t1);
+/* sinh t and cosh t for t >= 0 given with E = e^t: from t itself when t <
+** 1 (there t has its digits), else from E, which the caller forms as a
+** product of exponentials with a few roundings, while t = b + th0 ~ 70
+** carries an absolute error ~ 70 eps and so would cosh(t) a relative one
+** (w = 1e13: 5.6e-15). */
+static void hyp(double t, double E, double *sh, double *ch) {
+  if (t < 1) { *sh = sinh(t); *ch = cosh(t); return; }
+  *sh = (E - 1 / E) / 2; *ch = (E + 1 / E) / 2;
+}
+
+static double hyperbola_arc(double A, double B, double t0, double E0,
+                            double span, double Es, long *calls) {
+  double t1 = t0 + span, E1 = E0 * Es;
+  double ch0, ch1, sh0, sh1, s0, s1, shs, sh01, sa, sb, junk;
   double r = A / B, g0, g1, num, bracket, sp, cp2, dp2, q, dterm;
+  hyp(t0, E0, &sh0, &ch0);
+  hyp(t1, E1, &sh1, &ch1);
+  hyp(span, Es, &shs, &junk);
+  hyp(t0 + t1, E0 * E1, &sh01, &junk);
+  hyp((t0 + t1) / 2, sqrt(E0 * E1), &sa, &junk);
+  hyp(span / 2, sqrt(Es), &sb, &junk);
+  s0 = sh0 / ch0; s1 = sh1 / ch1;
   if (span <= 0) return 0;
   /* G = sqrt(B^2 + A^2 tanh^2) by hypot: A/B overflows its square for
   ** very thin hyperbolas (points spread beyond 2^500) */
@@ -107,19 +123,18 @@ static double hyperbola_arc(double A, double B, double t0, double span,
   g1 = hypot(B, A * s1);
   /* G1 tan1 - G0 tan0 = sinh(span) sinh(t0+t1) [(A^2+B^2) -
   ** A^2/(ch0 ch1)^2] / (G1 sinh t1 + G0 sinh t0) */
-  num = sinh(span) * sinh(t0 + t1) / (g1 * sh1 + g0 * sh0);
+  num = shs * sh01 / (g1 * sh1 + g0 * sh0);
   /* (A^2+B^2) - A^2/(ch0 ch1)^2 = B^2 + A^2 X (X + 2)/(ch0 ch1)^2 with
   ** X = ch0 ch1 - 1 = sinh^2((t0+t1)/2) + sinh^2(span/2): no cancellation
   ** when tau is small and A >> B (near-parabolic arcs) */
   {
-    double sa = sinh((t0 + t1) / 2), sb = sinh(span / 2);
     double X = sa * sa + sb * sb, cc = ch0 * ch1;
     bracket = num * (B * B + A * A * (X * (X + 2) / (cc * cc)));
   }
   /* sin psi = (s1^2 - s0^2)/(s1 c0 D0 + s0 c1 D1), c = 1/cosh, D = G/B,
   ** s1^2 - s0^2 = sinh(span) sinh(t0+t1)/(ch0 ch1)^2, and
   ** (s1 c0 D0 + s0 c1 D1) ch0 ch1 B = s1 ch1 G0 + s0 ch0 G1 */
-  sp = (sinh(span) * sinh(t0 + t1) / (ch0 * ch1)) * B
+  sp = (shs * sh01 / (ch0 * ch1)) * B
        / (s1 * ch1 * g0 + s0 * ch0 * g1);
   if (sp > 1) sp = 1;
   cp2 = (1 - sp) * (1 + sp);
@@ -211,36 +226,23 @@ static int sandwich(const double v[6], double w, double *L) {
   return 1;
 }
 
-int arclen_conic_length(const double p[6], double w, double *len,
-                        arclen_info *info) {
-  double px1, py1, px2, py2, cx, cy, dx, dy, hx, hy, ux, uy, vx, vy, sc, L;
-  double v[6];
-  long calls = 0;
-  int rc = arclen_conic_check(p, w), e, i;
-  *len = NAN;
-  if (info != NULL) arclen_info_init(info);
-  if (rc != ARCLEN_OK) return rc;
-  /* the legs (each one rounding of the inputs) scaled by a power of two:
-  ** no overflow, no lost digits far from the origin */
-  e = arclen_conic_legs(p, v);
+/* The exact length of the conic with legs v (a = v[0..1], c = v[2..3], k =
+** a + c = v[4..5]) by the forms above, on the legs scaled by 2^-e so
+** that the largest component is in [1/2, 1). */
+static double exact_length(const double v[6], double w, long *calls) {
+  double px1, py1, cx, cy, px2, py2, dx, dy, hx, hy, ux, uy, vx, vy, sc, L;
+  double mx = 0;
+  int e, i;
+  for (i = 0; i < 6; i++)
+    if (fabs(v[i]) > mx) mx = fabs(v[i]);
+  frexp(mx, &e);
+  px1 = ldexp(v[0], -e); py1 = ldexp(v[1], -e);
+  cx = ldexp(v[2], -e); cy = ldexp(v[3], -e);
+  px2 = ldexp(v[4], -e); py2 = ldexp(v[5], -e);
+  if (w == 1)
+    return ldexp(parabola(px1, py1, cx - px1, cy - py1,
+                          fabs(px1 * cy - py1 * cx)), e);
   {
-    double mx = 0;
-    int k;
-    for (i = 0; i < 6; i++)
-      if (fabs(v[i]) > mx) mx = fabs(v[i]);
-    frexp(mx, &k);
-    for (i = 0; i < 6; i++) v[i] = ldexp(v[i], -k);
-    e += k;
-  }
-  px1 = v[0]; py1 = v[1];
-  cx = v[2]; cy = v[3];
-  px2 = v[4]; py2 = v[5];
-  if (sandwich(v, w, &L)) {
-    if (info != NULL) info->branch = w < 1 ? "ellipse" : w > 1 ? "hyperbola" : "parabola";
-  } else if (w == 1) {
-    L = parabola(px1, py1, cx - px1, cy - py1, fabs(px1 * cy - py1 * cx));
-    if (info != NULL) info->branch = "parabola";
-  } else {
     double onew = (1 - w) * (1 + w);          /* 1 - w^2, exact enough */
     double uv, pp, qq, A, B, cross, th0, mv[4];
     hx = px2 / 2; hy = py2 / 2;
@@ -265,10 +267,9 @@ int arclen_conic_length(const double p[6], double w, double *len,
       B = cross / A;
       /* the major vertex at th0: tan 2 th0 = 2 U.V / (|U|^2 - |V|^2) */
       th0 = atan2(2 * uv, qq) / 2;
-      L = ellipse_arc(A, B, -a - th0, 2 * a, &calls);
-      if (info != NULL) info->branch = "ellipse";
+      L = ellipse_arc(A, B, -a - th0, 2 * a, calls);
     } else {
-      double b = asinh(sqrt((w - 1) * (w + 1)));
+      double sq = sqrt((w - 1) * (w + 1)), b = asinh(sq), Eb = w + sq, Et;
       double um = hypot(mv[0], mv[1]), up = hypot(mv[2], mv[3]);
       pp = um * up;                                 /* A^2 + B^2 */
       if (qq >= 0) { A = sqrt((pp + qq) / 2); B = cross / A; }
@@ -279,20 +280,50 @@ int arclen_conic_length(const double p[6], double w, double *len,
       {
         double x = 2 * uv / (ux * ux + uy * uy + vx * vx + vy * vy);
         th0 = fabs(x) < 0.5 ? -0.5 * atanh(x) : 0.5 * log(um / up);
+        Et = fabs(x) < 0.5 ? exp(th0) : sqrt(um / up);    /* e^th0 */
       }
-      /* tau = th - th0 in [-b - th0, b - th0]; split at the vertex */
+      /* tau = th - th0 in [-b - th0, b - th0]; split at the vertex.  The
+      ** exponentials e^tau of the ends come from e^b = w + sqrt(w^2 - 1)
+      ** and e^th0, not from the rounded sums */
       if (-b - th0 < 0 && b - th0 > 0)
-        L = hyperbola_arc(A, B, 0, b + th0, &calls)
-            + hyperbola_arc(A, B, 0, b - th0, &calls);
+        L = hyperbola_arc(A, B, 0, 1, b + th0, Eb * Et, calls)
+            + hyperbola_arc(A, B, 0, 1, b - th0, Eb / Et, calls);
       else if (b - th0 <= 0)
-        L = hyperbola_arc(A, B, th0 - b, 2 * b, &calls);
+        L = hyperbola_arc(A, B, th0 - b, Et / Eb, 2 * b, Eb * Eb, calls);
       else
-        L = hyperbola_arc(A, B, -b - th0, 2 * b, &calls);
-      if (info != NULL) info->branch = "hyperbola";
+        L = hyperbola_arc(A, B, -b - th0, 1 / (Eb * Et), 2 * b, Eb * Eb,
+                          calls);
     }
   }
+  return ldexp(L, e);
+}
+
+int arclen_conic_length(const double p[6], double w, double *len,
+                        arclen_info *info) {
+  double v[6], L;
+  long calls = 0;
+  int rc = arclen_conic_check(p, w), e, i;
+  *len = NAN;
+  if (info != NULL) arclen_info_init(info);
+  if (rc != ARCLEN_OK) return rc;
+  /* the legs (each one rounding of the inputs) scaled by a power of two:
+  ** no overflow, no lost digits far from the origin */
+  e = arclen_conic_legs(p, v);
+  {
+    double mx = 0;
+    int k;
+    for (i = 0; i < 6; i++)
+      if (fabs(v[i]) > mx) mx = fabs(v[i]);
+    frexp(mx, &k);
+    for (i = 0; i < 6; i++) v[i] = ldexp(v[i], -k);
+    e += k;
+  }
+  if (!sandwich(v, w, &L)) L = exact_length(v, w, &calls);
   L = ldexp(L, e);
-  if (info != NULL) info->calls = calls;
+  if (info != NULL) {
+    info->branch = w < 1 ? "ellipse" : w > 1 ? "hyperbola" : "parabola";
+    info->calls = calls;
+  }
   if (!isfinite(L)) return ARCLEN_EOVERFLOW;
   *len = L;
   return ARCLEN_OK;
