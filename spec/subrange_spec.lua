@@ -3,7 +3,7 @@
 -- own relative precision however small it is against the whole curve's --
 -- the speed there is a small difference of large terms, so a method has to
 -- form it about the sub-range (issue 2's bounds: tol at 1e-12, 1e-14 at
--- 1e-15).
+-- 1e-15; issue 3's for the elliptic method: 1e-13).
 local arclen = require("arclen")
 local H = require("helpers")
 
@@ -36,5 +36,8 @@ describe("sub-ranges next to cusps (" .. #rows .. " ranges 1e-2 .. 1e-14 wide)",
   end)
   it("default method, tol 1e-15: relative error <= 1e-14", function()
     check({tol = 1e-15}, 1e-14)
+  end)
+  it("elliptic: relative error <= 1e-13", function()
+    check({method = "elliptic"}, 1e-13)
   end)
 end)

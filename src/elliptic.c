@@ -19,6 +19,7 @@
 #include <math.h>
 
 #include "arclen.h"
+#include "cubic.h"
 #include "elliptic.h"
 
 /* A root this close to the real axis, relative to the interval length,
@@ -143,11 +144,11 @@ double arclen_ell_product(double a1, double b1, double a2, double b2,
   if (b1 <= CUSP_B * l) b1 = 0;
   if (b2 <= CUSP_B * l) b2 = 0;
   /* one root far from the other root's reach: series in the far factor */
-  if (b1 <= reach1 && reach1 <= ELL_RHO * hypot(a2 - a1, b2)) {
+  if (fmax(b1, reach1) <= ELL_RHO * hypot(a2 - a1, b2)) {
     *branch = "series-far";
     return arclen_ell_series_one(a1, b1, a2, b2, y, x);
   }
-  if (b2 <= reach2 && reach2 <= ELL_RHO * hypot(a1 - a2, b1)) {
+  if (fmax(b2, reach2) <= ELL_RHO * hypot(a1 - a2, b1)) {
     *branch = "series-far";
     return arclen_ell_series_one(a2, b2, a1, b1, y, x);
   }
@@ -164,59 +165,38 @@ double arclen_ell_product(double a1, double b1, double a2, double b2,
   return carlson_1111(a1, b1, a2, b2, y, x, calls);
 }
 
-/* Coordinates beyond this may overflow in differences; such curves are
-** scaled by 2^-64 first (exact). */
-#define HUGE_COORD 1e300
-
-/* The hodograph of c (dim 2 or 3), scaled by an exact power of two so its
-** largest coefficient is in [0.5, 1); returns 0 for a point, else 1 with
-** the scale's exponent in *ex (kept as an exponent: for coordinates near
-** DBL_MAX the hodograph, 6 x a leg, exceeds the double range while the
-** length fits -- results are set by ldexp). */
-static int scaled_hodograph(const double *c, int dim, double y, double x,
-                            double a2[3], double a1[3], double a0[3],
-                            int *ex) {
-  double tmp[12], pre = 1, big = 0;
-  int k, e;
-  for (k = 0; k < 4 * dim; k++)
-    if (fabs(c[k]) > HUGE_COORD) pre = 0x1p-64;
-  for (k = 0; k < 4 * dim; k++) tmp[k] = c[k] * pre;
+/* The hodograph of c (dim 2 or 3) for [y, x], scaled by an exact power of
+** two so its largest coefficient is in [0.5, 1) (cubic.c); returns 0 for a
+** point, else 1 with the scale's exponent in *ex (kept as an exponent: for
+** coordinates near DBL_MAX the hodograph, 6 x a leg, exceeds the double
+** range while the length fits -- results are set by ldexp). */
+static int local_hodograph(const double *c, int dim, double y, double x,
+                           double a2[3], double a1[3], double a0[3],
+                           int *ex) {
+  arclen_hodo h;
+  int k;
   if (y == 0) {
     /* [0, x]: the power basis about 0 is the sub-curve's, up to the
     ** scale of t (which would only add a rounding) */
-    arclen_hodograph(tmp, dim, a2, a1, a0);
+    arclen_hodo_scaled(c, dim, &h);
   } else {
-    /* A sub-range [y, x], y > 0: the hodograph of the sub-curve, u in
-    ** [0, 1], divided by x - y: its Bernstein points are the blossoms h[y,y],
-    ** h[y,x], h[x,x] of the quadratic with points 3 (P_i - P_i-1), each
-    ** by convex combinations (de Casteljau), so each is exact to
-    ** rounding relative to the size of h there.  The power basis of the
-    ** whole curve would err by eps |h|max, which beside a stop (h ~
-    ** (t - t*)^2) is all of a short sub-range's length: 2e-10 on
-    ** [0.999, 1] (tools/ref_close3d.py). */
-    for (k = 0; k < dim; k++) {
-      double b0 = 3 * (tmp[dim + k] - tmp[k]);
-      double b1 = 3 * (tmp[2 * dim + k] - tmp[dim + k]);
-      double b2 = 3 * (tmp[3 * dim + k] - tmp[2 * dim + k]);
-      double cy0 = (1 - y) * b0 + y * b1, cy1 = (1 - y) * b1 + y * b2;
-      double cx0 = (1 - x) * b0 + x * b1, cx1 = (1 - x) * b1 + x * b2;
-      double hyy = (1 - y) * cy0 + y * cy1, hyx = (1 - x) * cy0 + x * cy1;
-      double hxx = (1 - x) * cx0 + x * cx1;
-      a0[k] = hyy;
-      a1[k] = 2 * (hyx - hyy);
-      a2[k] = (hxx - hyx) - (hyx - hyy);
-    }
+    /* A sub-range [y, x], y > 0: its own hodograph in s in [-1, 1], each
+    ** coefficient correct to rounding (cubic.c, double-double from the
+    ** exact differences).  The whole curve's power basis errs by eps |h|max,
+    ** which beside a stop or a near-cusp is all of a short sub-range's
+    ** length; so do Bernstein points of the sub-curve formed by de
+    ** Casteljau (their second difference, (x - y)^2 A2, drowned in their
+    ** rounding: 4e6 relative on a range 1e-11 wide at a near-cusp,
+    ** spec/data/subranges.tsv). */
+    arclen_hodo_local(c, dim, y, x, &h);
   }
-  for (k = 0; k < dim; k++)
-    big = fmax(big, fmax(fabs(a2[k]), fmax(fabs(a1[k]), fabs(a0[k]))));
-  if (big == 0) return 0;
-  frexp(big, &e);
+  if (h.zero) return 0;
   for (k = 0; k < dim; k++) {
-    a2[k] = ldexp(a2[k], -e);
-    a1[k] = ldexp(a1[k], -e);
-    a0[k] = ldexp(a0[k], -e);
+    a2[k] = h.a2[k];
+    a1[k] = h.a1[k];
+    a0[k] = h.a0[k];
   }
-  *ex = pre == 1 ? e : e + 64;
+  *ex = h.exp;
   return 1;
 }
 
@@ -269,17 +249,19 @@ int arclen_length_elliptic(const double *c, int dim, const arclen_opts *o,
   if (e != ARCLEN_OK) return e;
   if (!(y >= 0 && y <= 1 && x >= 0 && x <= 1)) return ARCLEN_ERANGE;
   if (x < y) { v = x; x = y; y = v; }
-  nonzero = x > y && scaled_hodograph(c, dim, y, x, a2, a1, a0, &ex);
+  nonzero = x > y && local_hodograph(c, dim, y, x, a2, a1, a0, &ex);
   if (!nonzero) {
     v = 0;                               /* a point, or an empty range */
     if (x == y) branch = "empty";
   } else {
-    /* the integral over [y, x], or over [0, 1] of the sub-curve's */
-    double hi = y == 0 ? x : 1, f = y == 0 ? 1 : x - y;
+    /* the integral over [y, x], or over s in [-1, 1] of the range's own
+    ** hodograph, t = (x + y)/2 + s (x - y)/2 */
+    double lo = y == 0 ? 0 : -1, hi = y == 0 ? x : 1;
+    double f = y == 0 ? 1 : (x - y) / 2;
     if (dim == 2) {
-      v = length2d(a2, a1, a0, 0, hi, &branch, &calls);
+      v = length2d(a2, a1, a0, lo, hi, &branch, &calls);
     } else {
-      e = arclen_ell_length3d(a2, a1, a0, 0, hi, &branch, &calls, &v);
+      e = arclen_ell_length3d(a2, a1, a0, lo, hi, &branch, &calls, &v);
       if (e != ARCLEN_OK) return e;
     }
     v *= f;
