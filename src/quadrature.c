@@ -10,8 +10,10 @@
 ** whose I_n has n+1 points; it follows from |a_k| <= 2 M rho^-k, Thm 8.1).
 ** The bound cannot be fooled by two rules agreeing by accident: it is read
 ** off the geometry.  [t0, t1] is cut at the feet of the branch points
-** (where near-cusps put the speed's minima), then pieces are bisected while
-** no order up to NMAX meets their share of the tolerance.
+** (where near-cusps put the speed's minima), then a piece that no order up
+** to NMAX meets is cut again, closer to its nearest branch point (a graded
+** mesh).  A sub-range is integrated on its own hodograph (cubic.c), so a
+** short range beside a near-cusp keeps its relative precision.
 */
 #include <math.h>
 #include <stddef.h>
