@@ -841,3 +841,83 @@ describe("conic_length fuzz reproducers (chord <= length <= polygon)", function(
     assert.is_true(poly - prev < 1e-7, "w = 1.5e8: " .. poly - prev)
   end)
 end)
+
+-- ---- the ends of the double range (issue 8, fuzz/fuzz_conic) ---------------
+
+describe("conic_length at the ends of the double range", function()
+  -- References: tools/ref_conic.py extreme (quadrature on panels clustered
+  -- at the speed's singularities, legs formed exactly from the doubles).
+  -- The same 1e-14 bar as the ordinary conics: the sandwich of
+  -- conic_length.c is within 1e-15 where it applies, the R_F/R_D forms
+  -- within a few ulps elsewhere.
+  it("<= 1e-14 relative against mpmath, or the overflow named (conic_length_extreme.tsv)", function()
+    local worst, rows = helpers.worst(), 0
+    for _, row in ipairs(helpers.tsv("conic_length_extreme.tsv")) do
+      local p = pts(row)
+      local args = {{p[1], p[2]}, {p[3], p[4]}, {p[5], p[6]}, tonumber(row.w)}
+      if row.name:match("^overflow") then
+        assert.matches("#1.*length exceeds the largest double",
+                       helpers.error_of(arclen.conic_length, table.unpack(args)))
+      else
+        local L = arclen.conic_length(table.unpack(args))
+        worst:add(helpers.relerr(L, tonumber(row.length)), row.name)
+      end
+      rows = rows + 1
+    end
+    assert.is_true(rows >= 15)
+    print(("\n  conic_length extreme: worst relative error %.2e (%s)"):format(worst.err, worst.id))
+    assert.is_true(worst.err <= 1e-14, worst.id .. ": " .. worst.err)
+  end)
+end)
+
+describe("cubics and arcs near DBL_MAX", function()
+  local function conic_of(p, w, o) return arclen.conic({p[1], p[2]}, {p[3], p[4]}, {p[5], p[6]}, w, o) end
+  it("a conic scaled by 2^1020 (and 1.5 * 2^1022, whose legs are halved) gives the scaled cubics exactly", function()
+    for _, s in ipairs(SCHEMES) do
+      for _, sc in ipairs({{1, 2 ^ 1020}, {1.5, 2 ^ 1022}}) do
+        local u = sc[1]
+        local unit, ub = conic_of({-u, 0, 0, u, u, 0}, 0.7071067811865476, {scheme = s, level = 2})
+        local big, bb = conic_of({-u * sc[2], 0, 0, u * sc[2], u * sc[2], 0}, 0.7071067811865476,
+                                 {scheme = s, level = 2})
+        for i = 1, #unit do
+          for k = 1, 8 do assert.are.equal(unit[i][k] * sc[2], big[i][k]) end
+        end
+        assert.are.equal(ub * sc[2], bb)
+      end
+    end
+  end)
+  it("mid-point handles beyond DBL_MAX are an error naming the argument; other schemes stay inside", function()
+    local p = {0, 0, 1.7e308, 0, 1.7e308, 1e308}
+    assert.matches("#1.*control point of the cubics lies beyond the largest double",
+                   helpers.error_of(conic_of, p, 100))
+    for _, s in ipairs({"quadratic", "g2", "c2", "g4"}) do
+      local cs = conic_of(p, 100, {scheme = s})
+      for k = 1, 8 do assert.is_true(abs(cs[1][k]) <= 1.7e308, s) end
+    end
+  end)
+  it("ellipse_arc: terms beyond DBL_MAX whose sum is not; an arc beyond it is named", function()
+    -- rotated by 45 degrees, the conic's p1 = centre + r (cos 45 - sin 45,
+    -- sin 45 + cos 45) / cos 45 = (0, -1.5e308 + 1.5e308 sqrt 2): its terms
+    -- sum to 2.1e308, the point is 6.2e307
+    local r, h = 1.5e308, sqrt(0.5)
+    local cs = arclen.ellipse_arc(0, -r, r, r, math.pi / 4, 0, math.pi / 2, {level = 0})
+    assert.are.equal(1, #cs)
+    for k = 1, 8 do assert.is_true(cs[1][k] == cs[1][k] and abs(cs[1][k]) < math.huge) end
+    assert.is_true(abs(cs[1][1] - r * h) <= 1e-15 * r and abs(cs[1][2] - (-r + r * h)) <= 1e-15 * r)
+    assert.is_true(abs(cs[1][7] + r * h) <= 1e-15 * r and abs(cs[1][8] - (-r + r * h)) <= 1e-15 * r)
+    -- the handles of the mid-point cubic: 4/3 tan(22.5 deg) r along the tangents
+    local k = 4 / 3 * math.tan(math.pi / 8) * r
+    assert.is_true(abs(cs[1][3] - (r * h - k * h)) <= 1e-15 * r and abs(cs[1][4] - (-r + r * h + k * h)) <= 1e-15 * r)
+    assert.matches("#3.*beyond the largest double",
+                   helpers.error_of(arclen.ellipse_arc, 1e308, 0, 1e308, 1, 0, 0, math.pi / 2))
+  end)
+  it("svg_arc: endpoints at -+1.7e308 (their difference overflows) give a finite half circle", function()
+    local cs = arclen.svg_arc(-1.7e308, 0, 1.7e308, 1.7e308, 0, 0, 1, 1.7e308, 0, {level = 0})
+    assert.are.equal(2, #cs)
+    for _, c in ipairs(cs) do
+      for k = 1, 8 do assert.is_true(c[k] == c[k] and abs(c[k]) <= 1.7e308 * (1 + 1e-15)) end
+    end
+    assert.are.equal(-1.7e308, cs[1][1])
+    assert.is_true(abs(cs[1][8]) / 1.7e308 > 1 - 1e-15)   -- the top of the circle
+  end)
+end)

@@ -14,7 +14,11 @@
 ** <= 3.4); differences of elliptic integrals at two amplitudes are never
 ** formed: Legendre's addition theorem (DLMF 19.11.1-2) turns them into one
 ** integral at amplitude psi, with sin psi computed from the span directly.
-** The parabola (w = 1) has a closed form.
+** The parabola (w = 1) has a closed form.  Everything works on the legs
+** p1 - p0, p2 - p1 (one rounding each, so far-away points keep a short
+** leg's digits) scaled by a power of two; where the arc is within 2^-50 of
+** its one-level subdivision polygons (weights or leg ratios near the ends
+** of the double range) their bracket gives the length (sandwich()).
 */
 #include <float.h>
 #include <math.h>

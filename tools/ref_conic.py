@@ -8,6 +8,10 @@ Writes
       (max |g| found by sampling and golden-section search, not Prop 13).
   spec/data/conic_length.tsv  exact arc lengths of conics (mpmath quad of
       the rational curve's speed) and the lengths of the mid-point splines.
+  spec/data/conic_length_extreme.tsv  lengths at the ends of the double
+      range (legs 1e-300 beside O(1), w = 1e+-300, points near DBL_MAX, the
+      fuzz findings), by quadrature on panels clustered at the speed's
+      singularities (wide_length); `ref_conic.py extreme` alone: ~5 min.
 
 Independent of the C code: the schemes are the paper's formulas as printed
 (with the corrections of shared/notes/conic.md), at 30 digits.
@@ -217,6 +221,75 @@ def conic_length(p, w):
     return L
 
 
+def half_length(p, w, dps, ratio):
+    """int_0^(1/2) of the speed of eq. (1) by Gauss-Legendre on panels
+    clustered geometrically (factor `ratio`) about every singularity of the
+    speed |P(t)| / D(t)^2 -- the complex roots of |P|^2, P(t)/2 = w (1-t)^2
+    a + w t^2 c + t (1-t) (a + c) (a = p1 - p0, c = p2 - p1), and those of
+    D(t) = 1 + 2 (w - 1) t (1 - t) -- so that each panel is smooth on its
+    own scale however close to t = 0 the features are (a leg of 1e-300
+    beside O(1) legs, w = 1e300).  The legs are formed exactly from the
+    doubles, whatever their exponents."""
+    with mp.workprec(2300):
+        P = [[mp.mpf(x) for x in q] for q in p]
+        a = [P[1][k] - P[0][k] for k in range(2)]
+        c = [P[2][k] - P[1][k] for k in range(2)]
+    with mp.workdps(dps):
+        a = [+x for x in a]
+        c = [+x for x in c]
+        w = mp.mpf(w)
+        C = [w * a[k] for k in range(2)]
+        B = [a[k] + c[k] - 2 * w * a[k] for k in range(2)]
+        A = [(w - 1) * (a[k] + c[k]) for k in range(2)]
+        quart = [sum(A[k] ** 2 for k in range(2)),
+                 sum(2 * A[k] * B[k] for k in range(2)),
+                 sum(B[k] ** 2 + 2 * A[k] * C[k] for k in range(2)),
+                 sum(2 * B[k] * C[k] for k in range(2)),
+                 sum(C[k] ** 2 for k in range(2))]
+        sing = []
+        with mp.workdps(3 * dps):
+            while quart and quart[0] == 0:
+                quart = quart[1:]
+            if len(quart) > 1:
+                sing += mp.polyroots(quart, maxsteps=4000, extraprec=4000)
+            if w != 1:
+                sing += mp.polyroots([-2 * (w - 1), 2 * (w - 1), 1],
+                                     maxsteps=4000, extraprec=4000)
+            half = mp.mpf(1) / 2
+            pts = {mp.mpf(0), half}
+            for z in sing:
+                re = min(max(mp.re(z), 0), half)
+                step = abs(z - re)
+                pts.add(re)
+                if step == 0:
+                    step = mp.mpf(2) ** -4000
+                while step < half:
+                    for x in (re - step, re + step):
+                        if 0 < x < half:
+                            pts.add(x)
+                    step *= ratio
+        pts = sorted(pts)
+
+        def speed(t):
+            D = 1 + 2 * (w - 1) * t * (1 - t)
+            return 2 * mp.hypot(A[0] * t * t + B[0] * t + C[0],
+                                A[1] * t * t + B[1] * t + C[1]) / (D * D)
+        return mp.quad(speed, pts, method="gauss-legendre")
+
+
+def wide_length(p, w):
+    """Both halves, the second as the first half of the reversed conic (t
+    within 1e-100 of 1 has no digits left at the working precision); two
+    runs with other panels and precision must agree to 1e-28."""
+    rev = (p[2], p[1], p[0])
+    with mp.workdps(50):
+        L1 = half_length(p, w, 40, 4) + half_length(rev, w, 40, 4)
+        L2 = half_length(p, w, 50, 3) + half_length(rev, w, 50, 3)
+        if abs(L1 - L2) > abs(L2) * mp.mpf(10) ** -28:
+            raise RuntimeError("wide_length disagrees: %s %s" % (L1, L2))
+        return L2
+
+
 def spline_length(p, w, scheme, r):
     pieces, wr = level_pieces(p, w, r)
     l = lam(scheme, wr)
@@ -319,6 +392,66 @@ def write_lengths():
                         name, sc, r, s(spline_length(p, w, sc, r)), s(L)))
 
 
+# Conics at the ends of the double range (issue 8: fuzz/fuzz_conic's open
+# classes), with the length by wide_length.  "overflow" rows have a length
+# beyond DBL_MAX: conic_length must refuse them.
+EXTREME_CASES = [
+    ("leg 1e-300 beside O(1), w=0.5", (0, 0), (1e-300, 0), (1, 1), 0.5),
+    ("leg 1e-300 beside O(1), w=2", (0, 0), (0, 1), (1e-300, 1), 2.0),
+    ("leg 1e-300 beside O(1), w=1", (0, 0), (1e-300, 1e-300), (1, -2), 1.0),
+    ("w=1.5e8, p1 one ulp from p0", (1, 1), (1.0000000000000002, 1), (3, 2),
+     1.5e8),
+    ("w=2e5, p1 p2 1e-10 apart", (0, 0), (1, 1), (1 + 1e-10, 1), 2e5),
+    ("w=1e-160", (0, 0), (3, 2), (5, -1), 1e-160),
+    ("w=1e-300", (0, 0), (3, 2), (5, -1), 1e-300),
+    ("w=1e160", (0, 0), (3, 2), (5, -1), 1e160),
+    ("w=1e300", (0, 0), (3, 2), (5, -1), 1e300),
+    ("quarter circle of radius 1.1e308", (-8e307, 0), (0, 8e307), (8e307, 0),
+     0.7071067811865476),
+    ("near DBL_MAX, w=75", (15, -1.3486981934093403e+308), (-1, 98),
+     (1, 0.99999999999999989), 75.0),
+    ("spread 2^1300, w=0.3", (1e-200, 1e-200), (1e190, 0), (0, 1e190), 0.3),
+    # hyperbolic parameter b = acosh w ~ 31: cosh(b + th0) from e^b e^th0
+    ("w=1e13, leg 1e-14", (0, 0), (1, 1), (1, 1.00000000000001), 1e13),
+    ("w=3e13", (0, 0), (3, 2), (5, -1), 3e13),
+    ("w=3, leg 3e-14", (0, 0), (3e-14, 0), (1, 1), 3.0),
+    # fuzz/fuzz_conic findings (first failing inputs of the no-skip run)
+    ("fuzz: p0 at 2.4e220, short leg 1e-14", (3.9525251667299724e-323,
+     2.4070306476177068e+220), (9.9998731398954988, 9.999873139895513),
+     (9.9998731398955272, 9.9998731398955414), 9.9998731398955556),
+    ("fuzz: leg 1e236 beside O(1), w=26", (-1, 40), (-41, -2),
+     (-1.0174582569701926e+236, -1.0174582569701926e+236), 26.0),
+    ("fuzz: ellipse B/A 5e-23, w=1-2^-50", (36, 36.000000000000014),
+     (36.000000000000021, 36.000000000000078), (35.000000000000078, 1),
+     0.99999999999999911),
+    ("fuzz: parabola, leg 1e-15 of the other", (3.0346760614651183e-86,
+     -2.0215873059760975e-174), (-1, -1), (-0.99999999999999911,
+     -0.999999999999999), 1.0),
+    ("fuzz: parabola, legs 1e115 and 1e99", (7.291122026346784e-304,
+     -4.4681967109995408e+105), (-1.9190760541073831e+115,
+     -1.9190760541073831e+115), (-1.9190760541073813e+115,
+     -1.9190760541073813e+115), 1.0),
+]
+OVERFLOW_CASES = [
+    ("overflow: chord 3e308", (-1.5e308, 0), (0, 1.5e308), (1.5e308, 0), 0.7),
+]
+
+
+def write_extreme():
+    path = os.path.join(DATA, "conic_length_extreme.tsv")
+    with open(path, "w") as f:
+        f.write("name\tx0\ty0\tx1\ty1\tx2\ty2\tw\tlength\n")
+        for name, a, b, c, w in EXTREME_CASES + OVERFLOW_CASES:
+            L = wide_length((a, b, c), w)
+            if name.startswith("overflow") != (L > sys.float_info.max):
+                raise RuntimeError("%s: length %s" % (name, L))
+            f.write("%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n" % (
+                name, *[repr(float(x)) for x in a + b + c], repr(float(w)),
+                s(L)))
+            f.flush()
+            print(name, mp.nstr(L, 20), file=sys.stderr)
+
+
 def write_perimeters():
     """Ellipse perimeters 4 a E(1 - b^2/a^2) (mpmath's ellipe takes m)."""
     path = os.path.join(DATA, "conic_perimeter.tsv")
@@ -374,10 +507,12 @@ def write_fullcircle_mpost():
 
 
 if __name__ == "__main__":
-    what = sys.argv[1:] or ["lengths", "mpost", "hausdorff"]
+    what = sys.argv[1:] or ["lengths", "extreme", "mpost", "hausdorff"]
     if "lengths" in what:
         write_lengths()
         write_perimeters()
+    if "extreme" in what:
+        write_extreme()
     if "mpost" in what:
         write_fullcircle_mpost()
     if "hausdorff" in what:
