@@ -229,7 +229,7 @@ static double length2d(const double a2[3], const double a1[3],
   if (cabs(A2) <= 0x1p-56 * aq) {
     double a = creal(s2), b = fabs(cimag(s2));
     *branch = "quadratic";
-    return aq * arclen_ell_j0(y - a, x - a, b);
+    return aq * arclen_ell_single(a, b, y, x);
   }
   s1 = q / A2;
   return cabs(A2) * arclen_ell_product(creal(s1), fabs(cimag(s1)), creal(s2),

@@ -39,6 +39,8 @@ int arclen_ell_length3d(const double a2[3], const double a1[3],
 ** 3D branch points of the default method (branch.c). */
 int arclen_ell_roots3d(const double a2[3], const double a1[3],
                        const double a0[3], double re[2], double im[2]);
+/* int_y^x |t - s| dt, s = a + ib (one factor; a series when s is far). */
+double arclen_ell_single(double a, double b, double y, double x);
 /* int_v^w sqrt(u^2 + b^2) du and int_v^w u sqrt(u^2 + b^2) du. */
 double arclen_ell_j0(double v, double w, double b);
 double arclen_ell_j1(double v, double w, double b);

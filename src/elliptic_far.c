@@ -45,7 +45,7 @@ static double j0_anti(double u, double b) {
 **   w r_w - v r_v = (w - v)(w + v)(w^2 + v^2 + b^2)/(w r_w + v r_v),
 **   asinh(w/b) - asinh(v/b) = asinh((w - v)(w + v)/(w r_v + v r_w)),
 ** both free of cancellation (r_u = sqrt(u^2 + b^2)). */
-double arclen_ell_j0(double v, double w, double b) {
+static double j0_unit(double v, double w, double b) {
   double rv, rw, dd;
   if (!(v * w > 0)) return j0_anti(w, b) - j0_anti(v, b);
   rv = hypot(v, b); rw = hypot(w, b);
@@ -56,9 +56,34 @@ double arclen_ell_j0(double v, double w, double b) {
 
 /* (r_w^3 - r_v^3)/3 with r^2 = u^2 + b^2; the difference of cubes is
 ** formed from r_w^2 - r_v^2 = (w - v)(w + v), without cancellation. */
-double arclen_ell_j1(double v, double w, double b) {
+static double j1_unit(double v, double w, double b) {
   double rw = hypot(w, b), rv = hypot(v, b);
   return (w - v) * (w + v) * (rw * rw + rw * rv + rv * rv) / (rw + rv) / 3;
+}
+
+/* The formulas square and cube their arguments: with a root 1e152 away
+** (a hodograph whose A2, A1 are 1e-300 of A0) the cube overflowed and the
+** length came out 0 (fuzz/fuzz_length).  J0 and J1 are homogeneous of
+** degree 2 and 3 in (v, w, b), so arguments far from 1 are scaled by an
+** exact power of two first. */
+#define J_FAR 0x1p200
+static int j_scale(double v, double w, double b, int *e) {
+  double m = fmax(fabs(v), fmax(fabs(w), b));
+  if (!(m > J_FAR || (m < 1 / J_FAR && m > 0))) return 0;
+  frexp(m, e);
+  return 1;
+}
+
+double arclen_ell_j0(double v, double w, double b) {
+  int e;
+  if (!j_scale(v, w, b, &e)) return j0_unit(v, w, b);
+  return ldexp(j0_unit(ldexp(v, -e), ldexp(w, -e), ldexp(b, -e)), 2 * e);
+}
+
+double arclen_ell_j1(double v, double w, double b) {
+  int e;
+  if (!j_scale(v, w, b, &e)) return j1_unit(v, w, b);
+  return ldexp(j1_unit(ldexp(v, -e), ldexp(w, -e), ldexp(b, -e)), 3 * e);
 }
 
 double arclen_ell_series_one(double an, double bn, double af, double bf,
@@ -107,4 +132,23 @@ double arclen_ell_series_both(double a1, double b1, double a2, double b2,
     sum += ci * 2 / (i + 1);
   }
   return r1 * r2 * h * sum;
+}
+
+/* int_y^x |t - s| dt, s = a + ib: one factor (2D hodographs of degree 1,
+** or with A2 beyond 2^-56 of the rest; 3D hodographs of degree 1).  With s
+** far (h <= ELL_RHO R about the midpoint m) the shifted ends y - a, x - a
+** would round the interval away (a root 1e152 away from [-1, 1]: length
+** 0, fuzz/fuzz_length), so the series above is integrated term by term:
+** 2h R sum_{n even} C_n(c) (h/R)^n / (n + 1). */
+double arclen_ell_single(double a, double b, double y, double x) {
+  double m = (x + y) / 2, h = (x - y) / 2, r = hypot(a - m, b);
+  double g[ELL_NMAX], q, p = 1, sum = 0;
+  int n, i;
+  if (!(h <= ELL_RHO * r)) return arclen_ell_j0(y - a, x - a, b);
+  q = h / r;
+  n = terms_for(q);
+  gegenbauer((a - m) / r, n, g);
+  for (i = 0; i < n; i += 2, p *= q * q) g[i] *= p / (i + 1);
+  for (i = (n - 1) - (n - 1) % 2; i >= 0; i -= 2) sum += g[i];  /* small first */
+  return 2 * h * r * sum;
 }
