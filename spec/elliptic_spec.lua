@@ -152,17 +152,19 @@ describe("elliptic", function()
   it("a line whose control points carry a residue of 1e-304 .. 1e-100: sub-ranges exact", function()
     -- legs (-2, -2) (+ the residue): speed 6 sqrt 2 to 1e-100, length 6 sqrt 2 (t1 - t0).
     -- A sub-range's own hodograph keeps the residue as A2, A1 ~ 1e-300 of A0: 2D put
-    -- the root 1e152 away and the shifted range rounded to nothing (length 0); 3D
+    -- the root 1e152 away and the shifted range rounded to nothing, or (subnormal
+    -- A2 beside A1 ~ 1e-323) a root near the range (length 0); 3D
     -- squared them into subnormals (errors up to 5%).  Found by fuzz/fuzz_length.
     local curves = {
       {7.2911220195563967e-304, -1, -2, -3, -4, -5, -6, -7},
+      {2.5197347937903574e-322, -1, -2, -3, -4, -5, -6, -7},
       {7.2911220195563967e-304, -1, 0, -2, -3, 0, -4, -5, 0, -6, -7, 0},
       {1e-160, -1, 0, -2, -3, 0, -4, -5, 0, -6, -7, 0},
       {1e-100, -1, 0, -2, -3, 0, -4, -5, 0, -6, -7, 0},
       {0, -1, 1e-120, -2, -3, 0, -4, -5, 0, -6, -7, 0},
     }
     for i, c in ipairs(curves) do
-      for _, r in ipairs({{0.3, 0.7}, {0, 0.5}, {0.5, 1}, {0, 1}, {0.9, 0.123}}) do
+      for _, r in ipairs({{0.3, 0.7}, {0, 0.5}, {0.5, 1}, {0, 1}, {0.9, 0.123}, {0.41, 0.5257}}) do
         local got = elliptic(c, r[1], r[2])
         assert.is_true(H.relerr(got, 6 * math.sqrt(2) * (r[2] - r[1])) <= 1e-15,
           ("curve %d [%g, %g]: %.17g"):format(i, r[1], r[2], got))
