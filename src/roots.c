@@ -557,6 +557,47 @@ static int shifted_roots(const double *c, int d, int E, double *re,
   return 1;
 }
 
+/* A quartic whose Newton polygon splits 3 + 1: the lone root r, polished
+** on the whole, is divided out (by backward deflation, from the constant
+** term, when it is the largest root; forward when the smallest: both
+** stable), and the exact cubic cofactor is solved as a polynomial of its
+** own, centroid shift included.  The cubic group's own coefficients miss
+** r's pull on a near-triple cluster, whose spread (the cube root of it)
+** no polishing recovers: 2.9e-11 x^4 - (x + 1)^3 kept -1 (8700 eps;
+** fuzz/fuzz_roots).  0 if r is beyond the cluster's scale (out of range:
+** its pull is then below rounding) and the groups are solved apart. */
+static int roots_3_1(const poly *P, const int *gs, double *re, double *im) {
+  int top = gs[2] - gs[1] == 1, la = top ? gs[1] : gs[0];
+  int ca = top ? gs[0] : gs[1], El = group_scale(P, la, la + 1);
+  int Ec = group_scale(P, ca, ca + 3), j, k;
+  double cl[5], cc[5], C[4], r = -scaled(P, la, la + 1, El), ri = 0, R;
+  for (j = 0; j <= 4; j++) {
+    cl[j] = scaled(P, j, la + 1, El);
+    cc[j] = scaled(P, j, ca + 3, Ec);
+  }
+  polish_root(cl, 4, &r, &ri);
+  R = ldexp(r, El - Ec);
+  if (!isfinite(R) || fabs(R) < DBL_MIN) return 0;
+  if (top) {                  /* cc(y) = (y - R) C(y), from the constant */
+    C[0] = -cc[0] / R;
+    for (k = 1; k < 3; k++) C[k] = (C[k - 1] - cc[k]) / R;
+    C[3] = cc[4];
+  } else {                    /* from the leading coefficient */
+    C[3] = cc[4];
+    for (k = 2; k >= 0; k--) C[k] = cc[k + 1] + R * C[k + 1];
+  }
+  if (C[3] == 0 || !isfinite(C[0] + C[1] + C[2])) return 0;
+  j = top ? 0 : 1;            /* the lower group's roots first */
+  poly_roots_(C, 3, re + j, im + j, 1);
+  for (k = j; k < j + 3; k++) {
+    polish_root(cc, 4, &re[k], &im[k]);
+    re[k] = ldexp(re[k], Ec); im[k] = ldexp(im[k], Ec);
+  }
+  j = top ? 3 : 0;
+  re[j] = ldexp(r, El); im[j] = 0;
+  return 1;
+}
+
 /* All n roots of the polynomial p (by power, p[n] != 0, finite), each
 ** group of the Newton polygon solved alone in its own scale, then polished
 ** on the whole polynomial in that scale.  A root beyond the double range
@@ -578,6 +619,9 @@ static int poly_roots_(const double *p, int n, double *re, double *im,
     for (j = lo; j <= n; j++) c[j - lo] = scaled(&P, j, n, E);
     if (shifted_roots(c, n - lo, E, re + cnt, im + cnt)) return n;
   }
+  if (n == 4 && lo == 0 && ng == 2 && gs[1] != 2 &&
+      roots_3_1(&P, gs, re, im))
+    return 4;
   for (g = 0; g < ng; g++) {
     int a = gs[g], b = gs[g + 1], d = b - a, E = group_scale(&P, a, b);
     double m[4], c[5];
