@@ -120,3 +120,101 @@ describe("roots", function()
       H.error_of(function() local r = arclen.quartic_factor(0, 1, 2, 3, 4) return r end) or "")
   end)
 end)
+
+-- The quartics that fuzz/fuzz_roots (and issue 3's open bullet) found
+-- wrong, with exact roots (tools/ref_roots_fuzz.py, sympy CRootOf) and per
+-- root the error attainable after the coefficients' rounding (a
+-- near-double root's is ~sqrt(eps)).  Judged three ways: every root (of
+-- arclen.quartic, and of quartic_factor's two factors) within that bound
+-- of the truth; each with backward error |p(z)| <= 512 eps max|a_k| sum
+-- |z|^k, the harness's bar (fuzz/fuzz_roots.c says why 512); and the
+-- factors' product reproducing the quartic's coefficients to 512 eps of
+-- their terms.
+describe("roots: fuzz reproducers (roots_fuzz.tsv)", function()
+  local EPS = 2 ^ -52
+  -- |p(z)| and the harness's bar for it, both divided by max(1, |z|)^n
+  -- (for |z| > 1 the reversed polynomial at 1/z: no overflow at 1e278)
+  local function backward(a, z)     -- a[k+1]: coefficient of x^k
+    local x, y, n = z[1], z[2], #a - 1
+    local az = math.sqrt(x * x + y * y)
+    local rev = az > 1
+    if rev then x, y, az = x / az / az, -y / az / az, 1 / az end
+    local pr, pi, s, m = 0, 0, 0, 0
+    for i = n + 1, 1, -1 do
+      local k = rev and n + 2 - i or i
+      pr, pi = pr * x - pi * y + a[k], pr * y + pi * x
+      s = s * az + 1
+      m = math.max(m, math.abs(a[k]))
+    end
+    local tiny = 16 * 2 ^ -1074 * math.max(1, m) * (rev and az ^ n or 1)
+    return math.sqrt(pr * pr + pi * pi), 512 * EPS * m * s + tiny
+  end
+  local function check_roots(id, what, a, got, truth, bounds)
+    local used = {}
+    for i, r in ipairs(truth) do
+      local best, bi = math.huge, nil
+      for j, g in ipairs(got) do
+        if not used[j] and dist(g, r) < best then best, bi = dist(g, r), j end
+      end
+      assert.is_truthy(bi, ("%s %s root %d: no computed root"):format(id, what, i))
+      used[bi] = true
+      assert.is_true(best <= bounds[i], ("%s %s root %d (%.17g%+.17gi): error %.3g > bound %.3g"):format(
+        id, what, i, r[1], r[2], best, bounds[i]))
+      local res, lim = backward(a, got[bi])
+      assert.is_true(res <= lim, ("%s %s root %.17g%+.17gi: residual %.3g > %.3g"):format(
+        id, what, got[bi][1], got[bi][2], res, lim))
+    end
+  end
+  for _, row in ipairs(H.tsv("roots_fuzz.tsv")) do
+    local c = {tonumber(row.a4), tonumber(row.a3), tonumber(row.a2), tonumber(row.a1), tonumber(row.a0)}
+    local a = {c[5], c[4], c[3], c[2], c[1]}
+    local truth, bounds = parse_roots(row.roots), parse_list(row.bounds)
+    it(row.id .. " (was: " .. row.note .. "): quartic's roots", function()
+      local got = arclen.quartic(table.unpack(c))
+      assert.are.equal(4, #got)
+      check_roots(row.id, "quartic", a, got, truth, bounds)
+    end)
+    it(row.id .. ": quartic_factor's factors", function()
+      local q = {arclen.quartic_factor(table.unpack(c))}
+      local got, finite = {}, true
+      for j = 0, 1 do
+        local p, r = q[2 * j + 1], q[2 * j + 2]
+        if p ~= p or r ~= r then error("NaN factor coefficient") end
+        if math.abs(p) == math.huge or math.abs(r) == math.huge then
+          finite = false     -- by contract only beyond the double range
+        else
+          for _, z in ipairs(arclen.quadratic(1, p, r)) do got[#got + 1] = z end
+        end
+      end
+      if finite then
+        check_roots(row.id, "factor", a, got, truth, bounds)
+        -- (x^2 + q1 x + q2)(x^2 + q3 x + q4) against a / a4, each equation
+        -- to 512 eps of its terms, where terms below DBL_MIN (fewer than 53
+        -- bits) count as DBL_MIN times the factors' size (-6.3e-326 is no
+        -- double: q = -0; p = +-1e-322 come out as 7.9e-323 each)
+        local m = {c[2] / c[1], c[3] / c[1], c[4] / c[1], c[5] / c[1]}
+        local f = {q[1] + q[3], q[2] + q[4] + q[1] * q[3], q[1] * q[4] + q[3] * q[2], q[2] * q[4]}
+        local w = {math.abs(q[1]) + math.abs(q[3]),
+                   math.abs(q[2]) + math.abs(q[4]) + math.abs(q[1] * q[3]),
+                   math.abs(q[1] * q[4]) + math.abs(q[3] * q[2]), math.abs(q[2] * q[4])}
+        local qs = 1 + math.abs(q[1]) + math.abs(q[2]) + math.abs(q[3]) + math.abs(q[4])
+        for k = 1, 4 do
+          local lim = 512 * EPS * math.max(w[k] + math.abs(m[k]), 2 ^ -1022 * qs)
+          assert.is_true(math.abs(f[k] - m[k]) <= lim, ("%s: x^%d coefficient %.17g, want %.17g (limit %.3g)"):format(
+            row.id, 4 - k, f[k], m[k], lim))
+        end
+      else
+        -- the one row whose factor must overflow: its real roots 2.83 and
+        -- -8.4e307 pair up (q = their product, beyond DBL_MAX); the other
+        -- factor is the complex pair
+        assert.are.equal("factor-beyond-range", row.id)
+        assert.are.equal(2, #got)
+        local pt, pb = {}, {}
+        for i, z in ipairs(truth) do
+          if z[2] ~= 0 then pt[#pt + 1], pb[#pb + 1] = z, bounds[i] end
+        end
+        check_roots(row.id, "factor", a, got, pt, pb)
+      end
+    end)
+  end
+end)
