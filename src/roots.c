@@ -1,9 +1,11 @@
 /*
 ** roots.c -- roots of real quadratics, cubics and quartics, in the manner
 ** of Orellana & De Michele, ACM TOMS Algorithm 1010 (2020): scaling, a
-** dominant root of a cubic resolvent polished by Newton, the quartic split
-** into two real quadratic factors, Newton polishing of the factors'
-** coefficients, and quadratics solved without cancellation.
+** root of a cubic resolvent (two forms, every root tried), the quartic
+** split into two real quadratic factors, Newton polishing of the factors'
+** coefficients, and quadratics solved without cancellation; roots of
+** widely spread sizes by groups of the Newton polygon, a group's factor
+** polished on the whole polynomial (Bairstow).
 ** The code is ours; the method follows that paper.
 */
 #include <float.h>
