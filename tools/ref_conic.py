@@ -11,7 +11,7 @@ Writes
   spec/data/conic_length_extreme.tsv  lengths at the ends of the double
       range (legs 1e-300 beside O(1), w = 1e+-300, points near DBL_MAX, the
       fuzz findings), by quadrature on panels clustered at the speed's
-      singularities (wide_length); `ref_conic.py extreme` alone: ~5 min.
+      singularities (wide_length); `ref_conic.py extreme` alone: ~12 min.
 
 Independent of the C code: the schemes are the paper's formulas as printed
 (with the corrections of shared/notes/conic.md), at 30 digits.
