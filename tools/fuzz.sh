@@ -11,6 +11,11 @@
 #   FUZZ_SKIP_KNOWN=1 sh tools/fuzz.sh   build into build/fuzz-long with
 #                                        -DFUZZ_SKIP_KNOWN (reported open
 #                                        issues' inputs skipped: long runs)
+#   FUZZ_RUNS=20000 sh tools/fuzz.sh     a fixed number of inputs per harness
+#                                        from a fixed seed (FUZZ_SEED, default
+#                                        20261122), from the committed seeds
+#                                        only: the same inputs on every
+#                                        machine (CI's pass)
 cd "$(dirname "$0")/.." || exit 2
 SECONDS_EACH=${FUZZ_SECONDS:-15}
 if [ -n "$FUZZ_SKIP_KNOWN" ]; then
@@ -33,13 +38,21 @@ for bin in "$OUT"/fuzz_*; do
   mkdir -p "$work" "$crashes" "$seeds"
   log=$OUT/$h.log
   extra=""
+  dirs="$work $seeds"
+  limit="-max_total_time=$SECONDS_EACH"
+  if [ -n "$FUZZ_RUNS" ]; then
+    limit="-runs=$FUZZ_RUNS -seed=${FUZZ_SEED:-20261122}"
+    fresh=$OUT/fixed-corpus/$h     # new inputs go here, not into the seeds
+    rm -rf "$fresh" && mkdir -p "$fresh"
+    dirs="$fresh $seeds"
+  fi
   if [ -n "$FUZZ_KEEP_GOING" ]; then
     extra="-fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1"
   fi
   # shellcheck disable=SC2086
-  nice "$bin" -max_total_time="$SECONDS_EACH" -timeout=10 -rss_limit_mb=1024 \
+  nice "$bin" $limit -timeout=10 -rss_limit_mb=1024 \
     -print_final_stats=1 -artifact_prefix="$crashes/" $extra \
-    "$work" "$seeds" >"$log" 2>&1
+    $dirs >"$log" 2>&1
   rc=$?
   runs=$(grep -E '^stat::number_of_executed_units' "$log" | tail -1 | awk '{print $2}')
   [ -z "$runs" ] && runs=$(grep -oE '^#[0-9]+' "$log" | tail -1 | tr -d '#')
@@ -48,7 +61,11 @@ for bin in "$OUT"/fuzz_*; do
   ncrash=$(ls "$crashes" 2>/dev/null | wc -l)
   if [ $rc -eq 0 ] && ! grep -q 'INVARIANT FAILED\|ERROR: libFuzzer\|ERROR: AddressSanitizer\|runtime error' "$log"; then
     PASSED=$((PASSED + 1))
-    echo "ok   $h: $runs executions in ${SECONDS_EACH}s"
+    if [ -n "$FUZZ_RUNS" ]; then
+      echo "ok   $h: $runs executions (seed ${FUZZ_SEED:-20261122})"
+    else
+      echo "ok   $h: $runs executions in ${SECONDS_EACH}s"
+    fi
   else
     FAILED=$((FAILED + 1))
     echo "FAIL $h: $runs executions, exit $rc, $ncrash saved inputs in $crashes (log $log)"
