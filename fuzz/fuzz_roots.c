@@ -87,6 +87,27 @@ static int beyond_range(int odd, const double *re, const double *im, int n) {
   return big >= (long double)DBL_MAX * (1 - 0x1p-40L);
 }
 
+/* All the roots, none lost or counted twice: their sum is -a_(n-1)/a_n.
+** The residual check cannot see a root listed in place of another (the
+** double root -1/2 of -x^2 (2x+1)^2 + 5e-116 x - 2e-174 came back as two
+** more copies of its tiny pair).  A missing root moves the sum by its own
+** size; a backward-stable solver's roots in an m-fold cluster may each
+** sit eps^(1/m) of their size off (m <= 4: 1.2e-4), so 2^-8 of the sum
+** of the sizes separates the two. */
+static void root_sum(const char *what, const double *a, int n, const double *re,
+                     const double *im) {
+  long double sr = 0, si = 0, size = 0, want = -(long double)a[n - 1] / a[n];
+  int i;
+  for (i = 0; i < n; i++) {
+    sr += re[i]; si += im[i];
+    size += cabsl(re[i] + I * (long double)im[i]);
+  }
+  size += fabsl(want);
+  if (!isfinite((double)size)) return;
+  if (hypotl(sr - want, si) > size * 0x1p-8L + 16 * 0x1p-1074)
+    fz_fail(what, a, 1, "roots sum to %g, not %g", (double)sr, (double)want);
+}
+
 static void pairs(const char *what, const double *a, int cnt, const double *re,
                   const double *im) {
   int i, j;
@@ -119,24 +140,27 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     n = arclen_cubic(a[3], a[2], a[1], a[0], re, im);
     if (a[3] != 0 && n != 3) fz_fail("cubic count", a, 1, "%g roots %g", n, 0);
     for (i = 0; i < n; i++) check("cubic", a, 3, re[i], im[i]);
+    if (n == 3) root_sum("cubic sum", a, 3, re, im);
   } else {
     n = arclen_quartic(a[4], a[3], a[2], a[1], a[0], re, im);
     if (a[4] != 0 && n != 4) fz_fail("quartic count", a, 1, "%g roots %g", n, 0);
     for (i = 0; i < n; i++) check("quartic", a, 4, re[i], im[i]);
+    if (n == 4) root_sum("quartic sum", a, 4, re, im);
     if (a[4] != 0 &&
         arclen_quartic_factor(a[4], a[3], a[2], a[1], a[0], q) == ARCLEN_OK) {
       /* (x^2 + q0 x + q1)(x^2 + q2 x + q3) = the quartic / a4: the
       ** factors' roots are the quartic's */
-      double fr[2], fi[2];
-      int j, m;
+      double fr[4], fi[4];
+      int j, m = 0;
       for (i = 0; i < 4; i++)
         if (!isfinite(q[i]) && !(isinf(q[i]) && beyond_range(i & 1, re, im, n)))
           fz_fail("quartic_factor", a, 1, "q%g = %g", i, q[i]);
       for (j = 0; j < 2; j++) {
         if (!isfinite(q[2 * j]) || !isfinite(q[2 * j + 1])) continue;
-        m = arclen_quadratic(1, q[2 * j], q[2 * j + 1], fr, fi);
-        for (i = 0; i < m; i++) check("quartic_factor", a, 4, fr[i], fi[i]);
+        m += arclen_quadratic(1, q[2 * j], q[2 * j + 1], fr + m, fi + m);
       }
+      for (i = 0; i < m; i++) check("quartic_factor", a, 4, fr[i], fi[i]);
+      if (m == 4) root_sum("quartic_factor sum", a, 4, fr, fi);
     }
   }
   if (n > 0) pairs("conjugates", a, n, re, im);

@@ -367,21 +367,27 @@ static double edge_bits(const poly *P, int a, int b) {
 
 /* Newton on the whole polynomial scaled to x = 2^E y (coefficients c[j],
 ** all <= about 1 near the group's roots, so Horner cannot overflow),
-** for one root, kept only while |p| falls: it sharpens roots that the
-** factor split or the group's neglected coefficients left coarse, and
-** never makes one worse. */
+** for one root, kept only while its backward error |p| / sum |c_k| |x|^k
+** falls: it sharpens roots that the factor split or the group's neglected
+** coefficients left coarse, and never makes one worse.  Not |p| alone: at
+** a double root p' ~ 0 and a step may land on another root of smaller
+** |p| (the double root -1/2 of -x^2 (2x+1)^2 + 5e-116 x - 2e-174 went to
+** the tiny pair at 0: two roots lost; fuzz/fuzz_roots). */
 static void polish_root(const double *c, int n, double *zr, double *zi) {
   double best = HUGE_VAL, xr = *zr, xi = *zi;
   int it, k;
   for (it = 0; it < NEWTON_CAP; it++) {
-    double pr = c[n], pi = 0, dr = 0, di = 0, t, den, ap;
+    double pr = c[n], pi = 0, dr = 0, di = 0, t, den, ap, s = fabs(c[n]);
+    double ax = hypot(xr, xi), rel;
     for (k = n - 1; k >= 0; k--) {        /* Horner for p and p' */
       t = dr * xr - di * xi + pr; di = dr * xi + di * xr + pi; dr = t;
       t = pr * xr - pi * xi + c[k]; pi = pr * xi + pi * xr; pr = t;
+      s = s * ax + fabs(c[k]);
     }
     ap = hypot(pr, pi);
-    if (!(ap < best)) break;
-    best = ap; *zr = xr; *zi = xi;
+    rel = ap > 0 ? ap / s : 0;
+    if (!(rel < best)) break;
+    best = rel; *zr = xr; *zi = xi;
     den = dr * dr + di * di;
     if (ap == 0 || den == 0) break;
     xr -= (pr * dr + pi * di) / den;

@@ -65,6 +65,9 @@ CASES = [
      "-(x+1)^3 + tiny x^4: the cubic group's own coefficients kept -1"),
     ("near-triple-1+3", [-1.0, -3.0, -3.0, -1.0, 2.9103830456733704e-11],
      "the same reversed: the lone root is the smallest"),
+    ("double-root-jump", [-4.0, -4.0, -1.0, 5.07565169729921e-116,
+                          -2.0215873059760975e-174],
+     "per-root Newton left the double root -1/2 for the tiny pair: 2 roots lost"),
 ]
 
 
