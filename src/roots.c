@@ -448,7 +448,8 @@ static double factor_bwd(const double *c, int n, double u, double v) {
 ** factor_newton.  Below eps the measure is Horner's rounding: done. */
 static void polish_factor(const double *c, int n, double *u, double *v) {
   double b[2], bu[2], bv[2], det, nu = *u, nv = *v, r;
-  double best = factor_bwd(c, n, *u, *v);
+  double best = factor_bwd(c, n, *u, *v), rho = fmax(fabs(*u), sqrt(fabs(*v)));
+  double u0 = *u, v0 = *v;
   int i, stall = 0;
   for (i = 0; i < FACTOR_NEWTON_CAP && best > DBL_EPSILON; i++) {
     bairstow(c, n, nu, nv, b, bu, bv);
@@ -457,6 +458,10 @@ static void polish_factor(const double *c, int n, double *u, double *v) {
     nu -= (b[1] * bv[0] - bv[1] * b[0]) / det;
     nv -= (bu[1] * b[0] - b[1] * bu[0]) / det;
     if (!isfinite(nu) || !isfinite(nv)) break;
+    /* the group's own factor is within about 2^-SPLIT_BITS of the true
+    ** one: a step far beyond (a singular Jacobian at a double root) is
+    ** headed for another group's roots, which solve c as well */
+    if (fabs(nu - u0) > rho / 16 || fabs(nv - v0) > rho * rho / 16) break;
     r = factor_bwd(c, n, nu, nv);
     if (r < best) {
       best = r; stall = 0; *u = nu; *v = nv;
@@ -628,6 +633,10 @@ static int poly_roots_(const double *p, int n, double *re, double *im,
     re[cnt] = 0; im[cnt] = 0; cnt++; lo++;
   }
   if (lo == n) return cnt;
+  /* the rest from p / x^lo (exact): kept in, those zeros are exact roots
+  ** that the polishing can fall into (-x^2 (x+1)^2 + 7.4e-68 x: the
+  ** double root -1 became 0, 0; fuzz/fuzz_roots) */
+  if (lo > 0) return lo + poly_roots_(p + lo, n - lo, re + lo, im + lo, may_shift);
   ng = split_groups(&P, lo, gs);
   if (ng == 1 && may_shift) {
     double c[5];

@@ -68,6 +68,8 @@ CASES = [
     ("double-root-jump", [-4.0, -4.0, -1.0, 5.07565169729921e-116,
                           -2.0215873059760975e-174],
      "per-root Newton left the double root -1/2 for the tiny pair: 2 roots lost"),
+    ("exact-zero-attracts", [-1.0, -2.0, -1.0, 7.4184123070967245e-68, 0.0],
+     "the double root -1 fell into the exact zero root: 2 roots lost"),
 ]
 
 
