@@ -93,10 +93,12 @@ static int beyond_range(int odd, const double *re, const double *im, int n) {
 ** more copies of its tiny pair).  A missing root moves the sum by its own
 ** size; a backward-stable solver's roots in an m-fold cluster may each
 ** sit eps^(1/m) of their size off (m <= 4: 1.2e-4), so 2^-8 of the sum
-** of the sizes separates the two. */
+** of the sizes separates the two.  For the factors' roots the sizes of
+** the quartic's roots count too (size): roots +-3.3e-207 make a factor
+** x^2 - 1.1e-413, which is x^2 in double, their sum -4.6e-308 lost. */
 static void root_sum(const char *what, const double *a, int n, const double *re,
-                     const double *im) {
-  long double sr = 0, si = 0, size = 0, want = -(long double)a[n - 1] / a[n];
+                     const double *im, long double size) {
+  long double sr = 0, si = 0, want = -(long double)a[n - 1] / a[n];
   int i;
   for (i = 0; i < n; i++) {
     sr += re[i]; si += im[i];
@@ -140,12 +142,12 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     n = arclen_cubic(a[3], a[2], a[1], a[0], re, im);
     if (a[3] != 0 && n != 3) fz_fail("cubic count", a, 1, "%g roots %g", n, 0);
     for (i = 0; i < n; i++) check("cubic", a, 3, re[i], im[i]);
-    if (n == 3) root_sum("cubic sum", a, 3, re, im);
+    if (n == 3) root_sum("cubic sum", a, 3, re, im, 0);
   } else {
     n = arclen_quartic(a[4], a[3], a[2], a[1], a[0], re, im);
     if (a[4] != 0 && n != 4) fz_fail("quartic count", a, 1, "%g roots %g", n, 0);
     for (i = 0; i < n; i++) check("quartic", a, 4, re[i], im[i]);
-    if (n == 4) root_sum("quartic sum", a, 4, re, im);
+    if (n == 4) root_sum("quartic sum", a, 4, re, im, 0);
     if (a[4] != 0 &&
         arclen_quartic_factor(a[4], a[3], a[2], a[1], a[0], q) == ARCLEN_OK) {
       /* (x^2 + q0 x + q1)(x^2 + q2 x + q3) = the quartic / a4: the
@@ -160,7 +162,11 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         m += arclen_quadratic(1, q[2 * j], q[2 * j + 1], fr + m, fi + m);
       }
       for (i = 0; i < m; i++) check("quartic_factor", a, 4, fr[i], fi[i]);
-      if (m == 4) root_sum("quartic_factor sum", a, 4, fr, fi);
+      if (m == 4) {
+        long double size = 0;
+        for (i = 0; i < n; i++) size += cabsl(re[i] + I * (long double)im[i]);
+        root_sum("quartic_factor sum", a, 4, fr, fi, size);
+      }
     }
   }
   if (n > 0) pairs("conjugates", a, n, re, im);
