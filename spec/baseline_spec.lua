@@ -79,6 +79,58 @@ describe("baselines", function()
     end
   end)
 
+  it("coordinates within a factor 64 of DBL_MAX: exactly 2^k times the unscaled rules (fuzz_length: inf/NaN)", function()
+    -- every rule scales its legs by a power of two, so 2^k c gives exactly
+    -- 2^k L(c); before, the scale 2^e itself overflowed (legs near DBL_MAX)
+    local row = henkel[1]
+    local c, L = H.curve(row), tonumber(row.L)
+    local big = 0
+    for i = 1, #c do big = math.max(big, math.abs(c[i])) end
+    local f = 1.0
+    while big * f * 64 <= 1.7976931348623157e308 do f = f * 2 end
+    local s = {}
+    for i = 1, #c do s[i] = c[i] * f end
+    for _, m in ipairs({"polyline", "trapezoid", "trapezoid-factored"}) do
+      local a = arclen.length(c, {method = m, steps = 1000})
+      local b = arclen.length(s, {method = m, steps = 1000})
+      assert.are.equal(a * f, b, m)
+      assert.is_true(H.relerr(b / f, L) <= 1e-5, m)   -- O(N^-2) at N = 1000
+      assert.are.equal(-a * f, arclen.length(s, {method = m, steps = 1000, t0 = 1, t1 = 0}), m)
+    end
+  end)
+
+  it("legs beyond DBL_MAX/2 on a finite length: the line x = -y, length 11 sqrt(2) 2^1020 (was inf)", function()
+    -- legs 9u, u, u (u = 2^1020, 9u > DBL_MAX/2): the old scale 4 * 2^1022
+    -- overflowed; 2^-1000 times the curve gives exactly 2^-1000 times
+    local u, d = 2.0^1020, 2.0^-1000
+    local c = {-6 * u, 6 * u, 3 * u, -3 * u, 4 * u, -4 * u, 5 * u, -5 * u}
+    local s = {}
+    for i = 1, #c do s[i] = c[i] * d end
+    assert.is_true(H.relerr(arclen.length(c, {method = "polyline", steps = 1000}),
+                            11 * math.sqrt(2) * u) <= 1e-14)
+    for _, m in ipairs({"polyline", "trapezoid", "trapezoid-factored"}) do
+      local a = arclen.length(c, {method = m, steps = 1000})
+      assert.are.equal(arclen.length(s, {method = m, steps = 1000}), a * d, m)
+      assert.is_true(H.relerr(a, 11 * math.sqrt(2) * u) <= 1e-5, m)
+    end
+  end)
+
+  it("a subnormal quadratic term: no NaN (trapezoid-factored gave NaN, fuzz_length)", function()
+    -- x = -3t(1 - t), y ~ 2.7e-312 (1 - t)^3: 1.5 to double precision; the
+    -- speed 3|1 - 2t| is linear on each half and t = 1/2 is a node, so the
+    -- trapezoid sum is exact
+    local c = {0, 2.6555617666909946e-312, -1, 0, -1, 0, 0, 0}
+    for _, m in ipairs({"polyline", "trapezoid", "trapezoid-factored"}) do
+      assert.is_true(math.abs(arclen.length(c, {method = m, steps = 1000}) - 1.5) <= 1e-14, m)
+    end
+    -- hodograph with a subnormal leading coefficient (its root beyond 2^1000)
+    c = {-1, -4.9406564584124654e-324, 0, 5.4322263344105125e-312,
+         3.2615075307131295e-311, 3.2615075307106592e-311, -1, 0}
+    local a = arclen.length(c, {method = "trapezoid-factored", steps = 1000})
+    local b = arclen.length(c, {method = "trapezoid", steps = 1000})
+    assert.is_true(a == a and H.relerr(a, b) <= 1e-12)
+  end)
+
   it("bad steps are argument errors", function()
     assert.matches("steps", H.error_of(arclen.length, {0, 0, 1, 1, 2, 2, 3, 3},
                                        {method = "polyline", steps = 0}))

@@ -32,36 +32,38 @@ static void add(ksum *g, double x) {
   g->s = t;
 }
 
-/* The leg vectors d_k = P_{k+1} - P_k (d[3k + i]) divided by a power of two,
+/* The leg vectors d_k = P_{k+1} - P_k (d[3k + i]) divided by 2^e, e
 ** returned, that puts the largest component in [0.5, 1): sums of squares
 ** then neither overflow (coordinates near DBL_MAX) nor underflow (subnormal
 ** ones), and the scaling is exact.  Coordinates beyond DBL_MAX/4 are
-** quartered first so that no difference overflows. */
-static double legs_scaled(const double *c, int dim, double d[9]) {
+** quartered first so that no difference overflows.  The scale stays an
+** exponent: 2^e itself may exceed DBL_MAX (legs near 2 DBL_MAX), so the
+** callers finish with ldexp(result, e) (fuzz_length: inf/NaN otherwise). */
+static int legs_scaled(const double *c, int dim, double d[9]) {
   double pre = 1.0, big = 0.0;
-  int i, k, e;
+  int i, k, e, pre_e = 0;
   for (k = 0; k < 9; k++) d[k] = 0.0;     /* 2D leaves the z slots unset */
   for (i = 0; i < 4 * dim; i++)
-    if (fabs(c[i]) > DBL_MAX / 4) pre = 0.25;
+    if (fabs(c[i]) > DBL_MAX / 4) { pre = 0.25; pre_e = 2; }
   for (k = 0; k < 3; k++)
     for (i = 0; i < dim; i++) {
       d[3 * k + i] = c[(k + 1) * dim + i] * pre - c[k * dim + i] * pre;
       big = fmax(big, fabs(d[3 * k + i]));
     }
-  if (big == 0.0) return 1.0;
+  if (big == 0.0) return 0;
   frexp(big, &e);
   for (k = 0; k < 3 * 3; k++) d[k] = ldexp(d[k], -e);
-  return ldexp(1.0, e) / pre;      /* may be inf: so is the length */
+  return e + pre_e;
 }
 
 /* Power basis of z(t) - z(0) per coordinate (Henkel's Eqn 4 without a0),
 ** from the leg vectors so that far-away curves keep their digits:
-** a1 = 3 d0, a2 = 3 (d1 - d0), a3 = d2 - 2 d1 + d0; divided by the
-** returned scale (legs_scaled). */
-static double power_basis(const double *c, int dim, double a1[3],
-                          double a2[3], double a3[3]) {
-  double d[9], scale = legs_scaled(c, dim, d);
-  int i;
+** a1 = 3 d0, a2 = 3 (d1 - d0), a3 = d2 - 2 d1 + d0; divided by 2^e, e
+** returned (legs_scaled). */
+static int power_basis(const double *c, int dim, double a1[3],
+                       double a2[3], double a3[3]) {
+  double d[9];
+  int i, scale = legs_scaled(c, dim, d);
   for (i = 0; i < dim; i++) {
     double d0 = d[i], d1 = d[3 + i], d2 = d[6 + i];
     a1[i] = 3.0 * d0;
@@ -102,10 +104,10 @@ static double node(double t0, double t1, long i, long n) {
 
 int arclen_length_polyline(const double *c, int dim, const arclen_opts *o,
                            double *len, arclen_info *info) {
-  double a1[3], a2[3], a3[3], t0, t1, ta, scale;
+  double a1[3], a2[3], a3[3], t0, t1, ta;
   long n, i;
   ksum sum = {0.0, 0.0};
-  int rc = setup(dim, o, &n, &t0, &t1, 1), k;
+  int rc = setup(dim, o, &n, &t0, &t1, 1), k, scale;
   if (rc != ARCLEN_OK) { *len = NAN; return rc; }
   scale = power_basis(c, dim, a1, a2, a3);
   ta = t0;
@@ -121,7 +123,7 @@ int arclen_length_polyline(const double *c, int dim, const arclen_opts *o,
     ta = tb;
   }
   fill_info(info, n, n, "polyline");
-  *len = ((t1 < t0) ? -(sum.s + sum.c) : sum.s + sum.c) * scale;
+  *len = ldexp((t1 < t0) ? -(sum.s + sum.c) : sum.s + sum.c, scale);
   return ARCLEN_OK;
 }
 
@@ -152,9 +154,8 @@ static double quartic_speed(const void *data, double t) {
 int arclen_length_trapezoid(const double *c, int dim, const arclen_opts *o,
                             double *len, arclen_info *info) {
   double a1[3], a2[3], a3[3], q[5] = {0.0, 0.0, 0.0, 0.0, 0.0}, t0, t1;
-  double scale;
   long n;
-  int rc = setup(dim, o, &n, &t0, &t1, 1), k;
+  int rc = setup(dim, o, &n, &t0, &t1, 1), k, scale;
   if (rc != ARCLEN_OK) { *len = NAN; return rc; }
   scale = power_basis(c, dim, a1, a2, a3);
   for (k = 0; k < dim; k++) {         /* Henkel's Eqn 8, summed over axes */
@@ -164,7 +165,7 @@ int arclen_length_trapezoid(const double *c, int dim, const arclen_opts *o,
     q[1] += 4.0 * a2[k] * a1[k];
     q[0] += a1[k] * a1[k];
   }
-  *len = trapezoid(quartic_speed, q, t0, t1, n) * scale;
+  *len = ldexp(trapezoid(quartic_speed, q, t0, t1, n), scale);
   fill_info(info, n + 1, n, "trapezoid");
   return ARCLEN_OK;
 }
@@ -224,16 +225,21 @@ static double factored_speed(const void *data, double t) {
   return f->lead * sqrt(p);
 }
 
-/* Append the root s: a factor |t - s|.  A root farther than 2^60 from
-** [0, 1] (the hodograph nearly drops a degree) is |s| |1 - t/s| = |s| to
-** double precision: it goes into the leading factor, where (t - a)^2 + b^2
-** would overflow and make inf * 0 = NaN at the other root (fuzz_length). */
-static void add_root(factored *f, cpx s) {
-  double m = hypot(s.re, s.im);
-  if (m > 0x1p60 || !isfinite(m)) {
-    f->lead *= m;
+/* Append the root s = num/den: a factor |t - s|.  A root farther than
+** 2^60 from [0, 1] (the hodograph nearly drops a degree) is |s| |1 - t/s|
+** = |s| to double precision: it goes into the leading factor, where
+** (t - a)^2 + b^2 would overflow and make inf * 0 = NaN at the other root.
+** lead |s| is taken as (lead/|den|) |num|, never through s itself: with a
+** subnormal den, |s| overflows where lead |s| does not (fuzz_length: NaN
+** from lead = 4e-312 times inf). */
+static void add_root(factored *f, cpx num, cpx den) {
+  double mn = hypot(num.re, num.im), md = hypot(den.re, den.im);
+  cpx s;
+  if (mn > 0x1p60 * md) {
+    f->lead = f->lead / md * mn;
     return;
   }
+  s = cdiv(num, den);
   f->a[f->nroots] = s.re;
   f->b2[f->nroots] = s.im * s.im;
   f->nroots++;
@@ -241,11 +247,12 @@ static void add_root(factored *f, cpx s) {
 
 /* Roots of A2 t^2 + A1 t + A0 (complex coefficients) without cancellation:
 ** q = -(A1 + d)/2 with d = +-sqrt(A1^2 - 4 A2 A0) on A1's side, then
-** s1 = q/A2 and s2 = A0/q.  Fills f (f->lead divided by the returned scale,
+** s1 = q/A2 and s2 = A0/q.  Fills f (f->lead divided by 2^e, e returned,
 ** see legs_scaled); lower degrees when A2 (and A1) vanish. */
-static double factor_speed(const double *c, factored *f) {
+static int factor_speed(const double *c, factored *f) {
   cpx A0, A1, A2, d, q, s;
-  double leg[9], scale = legs_scaled(c, 2, leg);
+  double leg[9];
+  int scale = legs_scaled(c, 2, leg);
   double d0x = leg[0], d0y = leg[1], d1x = leg[3];
   double d1y = leg[4], d2x = leg[6], d2y = leg[7];
   A0.re = 3.0 * d0x; A0.im = 3.0 * d0y;
@@ -258,12 +265,11 @@ static double factor_speed(const double *c, factored *f) {
       f->nroots = 0;
       return scale;
     }
-    s = cdiv(A0, A1);                          /* z' = A1 (t + A0/A1) */
-    s.re = -s.re;
-    s.im = -s.im;
+    s.re = -A0.re;                             /* z' = A1 (t + A0/A1) */
+    s.im = -A0.im;
     f->lead = hypot(A1.re, A1.im);
     f->nroots = 0;
-    add_root(f, s);
+    add_root(f, s, A1);
     return scale;
   }
   d = cmul(A1, A1);
@@ -276,12 +282,13 @@ static double factor_speed(const double *c, factored *f) {
   q.im = -(A1.im + d.im) / 2.0;
   f->lead = hypot(A2.re, A2.im);
   f->nroots = 0;
-  add_root(f, cdiv(q, A2));
+  add_root(f, q, A2);
   if (q.re == 0.0 && q.im == 0.0) {            /* A1 = A0 = 0: t^2 */
-    cpx zero = {0.0, 0.0};
-    add_root(f, zero);
+    cpx zero = {0.0, 0.0}, one = {1.0, 0.0};
+    add_root(f, zero, one);
   } else {
-    add_root(f, cdiv(A0, q));
+    /* lead is |A2| or, if q/A2 went into it, |q|: divided by |q| below */
+    add_root(f, A0, q);
   }
   return scale;
 }
@@ -290,12 +297,12 @@ int arclen_length_trapezoid_factored(const double *c, int dim,
                                      const arclen_opts *o, double *len,
                                      arclen_info *info) {
   factored f;
-  double t0, t1, scale;
+  double t0, t1;
   long n;
-  int rc = setup(dim, o, &n, &t0, &t1, 0);
+  int rc = setup(dim, o, &n, &t0, &t1, 0), scale;
   if (rc != ARCLEN_OK) { *len = NAN; return rc; }
   scale = factor_speed(c, &f);
-  *len = trapezoid(factored_speed, &f, t0, t1, n) * scale;
+  *len = ldexp(trapezoid(factored_speed, &f, t0, t1, n), scale);
   fill_info(info, n + 1, n, "trapezoid-factored");
   return ARCLEN_OK;
 }

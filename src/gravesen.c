@@ -25,6 +25,7 @@
 ** two levels, R1 = S1 + (S1 - E)/15 and R2 = S2 + (S2 - S1)/15, and takes
 ** R2 when |R2 - R1| (about R1's error, far above R2's) is within budget.
 */
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 
@@ -96,13 +97,13 @@ static int flat(const piece *p) {
 static int gravesen(const double *c, int dim, const arclen_opts *o,
                     int richardson, double *len, arclen_info *info) {
   piece stack[MAX_LEVEL + 2], root;
-  double sub[12], lref, rtol = o ? o->rtol : 1e-12;
+  double sub[12], quarter[12], lref, rtol = o ? o->rtol : 1e-12;
   double t0 = o ? o->t0 : 0.0, t1 = o ? o->t1 : 1.0, sign = 1.0;
   const double *q = c;
   gsum total = {0.0, 0.0}, err = {0.0, 0.0};
   long splits = 0;
   double big = 0.0;
-  int sp = 0, depth = 0, i, capped = 0, ex = 0;
+  int sp = 0, depth = 0, i, capped = 0, ex = 0, pre = 0;
   if (dim != 2 && dim != 3) { *len = NAN; return ARCLEN_EDIM; }
   if (t0 == t1) {          /* empty range: 0, as gauss (a cut-out point */
     *len = 0.0;            /* of a far curve has rounding-sized legs) */
@@ -110,6 +111,14 @@ static int gravesen(const double *c, int dim, const arclen_opts *o,
     return ARCLEN_OK;
   }
   if (t0 > t1) { double w = t0; t0 = t1; t1 = w; sign = -1.0; }
+  /* Coordinates beyond DBL_MAX/4 are quartered (exactly, 2 into ex) so
+  ** that no leg overflows: legs of 1.2 DBL_MAX may bound a finite length. */
+  for (i = 0; i < 4 * dim; i++)
+    if (fabs(c[i]) > DBL_MAX / 4) pre = 2;
+  if (pre) {
+    for (i = 0; i < 4 * dim; i++) quarter[i] = c[i] * 0.25;
+    q = c = quarter;
+  }
   if (t0 != 0.0 || t1 != 1.0) {
     /* Cut the curve moved to P0 = 0: blossoming in absolute coordinates
     ** would cost |P0| eps of every control point (digits of a far curve). */
@@ -181,12 +190,12 @@ static int gravesen(const double *c, int dim, const arclen_opts *o,
     info->evals = 0;
     info->pieces = splits;
     info->depth = depth;
-    info->err = ldexp(err.s + err.c, ex);
+    info->err = ldexp(err.s + err.c, ex + pre);
     info->branch = richardson ? "gravesen-richardson" : "gravesen";
     info->calls = 0;
   }
   if (capped) { *len = NAN; return ARCLEN_ENOCONV; }
-  *len = sign * ldexp(total.s + total.c, ex);
+  *len = sign * ldexp(total.s + total.c, ex + pre);
   return ARCLEN_OK;
 }
 
