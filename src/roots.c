@@ -372,9 +372,13 @@ static double edge_bits(const poly *P, int a, int b) {
 ** coefficients left coarse, and never makes one worse.  Not |p| alone: at
 ** a double root p' ~ 0 and a step may land on another root of smaller
 ** |p| (the double root -1/2 of -x^2 (2x+1)^2 + 5e-116 x - 2e-174 went to
-** the tiny pair at 0: two roots lost; fuzz/fuzz_roots). */
+** the tiny pair at 0: two roots lost; fuzz/fuzz_roots).  Nor a step of
+** more than a quarter of the root's size: that is a jump to another root
+** (from the double root -1 of -x^2 (x+1)^2 + 1.1e-75 x - 4e-323 to 0,
+** where the scaled constant term underflows: an exact root of c). */
 static void polish_root(const double *c, int n, double *zr, double *zi) {
-  double best = HUGE_VAL, xr = *zr, xi = *zi;
+  double best = HUGE_VAL, xr = *zr, xi = *zi, r0 = hypot(xr, xi);
+  const double z0r = *zr, z0i = *zi;
   int it, k;
   for (it = 0; it < NEWTON_CAP; it++) {
     double pr = c[n], pi = 0, dr = 0, di = 0, t, den, ap, s = fabs(c[n]);
@@ -386,7 +390,7 @@ static void polish_root(const double *c, int n, double *zr, double *zi) {
     }
     ap = hypot(pr, pi);
     rel = ap > 0 ? ap / s : 0;
-    if (!(rel < best)) break;
+    if (!(rel < best) || hypot(xr - z0r, xi - z0i) > r0 / 4) break;
     best = rel; *zr = xr; *zi = xi;
     den = dr * dr + di * di;
     if (ap == 0 || den == 0) break;

@@ -70,6 +70,9 @@ CASES = [
      "per-root Newton left the double root -1/2 for the tiny pair: 2 roots lost"),
     ("exact-zero-attracts", [-1.0, -2.0, -1.0, 7.4184123070967245e-68, 0.0],
      "the double root -1 fell into the exact zero root: 2 roots lost"),
+    ("underflow-attracts", [-1.0, -2.0, -1.0, 1.10543037414606e-75,
+                            -3.9525251667299724e-323],
+     "the same where the scaled constant term underflows to 0"),
 ]
 
 
