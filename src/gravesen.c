@@ -40,11 +40,19 @@
 ** measured on ~600 reference curves, 16 let pre-asymptotic pieces through
 ** (errors up to 2.3 rtol at rtol 1e-4), 4 keeps every error below 0.7 rtol. */
 #define RHO_MINUS_1 3.0
+/* Rounding level of a sum of estimates (relative): 64 eps. */
+#define NOISE (64 * DBL_EPSILON)
+/* Largest ratio |R2 - R1|/|R3 - R2| trusted: 32..64 when asymptotic
+** (errors O(h^6), O(h^7) after one extrapolation), measured 64. */
+#define MAX_RATIO 256.0
+/* Largest leg ratio of a regular piece (see regular()). */
+#define SPREAD 2.0
 
 typedef struct piece {
   double d[9];              /* d0, d1, d2, stride 3 */
   int k;                    /* level: parameter width 2^-k */
   double e, lp, lc;         /* estimate, polygon and chord, times 2^-k */
+  double lmin, lmax;        /* shortest and longest leg (unscaled) */
 } piece;
 
 typedef struct gsum {       /* Neumaier's compensated sum */
@@ -68,9 +76,12 @@ static double norm(const double *v, int dim) {
 /* Fill e, lp, lc of p from its d and k. */
 static void measure(piece *p, int dim) {
   double w = ldexp(1.0, -p->k), ch[3];
+  double n0 = norm(p->d, dim), n1 = norm(p->d + 3, dim), n2 = norm(p->d + 6, dim);
   int i;
   for (i = 0; i < dim; i++) ch[i] = p->d[i] + p->d[3 + i] + p->d[6 + i];
-  p->lp = w * (norm(p->d, dim) + norm(p->d + 3, dim) + norm(p->d + 6, dim));
+  p->lmin = fmin(n0, fmin(n1, n2));
+  p->lmax = fmax(n0, fmax(n1, n2));
+  p->lp = w * (n0 + n1 + n2);
   p->lc = w * norm(ch, dim);
   p->e = (p->lc + p->lp) / 2.0;    /* (2 Lc + (3-1) Lp)/(3+1) */
 }
@@ -90,8 +101,14 @@ static void halve(const piece *p, int dim, piece *l, piece *r) {
   measure(r, dim);
 }
 
-static int flat(const piece *p) {
-  return p->lp - p->lc <= FLAT * p->lp;
+/* A piece in the asymptotic regime: nearly straight, and its speed varies
+** by at most SPREAD over it (legs within that factor).  Flatness alone let
+** through a piece whose legs were 6e-6 and 4.3 (a turn at t ~ 1e-3, a root
+** of the speed at 1e-3 of the piece's width): its error does not fall
+** 16-fold on halving, and |E - S| was 5x below the true error (fuzz_length,
+** 2.2 rtol; Richardson 5 rtol on such stops and collinear reversals). */
+static int regular(const piece *p) {
+  return p->lp - p->lc <= FLAT * p->lp && p->lmax <= SPREAD * p->lmin;
 }
 
 static int gravesen(const double *c, int dim, const arclen_opts *o,
@@ -155,25 +172,59 @@ static int gravesen(const double *c, int dim, const arclen_opts *o,
       continue;
     }
     if (!richardson) {
-      if (flat(&l) && flat(&r) && fabs(p.e - s) / RHO_MINUS_1 <= tol / 2.0) {
-        add(&total, s);
-        add(&err, fabs(p.e - s) / RHO_MINUS_1);
-        continue;
+      /* One level more to see the errors fall: |E - S| alone was 4.5e-10
+      ** on a piece where both E and S were 7e-8 off (fuzz_length, 4.8 rtol).
+      ** Tried where |S - S2| = |E - S|/16 (asymptotic) would pass. */
+      if (regular(&l) && regular(&r) &&
+          fabs(p.e - s) / RHO_MINUS_1 <= 16.0 * tol / 2.0) {
+        piece g[4];
+        double s2, d01 = fabs(p.e - s), d12;
+        int ok = 1;
+        halve(&l, dim, &g[0], &g[1]);
+        halve(&r, dim, &g[2], &g[3]);
+        for (i = 0; i < 4; i++) ok = ok && regular(&g[i]);
+        splits += 2;
+        if (g[0].k > depth) depth = g[0].k;
+        s2 = (g[0].e + g[1].e) + (g[2].e + g[3].e);
+        d12 = fabs(s - s2);
+        if (ok && d12 / RHO_MINUS_1 <= tol / 2.0 && (d01 <= NOISE * s ||
+            ((RHO_MINUS_1 + 1.0) * d12 <= d01 &&
+             d01 <= MAX_RATIO * fmax(d12, NOISE * s)))) {
+          add(&total, s2);
+          add(&err, d12 / RHO_MINUS_1);
+          continue;
+        }
       }
-    } else if (flat(&l) && flat(&r)) {
-      piece g[4];
-      double s2, r1, r2;
+    } else if (regular(&l) && regular(&r)) {
+      /* Three levels below p: R1, R2, R3.  |R3 - R2| bounds R3's error only
+      ** if the extrapolations contract; with two levels, |R2 - R1| was 0.14
+      ** of R2's error on a piece where both were 3e-9 off (R3: 6e-11).
+      ** A ratio d21/d32 beyond MAX_RATIO says R1 was not yet asymptotic
+      ** (1.5e5 on a piece whose R3 was 1e-12 off, tol 5e-13); differences
+      ** at rounding level (NOISE) say nothing either way. */
+      piece g[4], h[8];
+      double s2, s3, r1, r2, r3, d21, d32;
+      int ok = 1;
       halve(&l, dim, &g[0], &g[1]);
       halve(&r, dim, &g[2], &g[3]);
-      splits += 2;
-      if (g[0].k > depth) depth = g[0].k;
+      for (i = 0; i < 4; i++) {
+        halve(&g[i], dim, &h[2 * i], &h[2 * i + 1]);
+        ok = ok && regular(&g[i]) && regular(&h[2 * i]) && regular(&h[2 * i + 1]);
+      }
+      splits += 6;
+      if (h[0].k > depth) depth = h[0].k;
       s2 = (g[0].e + g[1].e) + (g[2].e + g[3].e);
+      s3 = ((h[0].e + h[1].e) + (h[2].e + h[3].e)) +
+           ((h[4].e + h[5].e) + (h[6].e + h[7].e));
       r1 = s + (s - p.e) / 15.0;
       r2 = s2 + (s2 - s) / 15.0;
-      if (flat(&g[0]) && flat(&g[1]) && flat(&g[2]) && flat(&g[3]) &&
-          fabs(r2 - r1) <= tol) {
-        add(&total, r2);
-        add(&err, fabs(r2 - r1));
+      r3 = s3 + (s3 - s2) / 15.0;
+      d32 = fabs(r3 - r2);
+      d21 = fabs(r2 - r1);
+      if (ok && d32 <= tol && (d21 <= NOISE * s ||
+          (2.0 * d32 <= d21 && d21 <= MAX_RATIO * fmax(d32, NOISE * s)))) {
+        add(&total, r3);
+        add(&err, fabs(r3 - r2));
         continue;
       }
     }
