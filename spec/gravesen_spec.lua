@@ -86,3 +86,25 @@ describe("gravesen: ranges and counts", function()
     end
   end)
 end)
+
+describe("gravesen: fuzz_length finds (tools/ref_gravesen_fuzz.py, mpmath)", function()
+  -- pre-asymptotic pieces the old acceptance trusted: a turn at 1e-3 of a
+  -- piece's width, stops beside collinear reversals, E and S (or R1 and R2)
+  -- equally off; were 1.02 .. 5.2 rtol off
+  local rows = H.tsv("gravesen_fuzz.tsv")
+  for _, method in ipairs(METHODS) do
+    it(method .. ": within tol at the fuzzer's rtol and at 1e-3 .. 1e-12", function()
+      local worst = H.worst()
+      for _, row in ipairs(rows) do
+        local c = {}
+        for x in row.c:gmatch("%S+") do c[#c + 1] = tonumber(x) end
+        local t0, t1, L = tonumber(row.t0), tonumber(row.t1), tonumber(row.L)
+        for _, tol in ipairs({tonumber(row.rtol), 1e-3, 1e-6, 1e-9, 1e-12}) do
+          local got = arclen.length(c, {method = method, tol = tol, t0 = t0, t1 = t1})
+          worst:add(H.relerr(got, L) / tol, row.id .. " tol " .. tol)
+        end
+      end
+      assert.is_true(worst.err <= 1, string.format("%.3g tol at %s", worst.err, tostring(worst.id)))
+    end)
+  end
+end)

@@ -16,14 +16,19 @@
 ** sum S = E_left + E_right and own estimate E (node budget tol, below):
 **   rigorous:   sum over children of (Lp - Lc)/2 <= tol, since each true
 **               length lies in [Lc, Lp]; it is what ends the pieces at cusps;
-**   asymptotic: |E - S|/3 <= tol/2 (the children's error if it falls at
-**               least 4-fold; asymptotically it is 16-fold, so this is a
-**               safety factor ~5), trusted only on children that are flat,
-**               Lp - Lc <= FLAT * Lp (nearly straight pieces).
+**   asymptotic: on regular children (flat, Lp - Lc <= FLAT * Lp, and legs
+**               within a factor SPREAD: no root of the speed near the
+**               piece), one level more is taken and S2 (grandchildren)
+**               accepted when |S - S2|/3 <= tol/2 (its error if it falls at
+**               least 4-fold; asymptotically 16-fold) and the differences
+**               are seen to fall: 4 |S - S2| <= |E - S| <= 256 |S - S2|
+**               (a single |E - S| was fooled where E and S erred alike).
 ** The node budget is rtol/2 * max(S, Lref 2^-k), Lref = E_root/4 <= L: the
-** budgets sum to at most rtol * L.  The Richardson variant estimates with
-** two levels, R1 = S1 + (S1 - E)/15 and R2 = S2 + (S2 - S1)/15, and takes
-** R2 when |R2 - R1| (about R1's error, far above R2's) is within budget.
+** budgets sum to at most rtol * L.  The Richardson variant extrapolates on
+** three levels, R_j = S_j + (S_j - S_{j-1})/15, and takes R3 when
+** |R3 - R2| is within budget and the extrapolations contract,
+** 2 |R3 - R2| <= |R2 - R1| <= 256 |R3 - R2| (|R2 - R1| alone was 0.14 of
+** R2's error on a piece where R1 and R2 erred alike).
 */
 #include <float.h>
 #include <math.h>
