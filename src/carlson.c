@@ -8,6 +8,7 @@
 ** DLMF 19.21.10.  A domain error (a negative argument, too many zeros, an
 ** infinite value of the integral, a non-finite argument) gives NaN.
 */
+#include <float.h>
 #include <math.h>
 
 #include "arclen.h"
@@ -70,19 +71,46 @@ static int spread_exp(const double *v, int n) {
 
 /* Arguments spread wider than 2^1000 cannot be scaled into range without
 ** the tiniest underflowing (R_F(2^700, 2^-1074, 2^-1074) then ran into the
-** iteration cap: 1e27 times too large, found by fuzz/fuzz_carlson).  The
-** duplication step v <- (v + lambda)/4 (C95 (2.3)) leaves R_F and R_C
-** unchanged and brings the tiniest up to ~sqrt(max min): at most 3 steps
-** bring any finite arguments within 2^1000.  Written v/4 + lambda/4 so
-** that nothing overflows near DBL_MAX. */
-static void compress_rf(double v[3]) {
+** iteration cap: 1e27 times too large, found by fuzz/fuzz_carlson; R_D
+** lost 7e-10 at (2.5e-237, 4e231, 1e-232) and overflowed beyond).  The
+** duplication step v <- (v + lambda)/4 (C95 (2.3)) brings the tiniest up to
+** ~sqrt(max min): at most 4 steps bring any finite arguments within
+** 2^1000.  Written v/4 + lambda/4 so that nothing overflows near DBL_MAX.
+** R_F and R_C are unchanged by a step; R_D and R_J (given p, n = 4) gain
+** the terms of C95 (2.8), (2.9), weighted 4^-m and added to *sum (*fourn
+** returns 4^-m): 3 / (sqrt(z) (z + lambda)) for R_D, and for R_J
+** 6 R_C(1, 1 + e) / d with d = (sqrt p + sqrt x)(sqrt p + sqrt y)
+** (sqrt p + sqrt z), 1 + e = 2 sqrt(p) (p + lambda) / d as in rj_dup.
+** d can pass 2^1024, so it is kept as a mantissa and an exponent.  Every
+** term is below the value, so none overflows when the value is finite. */
+static double rc_pos(double x, double y);
+
+static void compress(double *v, int n, double *sum, double *fourn) {
   int i, m;
-  for (m = 0; m < 4 && spread_exp(v, 3) > 1000; m++) {
-    double s[3], lam4;
-    for (i = 0; i < 3; i++) s[i] = sqrt(v[i]);
+  for (m = 0; m < 4 && spread_exp(v, n) > 1000; m++) {
+    double s[4], lam4;
+    for (i = 0; i < n; i++) s[i] = sqrt(v[i]);
     lam4 = s[0] * s[1] / 4 + s[0] * s[2] / 4 + s[1] * s[2] / 4;
-    for (i = 0; i < 3; i++) v[i] = v[i] / 4 + lam4;
+    if (n == 3 && sum)                                   /* R_D */
+      *sum += *fourn * 3 / 4 / s[2] / (v[2] / 4 + lam4);
+    if (n == 4) {                                        /* R_J */
+      int e[3], es, eh, ed;
+      double dm = 1, g, h, ope;
+      for (i = 0; i < 3; i++) dm *= frexp(s[3] + s[i], &e[i]);
+      ed = e[0] + e[1] + e[2];
+      g = frexp(s[3], &es);
+      h = frexp(v[3] / 4 + lam4, &eh);
+      ope = ldexp(8 * g * h / dm, es + eh - ed);
+      *sum += *fourn * ldexp(6 * rc_pos(1, ope) / dm, -ed);
+    }
+    for (i = 0; i < n; i++) v[i] = v[i] / 4 + lam4;
+    *fourn /= 4;
   }
+}
+
+static void compress_rf(double v[3]) {
+  double fourn = 1;
+  compress(v, 3, NULL, &fourn);
 }
 
 /* C95 Algorithm 1 (R_F), arguments >= 0 with at most one zero. */
@@ -157,10 +185,17 @@ double arclen_rd(double x, double y, double z) {
   int k;
   if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || z == 0 || (x == 0 && y == 0))
     return NAN;
-  { double v[3] = {x, y, z}; k = scale_exp(v, 3); }
-  if (k == 0) return rd_dup(x, y, z);
-  x = ldexp(x, 2 * k); y = ldexp(y, 2 * k); z = ldexp(z, 2 * k);
-  return ldexp(rd_dup(x, y, z), 3 * k);    /* R_D(4^k v) = 8^-k R_D(v) */
+  {
+    double v[3] = {x, y, z}, sum = 0, fourn = 1;
+    int e;
+    compress(v, 3, &sum, &fourn);
+    x = v[0]; y = v[1]; z = v[2];
+    k = scale_exp(v, 3);
+    x = ldexp(x, 2 * k); y = ldexp(y, 2 * k); z = ldexp(z, 2 * k);
+    /* R_D(4^k v) = 8^-k R_D(v); fourn = 4^-m is exact */
+    frexp(fourn, &e);
+    return ldexp(rd_dup(x, y, z), 3 * k + e - 1) + sum;
+  }
 }
 
 /* C95 Algorithm 2 (R_C); x >= 0, y > 0. */
@@ -198,7 +233,15 @@ double arclen_rc(double x, double y) {
   /* Cauchy principal value, C95 (2.14):
   ** R_C(x, y) = sqrt(x/(x - y)) R_C(x - y, -y) for y < 0. */
   if (x == 0) return 0;
-  return sqrt(x / (x - y)) * rc_pos(x - y, -y);
+  /* sqrt(x) / sqrt(x - y): x / (x - y) underflowed for x = 1e-201,
+  ** y = -4.5e170 (0 for 7.5e-272) */
+  if (x - y < HUGE_VAL) return sqrt(x) / sqrt(x - y) * rc_pos(x - y, -y);
+  /* x - y = 4 w overflows (rc(DBL_MAX, -DBL_MAX), fuzz_carlson):
+  ** sqrt(x - y) = 2 sqrt(w), R_C(4w, -y) = R_C(w, -y/4) / 2 */
+  {
+    double w = x / 4 - y / 4;
+    return sqrt(x) / sqrt(w) * rc_pos(w, -y / 4) / 4;
+  }
 }
 
 static double rc_pos(double x, double y);
@@ -262,12 +305,37 @@ static double rj_dup(double x, double y, double z, double p) {
          + 6 * sum;
 }
 
+/* R_J's spread may come from p alone, with x, y, z subnormal: lambda is
+** then subnormal too and each compress step would lose bits (R_J(2.5e-321,
+** 2.5e-321, 2.5e-321, 11) was 3e-4 off, fuzz_carlson).  Scaling up by 4^k
+** is exact, so the smallest nonzero argument is first brought to the
+** normal range when the largest allows: returns k. */
+static int lift_subnormal(double *v, int n) {
+  double mx = 0, mn = HUGE_VAL;
+  int i, k;
+  for (i = 0; i < n; i++) {
+    mx = fmax(mx, v[i]);
+    if (v[i] > 0) mn = fmin(mn, v[i]);
+  }
+  if (mx == 0 || mn >= DBL_MIN) return 0;
+  k = (DBL_MIN_EXP - 1 - ilogb(mn)) / 2 + 1;
+  if (k > (1020 - ilogb(mx)) / 2) k = (1020 - ilogb(mx)) / 2;
+  if (k <= 0) return 0;
+  for (i = 0; i < n; i++) v[i] = ldexp(v[i], 2 * k);
+  return k;
+}
+
 static double rj_pos(double x, double y, double z, double p) {
-  double v[4] = {x, y, z, p};
-  int k = scale_exp(v, 4);
-  if (k == 0) return rj_dup(x, y, z, p);
-  return ldexp(rj_dup(ldexp(x, 2 * k), ldexp(y, 2 * k), ldexp(z, 2 * k),
-                      ldexp(p, 2 * k)), 3 * k);
+  double v[4] = {x, y, z, p}, sum = 0, fourn = 1;
+  int k, e, k0 = lift_subnormal(v, 4);
+  if (k0 > 0)                  /* R_J(v) = 8^k R_J(4^k v), DLMF 19.20.12 ff. */
+    return ldexp(rj_pos(v[0], v[1], v[2], v[3]), 3 * k0);
+  compress(v, 4, &sum, &fourn);
+  k = scale_exp(v, 4);
+  frexp(fourn, &e);
+  return ldexp(rj_dup(ldexp(v[0], 2 * k), ldexp(v[1], 2 * k),
+                      ldexp(v[2], 2 * k), ldexp(v[3], 2 * k)),
+               3 * k + e - 1) + sum;
 }
 
 /* R_J's Cauchy principal value, p < 0 (DLMF 19.20.14, C95 (2.22)), written
