@@ -771,6 +771,19 @@ int arclen_quartic_factor(double a4, double a3, double a2, double a1,
     for (k = 0; k <= 4; k++) c[k] = scaled(&P, k, b, E);
     polish_factor(c, 4, &u, &v);
     q[0] = ldexp(u, E); q[1] = ldexp(v, 2 * E);
+    /* or the pair of its roots, each polished on p, if they solve c
+    ** better: Bairstow fails where the group's small root lies beside
+    ** another group's (9.6e-6 from a constant term that underflows to
+    ** 0 in this scale: factor roots 1.3e10 eps; fuzz/fuzz_roots) */
+    {
+      double r[2];
+      int g = gs[i];
+      pair_factor(ldexp(re[g], -E), ldexp(fabs(im[g]), -E), ldexp(re[g + 1], -E),
+                  ldexp(im[g + 1], -E), r);
+      if (factor_bwd(c, 4, r[0], r[1]) < factor_bwd(c, 4, u, v)) {
+        q[0] = ldexp(r[0], E); q[1] = ldexp(r[1], 2 * E);
+      }
+    }
     used[gs[i]] = used[gs[i] + 1] = 1;
     nq = 1;
   }

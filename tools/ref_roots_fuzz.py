@@ -73,6 +73,9 @@ CASES = [
     ("underflow-attracts", [-1.0, -2.0, -1.0, 1.10543037414606e-75,
                             -3.9525251667299724e-323],
      "the same where the scaled constant term underflows to 0"),
+    ("bairstow-beside-zero", [-80.0, -5446574.9843752114, -5446645.9843752114,
+                              105.0, 3.9525251667299724e-323],
+     "Bairstow failed beside an underflowed root: factor roots 1.3e10 eps"),
 ]
 
 
