@@ -58,6 +58,15 @@ static int scale_exp(const double *v, int n) {
 
 static int ok_arg(double v) { return v >= 0 && v < HUGE_VAL; }
 
+/* The smallest nonzero of n arguments (HUGE_VAL if none). */
+static double min_pos(const double *v, int n) {
+  double mn = HUGE_VAL;
+  int i;
+  for (i = 0; i < n; i++)
+    if (v[i] > 0) mn = fmin(mn, v[i]);
+  return mn;
+}
+
 /* max / (smallest nonzero) of n arguments, as a binary exponent. */
 static int spread_exp(const double *v, int n) {
   double mx = 0, mn = HUGE_VAL;
@@ -332,6 +341,15 @@ static double rj_pos(double x, double y, double z, double p) {
     return ldexp(rj_pos(v[0], v[1], v[2], v[3]), 3 * k0);
   compress(v, 4, &sum, &fourn);
   k = scale_exp(v, 4);
+  if (spread_exp(v, 4) > 1000) {
+    /* p far above x, y, z, which duplication cannot narrow: scale_exp's
+    ** 2^500 top pushed them subnormal (R_J(4e-323 thrice, 2.7e154) was
+    ** inf, fuzz_carlson).  rj_dup's products (d, A^3/2) stay finite for
+    ** a top up to 2^660, so the smallest is kept normal within that. */
+    int lo = (DBL_MIN_EXP - 1 - ilogb(min_pos(v, 4))) / 2 + 1;
+    int hi = (660 - ilogb(max3(v[0], v[1], fmax(v[2], v[3])))) / 2;
+    if (k < lo) k = lo < hi ? lo : hi;
+  }
   frexp(fourn, &e);
   return ldexp(rj_dup(ldexp(v[0], 2 * k), ldexp(v[1], 2 * k),
                       ldexp(v[2], 2 * k), ldexp(v[3], 2 * k)),
