@@ -8,9 +8,6 @@
 #   FUZZ_SECONDS=600 FUZZ_JOBS=1 sh tools/fuzz.sh     a long run
 #   FUZZ_KEEP_GOING=1 sh tools/fuzz.sh   fork mode: keep fuzzing after a
 #                                        crash, save every distinct one
-#   FUZZ_SKIP_KNOWN=1 sh tools/fuzz.sh   build into build/fuzz-long with
-#                                        -DFUZZ_SKIP_KNOWN (reported open
-#                                        issues' inputs skipped: long runs)
 #   FUZZ_RUNS=20000 sh tools/fuzz.sh     a fixed number of inputs per harness
 #                                        from a fixed seed (FUZZ_SEED, default
 #                                        20261122), from the committed seeds
@@ -18,14 +15,8 @@
 #                                        machine (CI's pass)
 cd "$(dirname "$0")/.." || exit 2
 SECONDS_EACH=${FUZZ_SECONDS:-15}
-if [ -n "$FUZZ_SKIP_KNOWN" ]; then
-  OUT=build/fuzz-long
-  make -s -C fuzz OUT=../$OUT FUZZ_EXTRA=-DFUZZ_SKIP_KNOWN >/dev/null ||
-    { echo "fuzz: build failed"; echo "0 passed, 1 failed"; exit 1; }
-else
-  OUT=build/fuzz
-  make -s -C fuzz >/dev/null || { echo "fuzz: build failed"; echo "0 passed, 1 failed"; exit 1; }
-fi
+OUT=build/fuzz
+make -s -C fuzz >/dev/null || { echo "fuzz: build failed"; echo "0 passed, 1 failed"; exit 1; }
 PASSED=0
 FAILED=0
 TOTAL=0
