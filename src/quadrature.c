@@ -258,7 +258,8 @@ static int start(integrator *in, const double *c, int dim, double t0,
     in->lest = 0.5 * apply_rule(&in->h, rule_at_least(8), t0 + in->width / 2,
                                 in->width / 2);
   if (!(in->lest > 0)) return 0;
-  in->logk = log2((32.0 / 15.0) * in->width / in->rtol) - log2(in->lest);
+  in->logk = rough_log2((32.0 / 15.0) * in->width / in->rtol) -
+            rough_log2(in->lest) + 2 * LOG2_ERR;   /* an upper bound */
   return 1;
 }
 
