@@ -709,8 +709,8 @@ static void pair_factor(double r1, double i1, double r2, double i2,
 ** quartic's own scale x = 2^E y (the roots are each polished on p, but a
 ** pair's coefficients then carry each root's error, eps / separation for
 ** a near-double root), kept only if the residual falls.  Skipped where a
-** scaled coefficient of p or q underflows (to a subnormal or to 0): one
-** scale cannot hold every group then, and the residual would be blind. */
+** scaled coefficient of p or q is below 2^-200 (or underflows): one scale
+** cannot hold every group then, and the residual would be blind. */
 static void factor_polish(const poly *P, double *q) {
   double m[4], c[5], v[4], w[4];
   int k, E = group_scale(P, 0, 4);
@@ -718,9 +718,12 @@ static void factor_polish(const poly *P, double *q) {
   c[4] = 1;
   v[0] = ldexp(q[0], -E); v[1] = ldexp(q[1], -2 * E);
   v[2] = ldexp(q[2], -E); v[3] = ldexp(q[3], -2 * E);
-  for (k = 0; k < 4; k++) {
-    if (!isfinite(v[k]) || (q[k] != 0 && fabs(v[k]) < DBL_MIN)) return;
-    if (P->f[3 - k] != 0 && fabs(m[k]) < DBL_MIN) return;
+  for (k = 0; k < 4; k++) {       /* (2^-200: products of two, and c_k z^k
+                                   ** at the roots, stay normal; below, the
+                                   ** residuals go blind: x (1.2e-308 x^3 +
+                                   ** 1.4e-149 x^2 + 1) got a root 6e-11) */
+    if (!isfinite(v[k]) || (q[k] != 0 && fabs(v[k]) < 0x1p-200)) return;
+    if (P->f[3 - k] != 0 && fabs(m[k]) < 0x1p-200) return;
     w[k] = v[k];
   }
   /* Newton lowers the coefficients' residual; keep it if the factors'

@@ -76,6 +76,9 @@ CASES = [
     ("bairstow-beside-zero", [-80.0, -5446574.9843752114, -5446645.9843752114,
                               105.0, 3.9525251667299724e-323],
      "Bairstow failed beside an underflowed root: factor roots 1.3e10 eps"),
+    ("polish-blind-underflow", [1.1873202966621318e-308, 1.4055112613812138e-149,
+                                0.0, 1.0, 0.0],
+     "the spread factors' Newton in one scale underflowed: a factor root 6e-11"),
 ]
 
 
