@@ -16,8 +16,8 @@
 ** (1 + 1)^4 = 16 when the factors' roots are no larger than r (the Newton
 ** polygon keeps larger roots in their own groups), so 8 * 16 = 128 eps,
 ** times 4 for Horner's and the quadratic's own roundings.  Measured: the
-** largest ratio over the 5.6e7 executions of the session that fixed the
-** spread and near-multiple cases was 1.6 eps (fuzz_roots -DFUZZ_STATS
+** largest ratio over the 1.4e8 executions of the change that fixed the
+** spread and near-multiple cases was 3.2 eps (fuzz_roots -DFUZZ_STATS
 ** prints each new maximum), so K catches any real loss (those cases gave
 ** 1e3 to 1e15 eps).
 ** The size is normwise, max |a_k| sum |r|^k: componentwise (|a_k| |r|^k)
