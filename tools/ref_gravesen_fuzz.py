@@ -14,7 +14,7 @@ Run: nice /usr/bin/python3 tools/ref_gravesen_fuzz.py   (seconds)
 import os
 import sys
 
-from mpmath import mp, mpf
+from mpmath import mp
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import ref_lengths as R  # noqa: E402
@@ -39,26 +39,11 @@ CASES = [
 ]
 
 
-def length(c, dim, t0, t1):
-    cv = R.Curve(c, dim)
-    if cv.zero:
-        return mpf(0)
-    level = R.LEVELS[0]
-    with mp.workdps(level[1] + 10):
-        P, C = R.Primary(cv, level), R.Check(cv, level)
-        a, b = mpf(t0), mpf(t1)
-        lp = P.s_at(b) - P.s_at(a)
-        lc = C.s_at(b) - C.s_at(a)
-        if abs(lp - lc) > mpf("1e-30") * abs(lp):
-            raise SystemExit("not verified: %s vs %s" % (lp, lc))
-        return lp
-
-
 def main():
     out = ["\t".join(["id", "dim", "rtol", "t0", "t1", "c", "L"])]
     for i, (rtol, t0, t1, c) in enumerate(CASES):
         dim = len(c) // 4
-        L = length([float(x) for x in c], dim, t0, t1)
+        L = R.range_length([float(x) for x in c], dim, t0, t1)
         out.append("\t".join(["fuzz-%d" % (i + 1), str(dim), repr(rtol),
                               repr(float(t0)), repr(float(t1)),
                               " ".join(repr(float(x)) for x in c),
