@@ -195,19 +195,18 @@ static void snap_ends(double *c, int n, double x1, double y1, double x2,
   c[7 * (n - 1) + 4] = x2; c[7 * (n - 1) + 5] = y2;
 }
 
-/* arclen.ellipse_arc(cx, cy, rx, ry, rotation, angle1, angle2 [, opts]):
-** radians; parametric angles (x = rx cos t, y = ry sin t, then rotated). */
-static int l_ellipse_arc(lua_State *L) {
-  double v[7], c[28];
+/* The arguments 1..7 (cx, cy, rx, ry, rotation, angle1, angle2) of an
+** elliptic arc, checked, as at most four conics in c[28]; returns how many.
+** Errors name the argument. */
+static int ellipse_args(lua_State *L, double c[28]) {
   static const char *const names[7] = {
     "cx", "cy", "rx", "ry", "rotation", "angle1", "angle2"
   };
-  conic_opts co;
+  double v[7];
   int k, n;
   for (k = 0; k < 7; k++) v[k] = arclenL_checkfinite(L, k + 1, names[k]);
   if (!(v[2] > 0)) luaL_argerror(L, 3, "rx must be > 0");
   if (!(v[3] > 0)) luaL_argerror(L, 4, "ry must be > 0");
-  check_conic_opts(L, 8, &co);
   n = arclen_ellipse_conics(v[0], v[1], v[2], v[3], v[4], v[5], v[6] - v[5],
                             c);
   if (n == ARCLEN_ERANGE)
@@ -216,6 +215,16 @@ static int l_ellipse_arc(lua_State *L) {
     luaL_argerror(L, 3, "the arc's control points lie beyond the largest "
                         "double");
   if (n < 0) return arclenL_argcode(L, 7, n);
+  return n;
+}
+
+/* arclen.ellipse_arc(cx, cy, rx, ry, rotation, angle1, angle2 [, opts]):
+** radians; parametric angles (x = rx cos t, y = ry sin t, then rotated). */
+static int l_ellipse_arc(lua_State *L) {
+  double c[28];
+  conic_opts co;
+  int n = ellipse_args(L, c);
+  check_conic_opts(L, 8, &co);
   return finish(L, 8, c, n, &co);
 }
 
@@ -332,22 +341,8 @@ static int l_conic_length(lua_State *L) {
 /* arclen.ellipse_conics(cx, cy, rx, ry, rotation, angle1, angle2) -> list
 ** of conics {x0, y0, x1, y1, x2, y2, w} (pieces of at most 90 degrees). */
 static int l_ellipse_conics(lua_State *L) {
-  double v[7], c[28];
-  static const char *const names[7] = {
-    "cx", "cy", "rx", "ry", "rotation", "angle1", "angle2"
-  };
-  int k, j, n;
-  for (k = 0; k < 7; k++) v[k] = arclenL_checkfinite(L, k + 1, names[k]);
-  if (!(v[2] > 0)) luaL_argerror(L, 3, "rx must be > 0");
-  if (!(v[3] > 0)) luaL_argerror(L, 4, "ry must be > 0");
-  n = arclen_ellipse_conics(v[0], v[1], v[2], v[3], v[4], v[5], v[6] - v[5],
-                            c);
-  if (n == ARCLEN_ERANGE)
-    luaL_argerror(L, 7, "the arc must not turn more than 2*pi");
-  if (n == ARCLEN_EOVERFLOW)
-    luaL_argerror(L, 3, "the arc's control points lie beyond the largest "
-                        "double");
-  if (n < 0) return arclenL_argcode(L, 7, n);
+  double c[28];
+  int k, j, n = ellipse_args(L, c);
   lua_createtable(L, n, 0);
   for (k = 0; k < n; k++) {
     lua_createtable(L, 7, 0);
