@@ -193,6 +193,12 @@ static dd dd_of(double x) {
   return r;
 }
 
+/* x - y with y's parts taken one at a time: the difference of two exact
+** values stays exact as long as it fits in hi + lo. */
+static dd dd_sub(dd x, dd y) {
+  return dd_add(dd_add(x, dd_of(-y.hi)), dd_of(-y.lo));
+}
+
 /* The hodograph of [t0, t1] in the local variable s in [-1, 1],
 ** t = tc + hw s with hw = (t1 - t0)/2 and tc = t0 + hw held exactly:
 ** H(s) = z'(tc) + hw z''(tc) s + hw^2 A2 s^2, so that the length of the
@@ -213,13 +219,9 @@ void arclen_hodo_local(const double *c, int dim, double t0, double t1,
     dd d0 = two_sum(c[dim + k], -c[k]);
     dd d1 = two_sum(c[2 * dim + k], -c[dim + k]);
     dd d2 = two_sum(c[3 * dim + k], -c[2 * dim + k]);
-    dd e1 = dd_add(d1, dd_of(-d0.hi)), e2;
-    dd a0, a1, a2, v, dv;
-    e1 = dd_add(e1, dd_of(-d0.lo));                       /* d1 - d0 */
-    e2 = dd_add(dd_add(d2, dd_of(-d1.hi)), dd_of(-d1.lo)); /* d2 - d1 */
-    a0 = dd_mul(three, d0);
-    a1 = dd_mul(six, e1);
-    a2 = dd_mul(three, dd_add(dd_add(e2, dd_of(-e1.hi)), dd_of(-e1.lo)));
+    dd e1 = dd_sub(d1, d0), e2 = dd_sub(d2, d1);
+    dd a0 = dd_mul(three, d0), a1 = dd_mul(six, e1);
+    dd a2 = dd_mul(three, dd_sub(e2, e1)), v, dv;
     v = dd_add(a0, dd_mul(tc, dd_add(a1, dd_mul(tc, a2))));   /* z'(tc) */
     dv = dd_add(a1, dd_mul(two, dd_mul(tc, a2)));            /* z''(tc) */
     h->a0[k] = v.hi + v.lo;

@@ -197,8 +197,9 @@ typedef struct integrator {
 ** cut) have independent bounds, whose chains of square roots and divisions
 ** then run side by side, and beside the chords in start(). */
 static void push(integrator *in, double a, double b, int depth) {
-  span *s = &in->stack[in->top];
+  span *s;
   if (in->top >= MAXSTACK) return;
+  s = &in->stack[in->top];
   s->a = a;
   s->b = b;
   s->depth = depth;
@@ -293,8 +294,7 @@ static double cut_point(const integrator *in, double a, double b) {
 }
 
 /* Pop the next piece (in increasing t) and integrate it.  A piece is cut
-** (at a foot inside it, else in the middle) when no order up to NMAX meets
-** its share of the tolerance.  Returns 0 when no piece is
+** (cut_point) when no order up to NMAX meets its share of the tolerance.  Returns 0 when no piece is
 ** left; else the accepted piece [*from, *to] and its length. */
 static int next_piece(integrator *in, double *from, double *to, double *len,
                       const arclen_gauss_rule **rule) {
