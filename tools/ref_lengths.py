@@ -264,13 +264,19 @@ def mesh(cv, extra, rho_min):
             merged.append(p)
         elif p == 1:
             merged[-1] = p
-    out = [merged[0]]
-    stack = [(merged[i], merged[i + 1]) for i in range(len(merged) - 1)]
+    return refine(merged, cv, rho_min, lambda l, r: r - l <= mpf("1e-36"))
+
+
+def refine(pts, cv, rho_min, too_small):
+    """The breakpoints pts (ascending), each piece bisected until every
+    branch point lies outside its rho_min ellipse or too_small(l, r)."""
+    out = [pts[0]]
+    stack = [(pts[i], pts[i + 1]) for i in range(len(pts) - 1)]
     stack.reverse()
     pieces = 0
     while stack:
         l, r = stack.pop()
-        bad = (r - l > mpf("1e-36") and
+        bad = (not too_small(l, r) and
                any(rho(s, l, r) < rho_min for s in cv.branch))
         if bad:
             m = (l + r) / 2

@@ -77,22 +77,8 @@ def sub_mesh(cv, t0, t1, rho_min):
     every branch point is outside the rho_min ellipse of its piece."""
     pts = sorted(set([t0, t1] + [mpf(r.real) for r in cv.roots
                                  if t0 < r.real < t1]))
-    out, stack, pieces = [pts[0]], [], 0
-    for i in range(len(pts) - 1, 0, -1):
-        stack.append((pts[i - 1], pts[i]))
-    while stack:
-        lo, hi = stack.pop()
-        if hi - lo > (hi + lo) * mpf("1e-44") and any(
-                R.rho(s, lo, hi) < rho_min for s in cv.branch):
-            mid = (lo + hi) / 2
-            stack.append((mid, hi))
-            stack.append((lo, mid))
-        else:
-            out.append(hi)
-            pieces += 1
-            if pieces > R.MAX_PIECES:
-                raise SystemExit("mesh: more than %d pieces" % R.MAX_PIECES)
-    return out
+    return R.refine(pts, cv, rho_min,
+                    lambda lo, hi: hi - lo <= (hi + lo) * mpf("1e-44"))
 
 
 def length(cv, t0, t1):
