@@ -36,6 +36,23 @@ local function dist(g, r)
   return math.sqrt(d2)
 end
 
+-- Match every true root to its nearest unused computed root and assert
+-- each error within its bound; extra(computed_root), if given, checks more.
+local function match_roots(label, got, truth, bounds, extra)
+  local used = {}
+  for i, r in ipairs(truth) do
+    local best, bi = math.huge, nil
+    for j, g in ipairs(got) do
+      if not used[j] and dist(g, r) < best then best, bi = dist(g, r), j end
+    end
+    assert.is_truthy(bi, ("%s root %d: no computed root matches"):format(label, i))
+    used[bi] = true
+    assert.is_true(best <= bounds[i], ("%s root %d (%.17g%+.17gi): error %.3g > bound %.3g"):format(
+      label, i, r[1], r[2], best, bounds[i]))
+    if extra then extra(got[bi]) end
+  end
+end
+
 describe("roots", function()
   for _, row in ipairs(H.tsv("roots.tsv")) do
     it(row.id .. " (degree " .. row.deg .. "): every root within the attainable accuracy", function()
@@ -48,18 +65,7 @@ describe("roots", function()
                    or arclen.quadratic)(table.unpack(a))
       local truth, bounds = parse_roots(row.roots), parse_list(row.bounds)
       assert.are.equal(deg, #got)
-      -- match every true root to its nearest unused computed root
-      local used = {}
-      for i, r in ipairs(truth) do
-        local best, bi = math.huge, nil
-        for j, g in ipairs(got) do
-          if not used[j] and dist(g, r) < best then best, bi = dist(g, r), j end
-        end
-        assert.is_truthy(bi, ("%s root %d: no computed root matches"):format(row.id, i))
-        used[bi] = true
-        assert.is_true(best <= bounds[i], ("%s root %d (%g, %g): error %.3g > bound %.3g"):format(
-          row.id, i, r[1], r[2], best, bounds[i]))
-      end
+      match_roots(row.id, got, truth, bounds)
     end)
   end
 
@@ -150,20 +156,11 @@ describe("roots: fuzz reproducers (roots_fuzz.tsv)", function()
     return math.sqrt(pr * pr + pi * pi), 512 * EPS * m * s + tiny
   end
   local function check_roots(id, what, a, got, truth, bounds)
-    local used = {}
-    for i, r in ipairs(truth) do
-      local best, bi = math.huge, nil
-      for j, g in ipairs(got) do
-        if not used[j] and dist(g, r) < best then best, bi = dist(g, r), j end
-      end
-      assert.is_truthy(bi, ("%s %s root %d: no computed root"):format(id, what, i))
-      used[bi] = true
-      assert.is_true(best <= bounds[i], ("%s %s root %d (%.17g%+.17gi): error %.3g > bound %.3g"):format(
-        id, what, i, r[1], r[2], best, bounds[i]))
-      local res, lim = backward(a, got[bi])
+    match_roots(id .. " " .. what, got, truth, bounds, function(g)
+      local res, lim = backward(a, g)
       assert.is_true(res <= lim, ("%s %s root %.17g%+.17gi: residual %.3g > %.3g"):format(
-        id, what, got[bi][1], got[bi][2], res, lim))
-    end
+        id, what, g[1], g[2], res, lim))
+    end)
   end
   for _, row in ipairs(H.tsv("roots_fuzz.tsv")) do
     local c = {tonumber(row.a4), tonumber(row.a3), tonumber(row.a2), tonumber(row.a1), tonumber(row.a0)}
