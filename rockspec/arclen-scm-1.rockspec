@@ -25,6 +25,7 @@ build = {
         "src/elliptic.c",
         "src/elliptic3d.c",
         "src/elliptic_far.c",
+        "src/gauss_bound.c",
         "src/gauss_tables.c",
         "src/gravesen.c",
         "src/legendre.c",

@@ -22,6 +22,7 @@
 
 #include "arclen.h"
 #include "cubic.h"
+#include "gauss_bound.h"
 #include "gauss_tables.h"
 
 /* The range is cut at the foot of a branch point within FOOTCUT of its
@@ -63,25 +64,8 @@ static double apply_rule(const arclen_hodo *h, const arclen_gauss_rule *r,
   return hh * s;
 }
 
-/* log2(x) within LOG2_ERR, for choosing orders (the callers add the
-** margin): log2(m 2^e) = e + log2(1 + t), t = m - 1 in [0, 1), and
-** t + t (1 - t)(0.418 - 0.148 t) is within 0.00124 of log2(1 + t) on
-** [0, 1] (checked with mpmath on 10^5 points).  No division and no call:
-** the exponent and mantissa are read off the bits (IEEE 754 binary64);
-** zero, subnormals, inf and NaN go to log2(). */
-#define LOG2_ERR 0.0015
-static double rough_log2(double x) {
-  uint64_t u;
-  double t;
-  int e;
-  memcpy(&u, &x, sizeof u);
-  e = (int)((u >> 52) & 0x7ff);
-  if (e == 0 || e == 0x7ff || (u >> 63)) return log2(x);
-  u = (u & 0xfffffffffffffULL) | 0x3ff0000000000000ULL;
-  memcpy(&t, &u, sizeof t);
-  t -= 1;
-  return (e - 1023) + t + t * (1 - t) * (0.418 - 0.148 * t);
-}
+#define rough_log2 arclen_rough_log2
+#define LOG2_ERR ARCLEN_LOG2_ERR
 
 /* The bound for one piece [c - hh, c + hh], in units of hh (u = (t - c)/hh).
 ** For a branch point z = u + iv the Bernstein ellipse through it has
@@ -167,10 +151,12 @@ static const arclen_gauss_rule *choose_rule(const piece_bound *pb,
   return rule_at_least(n < 2 ? 2 : (int)ceil(n));
 }
 
-/* A pending piece and its bound. */
+/* A pending piece and its bound: from the branch cuts (gauss_bound.c), or
+** the ellipse bound when the curve has a root too far for that. */
 typedef struct span {
   double a, b;
   int depth;
+  arclen_cut_piece cut;
   piece_bound pb;
 } span;
 
@@ -178,16 +164,17 @@ typedef struct span {
 typedef struct integrator {
   arclen_hodo h;
   arclen_branch br;
+  arclen_cut_curve cc;
   double rtol, lest, width;   /* tolerance, lower bound of L, t1 - t0 */
   double unit;                /* dt/ds: the result's factor (sub-ranges) */
   double logk;                /* log2((32/15) width / (rtol lest)) */
+  double lgoal;               /* log2(2 rtol lest / (width lead 128/15pi)) */
   double mins[2];             /* feet of near branch points in (t0, t1) */
   int nmin;
   int top;
   long evals, pieces, splits;
   int depth;
   double err;                 /* sum of accepted pieces' bounds */
-  piece_bound last;           /* the bound of the piece last accepted */
   int want_err;               /* info requested: sum the bounds */
   span stack[MAXSTACK];       /* last: start() leaves it uninitialised */
 } integrator;
@@ -203,7 +190,10 @@ static void push(integrator *in, double a, double b, int depth) {
   s->a = a;
   s->b = b;
   s->depth = depth;
-  bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &s->pb);
+  if (in->cc.ok)
+    arclen_cut_bound(&in->cc, a + (b - a) / 2, (b - a) / 2, &s->cut);
+  else
+    bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &s->pb);
   in->top++;
 }
 
@@ -219,8 +209,11 @@ static int start(integrator *in, const double *c, int dim, double t0,
                  double t1, double rtol) {
   int i, j;
   double prev;
-  /* every field but the stack, which push() fills before pop reads it */
-  memset(in, 0, offsetof(integrator, stack));
+  /* h, br and cc are filled below; the stack is filled by push() before
+  ** pop reads it */
+  in->lest = in->logk = in->lgoal = in->err = 0;
+  in->nmin = in->top = in->depth = in->want_err = 0;
+  in->evals = in->pieces = in->splits = 0;
   in->unit = 1;
   if (t0 == 0 && t1 == 1) {
     arclen_hodo_scaled(c, dim, &in->h);
@@ -232,6 +225,7 @@ static int start(integrator *in, const double *c, int dim, double t0,
   }
   if (in->h.zero) return 0;
   arclen_branch_points(&in->h, &in->br);
+  arclen_cut_prepare(&in->br, &in->cc);
   in->rtol = rtol;
   in->width = t1 - t0;
   for (i = 0; i < in->br.n; i += 2) {
@@ -259,8 +253,12 @@ static int start(integrator *in, const double *c, int dim, double t0,
     in->lest = 0.5 * apply_rule(&in->h, rule_at_least(8), t0 + in->width / 2,
                                 in->width / 2);
   if (!(in->lest > 0)) return 0;
-  in->logk = rough_log2((32.0 / 15.0) * in->width / in->rtol) -
-            rough_log2(in->lest) + 2 * LOG2_ERR;   /* an upper bound */
+  if (!in->cc.ok)                     /* the ellipse bound's target */
+    in->logk = rough_log2((32.0 / 15.0) * in->width / in->rtol) -
+              rough_log2(in->lest) + 2 * LOG2_ERR;   /* an upper bound */
+  in->lgoal = rough_log2(2 * in->rtol * in->lest / in->width) -
+              rough_log2(in->br.lead * (128 / (15 * 3.14159265358979323846))) -
+              2 * LOG2_ERR;                       /* a lower bound */
   return 1;
 }
 
@@ -301,9 +299,16 @@ static int next_piece(integrator *in, double *from, double *to, double *len,
   while (in->top > 0) {
     const span *s = &in->stack[--in->top];
     double a = s->a, b = s->b, c = a + (b - a) / 2, hh = (b - a) / 2;
-    double err = 0;
-    const arclen_gauss_rule *r = choose_rule(&s->pb, in->logk);
+    double err = 0, ratio = 0;
+    const arclen_gauss_rule *r = NULL;
     int depth = s->depth;
+    if (in->cc.ok) {
+      int n = arclen_cut_order(&in->cc, &s->cut, in->lgoal, NMAX,
+                               in->want_err ? &ratio : NULL);
+      if (n) r = rule_at_least(n);
+    } else {
+      r = choose_rule(&s->pb, in->logk);
+    }
     if (r == NULL && depth < MAXDEPTH && in->splits < MAXSPLITS) {
       double cut = cut_point(in, a, b);
       if (cut > a && cut < b) {        /* s is overwritten from here on */
@@ -314,11 +319,14 @@ static int next_piece(integrator *in, double *from, double *to, double *len,
       }
     }
     if (r == NULL) {          /* bisection floor: a piece of ~1e-18 width */
+      piece_bound eb;
+      bound_piece(&in->br, c, hh, &eb);
       r = rule_at_least(NMAX);
-      err = 2 * (2 * hh) * s->pb.m;  /* crude: the rule and the integral */
+      err = 2 * (2 * hh) * eb.m;     /* crude: the rule and the integral */
     } else if (in->want_err) {       /* are each at most width x M */
       err = in->rtol * in->lest * (2 * hh / in->width) *
-            exp2(s->pb.logc + in->logk - r->n * s->pb.log_rho2);
+            (in->cc.ok ? ratio
+                       : exp2(s->pb.logc + in->logk - r->n * s->pb.log_rho2));
     }
     *len = apply_rule(&in->h, r, c, hh);
     in->evals += r->n;
@@ -328,7 +336,6 @@ static int next_piece(integrator *in, double *from, double *to, double *len,
     *from = a;
     *to = b;
     if (rule) *rule = r;
-    in->last = s->pb;
     return 1;
   }
   return 0;
@@ -349,7 +356,13 @@ static int check_args(const double *c, int dim, const arclen_opts *o) {
 ** neither product over- or underflows on the way. */
 static double in_curve_units(const integrator *in, double x) {
   int k;
-  double m = frexp(in->unit, &k);
+  double m;
+  if (in->unit == 1 && in->h.exp >= -1022 && in->h.exp <= 1023) {
+    uint64_t u = (uint64_t)(in->h.exp + 1023) << 52;   /* 2^exp, exact */
+    memcpy(&m, &u, sizeof m);
+    return x * m;          /* rounds as ldexp does, also into subnormals */
+  }
+  m = frexp(in->unit, &k);
   return ldexp(x * m, in->h.exp + k);
 }
 
@@ -363,6 +376,14 @@ static void fill_info(arclen_info *info, const integrator *in, int exp) {
   info->calls = 0;
 }
 
+/* The part of rtol the rules' errors may take; the rest is for rounding,
+** which stays below 64 eps relative (the specs hold the result to that
+** beyond info.err), or half of rtol when that is less. */
+#define ROUNDING_RESERVE (64 * 2.220446049250313e-16)
+static double truncation_budget(double rtol) {
+  return rtol - (rtol / 2 < ROUNDING_RESERVE ? rtol / 2 : ROUNDING_RESERVE);
+}
+
 int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
                         double *len, arclen_info *info) {
   integrator in;
@@ -373,7 +394,7 @@ int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
   if (e) return e;
   if (a == b) { *len = 0; return ARCLEN_OK; }
   if (a > b) { double t = a; a = b; b = t; }
-  if (start(&in, c, dim, a, b, o->rtol * 0.5)) {  /* half for rounding */
+  if (start(&in, c, dim, a, b, truncation_budget(o->rtol))) {
     in.want_err = info != NULL;
     while (next_piece(&in, &pa, &pb, &piece, NULL)) sum += piece;
   }
@@ -429,7 +450,9 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
                              double goal, double tol,
                              const arclen_gauss_rule *r) {
   double lo = a, hi = b, t = hermite_guess(&in->h, a, b, plen, goal);
+  piece_bound eb;             /* the piece's ellipse: M and e for Cauchy */
   int it;
+  bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &eb);
   in->evals += 2;
   for (it = 0; it < 100; it++) {
     double g = apply_rule(&in->h, r, a + (t - a) / 2, (t - a) / 2) - goal;
@@ -440,7 +463,7 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
     next = f > 0 ? t - g / f : lo + (hi - lo) / 2;
     if (!(next > lo && next < hi)) {
       next = lo + (hi - lo) / 2;
-    } else if (newton_certified(&in->last, (b - a) / 2, next - t, tol)) {
+    } else if (newton_certified(&eb, (b - a) / 2, next - t, tol)) {
       return next;
     }
     if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) break;

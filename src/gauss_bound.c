@@ -1,0 +1,226 @@
+/*
+** gauss_bound.c -- how many Gauss-Legendre points a piece needs, from the
+** branch points of the speed.
+**
+** On a piece t = c + hh u, u in [-1, 1], write F(w) = f(c + hh J(w)) with
+** J(w) = (w + 1/w)/2.  The Chebyshev coefficients of f are
+**     a_k = (1 / pi i) \oint_{|w|=1} F(w) w^(-k-1) dw,
+** and the contour may be pushed out to infinity except around the cuts
+** from each branch point's image w_j (|w_j| = rho_j > 1) radially out:
+** F grows like w^2, and across a cut F changes sign, so
+**     |a_k| <= (4/pi) sum_pairs \int_{rho_j}^inf |F(r e^{i arg w_j})| r^(-k-1) dr
+** (a pair and its conjugate give equal terms).  The n-point rule is exact
+** to degree 2n - 1 and |E_n(T_k)| <= 2 + 2/(k^2 - 1) <= 32/15, so its error
+** is at most (32/15) sum_{k >= 2n} |a_k| (times hh for the t integral).
+**
+** Along the cut, with r = s rho_j and x = s - 1, |J(s w_j) - J(w_j)| <=
+** x a_j (a_j = (rho_j + 1/rho_j)/2, the ellipse's semi-axis), and every
+** other root R_m lies at most D_m + x hh a_j from the point; the speed is
+** lead prod |t - R_m|^(1/2), so with Z = sqrt(hh a_j), q_m = sqrt(D_m):
+**     |F| <= lead Z x^(1/2) prod_m (q_m + Z x^(1/2)).
+** Summing the tail, sum_{k >= 2n} r^(-k-1) dr <= rho_j^(-2n) C_j s^(-2n-1) ds
+** with C_j = rho_j/(rho_j - 1), and each power of x integrates to a Beta
+** function (tabulated, gauss_tables.c):
+**     E <= hh (128 / 15 pi) lead sum_j rho_j^(-2n) C_j
+**                 sum_i sym_j[i] Z_j^(i+1) B((i+1)/2 + 1, 2n - (i+1)/2).
+** Unlike the Bernstein-ellipse bound (|f| <= M on the whole ellipse) this
+** sees that f vanishes like a square root at the branch point: it is within
+** a factor of about 2 of the true error on the bench's curves, where the
+** ellipse bound is some 3000 times too large.
+*/
+#include <math.h>
+#include <stdint.h>
+#include <string.h>
+
+#include "gauss_bound.h"
+#include "gauss_tables.h"
+
+#define rough_log2 arclen_rough_log2
+#define LOG2_ERR ARCLEN_LOG2_ERR
+
+/* Roots beyond this (scaled units; the hodograph's largest coefficient is
+** in [0.5, 1)) would overflow the products below: such curves take the
+** ellipse bound. */
+#define FAR_ROOT 0x1p100
+#define BOUND_MARGIN (1 + 0x1p-40)  /* rounding in the sums below */
+#define LOW_REF 8                 /* the second reference order */
+
+/* 2^x, never below: 2^k times the degree-4 Taylor polynomial of 2^f (f in
+** [0, 1); its remainder is positive and below 0.08%, hence the 1.001). */
+static double exp2_above(double x) {
+  uint64_t u;
+  double k, f, p, s;
+  if (!(x > -1000)) return x == x ? 0x1p-1000 : HUGE_VAL;
+  if (x > 1000) return HUGE_VAL;
+  k = (double)(int64_t)x;
+  if (k > x) k -= 1;
+  f = x - k;
+  p = 1 + f * (0.6931471805599453 + f * (0.2402265069591007 +
+          f * (0.0555041086648216 + f * 0.0096181291076285)));
+  u = (uint64_t)((int64_t)k + 1023) << 52;
+  memcpy(&s, &u, sizeof s);
+  return 1.001 * p * s;
+}
+
+void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc) {
+  double qx[2] = {0, 0};
+  int k, j, i;
+  cc->br = br;
+  cc->ok = 1;
+  cc->has_real = 0;
+  cc->npair = 0;
+  for (k = 0; k < br->n; k++)
+    if (!(fabs(br->re[k]) <= FAR_ROOT && br->im[k] <= FAR_ROOT)) cc->ok = 0;
+  if (!cc->ok) return;
+  if (br->n == 4) {          /* between the pairs: |R1 - R2|, |R1 - conj R2| */
+    double dx = br->re[2] - br->re[0];
+    double dm = br->im[2] - br->im[0], dp = br->im[2] + br->im[0];
+    qx[0] = sqrt(sqrt(dx * dx + dm * dm));
+    qx[1] = sqrt(sqrt(dx * dx + dp * dp));
+  }
+  for (k = 0; k < br->n; k += 2) {
+    double q0, *sym;
+    if (br->im[k] == 0) {                /* a real root: no branch point */
+      cc->has_real = 1;
+      continue;
+    }
+    j = cc->npair++;
+    cc->re[j] = br->re[k];
+    cc->im[j] = br->im[k];
+    sym = cc->sym[j];
+    q0 = sqrt(2 * br->im[k]);            /* to the conjugate */
+    /* Z prod_m (q_m + Z) = sum_i e_{nq - i}(q) Z^(i+1) */
+    if (br->n == 2) {
+      sym[0] = q0;
+      sym[1] = 1;
+      sym[2] = sym[3] = 0;
+    } else {
+      sym[0] = q0 * qx[0] * qx[1];
+      sym[1] = q0 * (qx[0] + qx[1]) + qx[0] * qx[1];
+      sym[2] = q0 + qx[0] + qx[1];
+      sym[3] = 1;
+    }
+    for (i = 0; i < 4; i++)
+      cc->symref[j][i] = sym[i] * arclen_gauss_beta[i][ARCLEN_CUT_REF];
+  }
+}
+
+/* C Z (s[0] b[0] + Z (s[1] b[1] + Z (s[2] b[2] + Z s[3] b[3]))) with b the
+** Beta integrals at order n, or 1 when b is NULL (s already holds them). */
+static double term_sum(const double s[4], int n, double c, double z) {
+  double b0 = 1, b1 = 1, b2 = 1, b3 = 1;
+  if (n) {
+    b0 = arclen_gauss_beta[0][n];
+    b1 = arclen_gauss_beta[1][n];
+    b2 = arclen_gauss_beta[2][n];
+    b3 = arclen_gauss_beta[3][n];
+  }
+  return c * z * (s[0] * b0 + z * (s[1] * b1 + z * (s[2] * b2 + z * s[3] * b3)));
+}
+
+void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
+                      arclen_cut_piece *pb) {
+  double inv = 1 / hh;
+  int j, k;
+  pb->nt = cc->npair;
+  pb->inside = 0;
+  if (cc->has_real) {
+    const arclen_branch *br = cc->br;
+    for (k = 0; k < br->n; k += 2)
+      if (br->im[k] == 0 && fabs(br->re[k] - c) < hh * (1 - 1e-12))
+        pb->inside = 1;                  /* a kink: the rule cannot see it */
+  }
+  for (j = 0; j < cc->npair; j++) {
+    /* The Bernstein ellipse through the branch point z = u + iv (piece
+    ** units) has foci +-1, so its semi-major axis is a = (|z - 1| + |z + 1|)/2
+    ** (two square roots side by side), b = sqrt(a^2 - 1) and rho = a + b.
+    ** Next to the interval a - 1 cancels: it is rounded down by the sum's
+    ** rounding (r1, r2 are each within 2 ulps), so rho is never above the
+    ** true one; rho^2 - 1 = 2 b rho and rho/(rho - 1) = (rho + 1)/(2 b). */
+    double u = (cc->re[j] - c) * inv, v = cc->im[j] * inv;
+    double r1 = sqrt((u - 1) * (u - 1) + v * v);
+    double r2 = sqrt((u + 1) * (u + 1) + v * v), s12 = r1 + r2;
+    double am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50;
+    double b, rho, g, lser, lrough, z;
+    if (!(am1 > 0)) am1 = 0;             /* on the interval, or NaN */
+    b = sqrt(am1 * (am1 + 2));
+    rho = 1 + am1 + b;
+    g = 2 * b * rho;
+    z = sqrt(hh * s12 * (0.5 + 0x1p-50));   /* a rounded up */
+    /* ln(1 + g) >= g - g^2/2: the sharper of that and the rough log */
+    lser = g * (1 - g / 2) * (1.4426950408889634 * (1 - 0x1p-50));
+    lrough = rough_log2(1 + g) - LOG2_ERR;
+    pb->lam[j] = lser > lrough ? lser : lrough;
+    pb->cc[j] = (rho + 1) / (2 * b);     /* inf when b = 0: lam = 0 too */
+    pb->z[j] = z;
+    pb->lref[j] = rough_log2(term_sum(cc->symref[j], 0, pb->cc[j], z)) +
+                  LOG2_ERR;
+  }
+}
+
+/* The bound at order n over 2^lgoal. */
+static double ratio_at(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
+                       double lgoal, int n) {
+  double r = 0;
+  int j;
+  for (j = 0; j < pb->nt; j++)
+    r += exp2_above(-n * pb->lam[j] - lgoal) *
+         term_sum(cc->sym[j], n, pb->cc[j], pb->z[j]);
+  return r * BOUND_MARGIN;
+}
+
+/* ceil(x) for the order estimates, in [2, 1000] (NaN: 1000); ceil() is a
+** call on baseline x86-64. */
+static int order_ceil(double x) {
+  int n;
+  if (!(x < 1000)) return 1000;
+  if (x < 2) return 2;
+  n = (int)x;
+  return n < x ? n + 1 : n;
+}
+
+/* The least order n >= m at which the terms, bounded by 2^(l_j - n lam_j)
+** (l_j: log2 of term j's Beta sum at order m, an upper bound for every
+** n >= m since the Beta integrals fall with n), sum to at most 2^lgoal; or
+** a smaller n when that is below m (not yet a bound).  Each term gets
+** 63/64 of the goal; a second term must then lie below 1/64 of it, else
+** each gets half. */
+#define SHARE_LOG2 0.0227         /* log2(64/63), rounded up */
+static int order_at(const arclen_cut_piece *pb, const double *l,
+                    double lgoal) {
+  double n0 = (l[0] - lgoal + SHARE_LOG2) / pb->lam[0], n1;
+  int n;
+  if (pb->nt == 1) return order_ceil(n0);
+  n1 = (l[1] - lgoal + SHARE_LOG2) / pb->lam[1];
+  n = order_ceil(n0 > n1 ? n0 : n1);
+  if (l[0] - n * pb->lam[0] <= lgoal - 6 || l[1] - n * pb->lam[1] <= lgoal - 6)
+    return n;
+  n0 = (l[0] - lgoal + 1) / pb->lam[0];
+  n1 = (l[1] - lgoal + 1) / pb->lam[1];
+  return order_ceil(n0 > n1 ? n0 : n1);
+}
+
+int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
+                     double lgoal, int nmax, double *ratio) {
+  int j, n;
+  if (pb->inside) return 0;
+  if (pb->nt == 0) {                     /* a polynomial: exact from n = 2 */
+    if (ratio) *ratio = 0;
+    return 2;
+  }
+  for (j = 0; j < pb->nt; j++)
+    if (!(pb->lam[j] > 0)) return 0;     /* rho ~ 1: no order will do */
+  n = order_at(pb, pb->lref, lgoal);
+  if (n < ARCLEN_CUT_REF) {  /* below the reference: again from LOW_REF */
+    double low[2];
+    for (j = 0; j < pb->nt; j++)
+      low[j] = rough_log2(term_sum(cc->sym[j], LOW_REF, pb->cc[j], pb->z[j])) +
+               LOG2_ERR;
+    n = order_at(pb, low, lgoal);
+    for (; n < LOW_REF && ratio_at(cc, pb, lgoal, n) > 1; n++)
+      continue;                          /* below both: the sum itself */
+  }
+  if (n > nmax) return 0;
+  if (ratio) *ratio = ratio_at(cc, pb, lgoal, n);
+  return n;
+}

@@ -1,0 +1,77 @@
+/*
+** gauss_bound.h -- an a priori bound on the error of Gauss-Legendre
+** quadrature of the speed over one piece, read off the speed's branch
+** points (gauss_bound.c), and the order it asks for.
+*/
+#ifndef ARCLEN_GAUSS_BOUND_H
+#define ARCLEN_GAUSS_BOUND_H
+
+#include <stdint.h>
+#include <string.h>
+
+#include "cubic.h"
+
+/* log2(x) within ARCLEN_LOG2_ERR, for choosing orders (callers add the
+** margin): log2(m 2^e) = e + log2(1 + t), t = m - 1 in [0, 1), and
+** t + t (1 - t)(0.418 - 0.148 t) is within 0.00124 of log2(1 + t) on
+** [0, 1] (checked with mpmath on 10^5 points).  No division and no call:
+** the exponent and mantissa are read off the bits (IEEE 754 binary64);
+** zero, subnormals, inf and NaN go to log2().  Inline: the bounds call it
+** on their critical path. */
+#define ARCLEN_LOG2_ERR 0.0015
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline double arclen_rough_log2(double x) {
+  uint64_t u;
+  double t;
+  int e;
+  memcpy(&u, &x, sizeof u);
+  e = (int)(u >> 52);                   /* with the sign: > 0x7fe if < 0 */
+  if ((unsigned)(e - 1) >= 0x7fe) return log2(x);
+  u = (u & 0xfffffffffffffULL) | 0x3ff0000000000000ULL;
+  memcpy(&t, &u, sizeof t);
+  t -= 1;
+  return (e - 1023) + t + t * (1 - t) * (0.418 - 0.148 * t);
+}
+
+/* What the bound needs of a curve, once: per branch pair its upper root
+** and the elementary symmetric functions of the square roots of its
+** distances to the other roots of Q (t units), alone and times the Beta
+** integrals at the reference order.  ok == 0: a root lies too far for the
+** fast form (beyond 2^100 scaled units), and the pieces take the ellipse
+** bound. */
+typedef struct arclen_cut_curve {
+  const arclen_branch *br;
+  int ok;
+  int has_real;             /* real (double) roots: kinks to keep outside */
+  int npair;                /* branch pairs (conjugate roots, im > 0) */
+  double re[2], im[2];      /* their upper roots */
+  double sym[2][4];         /* sym[j][i]: coefficient of Z^(i+1) */
+  double symref[2][4];      /* sym[j][i] beta[i][ARCLEN_CUT_REF] */
+} arclen_cut_curve;
+
+#define ARCLEN_CUT_REF 16
+
+void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc);
+
+/* The bound of one piece [c - hh, c + hh] as a function of the order n:
+**     sum_j 2^(-n lam_j) C_j sum_i sym_j[i] Z_j^(i+1) beta[i][n]
+** times the common factor lead 128/(15 pi) (and hh); see gauss_bound.c. */
+typedef struct arclen_cut_piece {
+  int nt;                   /* terms: one per branch pair */
+  int inside;               /* a real root strictly inside: must split */
+  double lam[2];            /* log2(rho^2), rounded down */
+  double lref[2];           /* log2 of the term's sum at the reference order */
+  double cc[2], z[2];       /* C_j and Z_j */
+} arclen_cut_piece;
+
+void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
+                      arclen_cut_piece *pb);
+/* An order n in [2, nmax] whose bound is at most 2^lgoal (lgoal includes
+** log2 of the common factor), the least or within a point of it; 0 if
+** none.  When ratio is not NULL it gets the bound over 2^lgoal there. */
+int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
+                     double lgoal, int nmax, double *ratio);
+
+#endif
