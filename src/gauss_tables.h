@@ -13,12 +13,15 @@ typedef struct arclen_gauss_rule {
   const double *w;
 } arclen_gauss_rule;
 
-/* Every order n = 1..64 at index n - 1, ended by a rule with n == 0. */
+#define ARCLEN_GAUSS_MAX 128
+
+/* Every order n = 1..ARCLEN_GAUSS_MAX at index n - 1, ended by a rule with
+** n == 0. */
 extern const arclen_gauss_rule arclen_gauss_rules[];
 
 /* beta[i][n] = B(p + 1, 2n - p), p = (i + 1)/2, rounded up: the integral of
 ** x^p (1 + x)^(-2n-1) over (0, inf), which the error bound of an n-point
 ** rule sums (gauss_bound.c); HUGE_VAL where it diverges. */
-extern const double arclen_gauss_beta[4][65];
+extern const double arclen_gauss_beta[4][ARCLEN_GAUSS_MAX + 1];
 
 #endif

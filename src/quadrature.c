@@ -26,13 +26,15 @@
 #include "gauss_tables.h"
 
 /* The range is cut at the foot of a branch point within FOOTCUT of its
-** width; a piece that no order meets is cut GRADE times its nearest branch
-** point's distance from the near end.  Both tuned on the bench's random
-** curves for fewest evaluations and bounds (0.5 and mid-point cuts: 64.5
-** evaluations and 3.7 bounds per curve; these: 60.1 and 2.9). */
-#define FOOTCUT 0.2
-#define GRADE 4.0
-#define NMAX 48          /* highest order used before bisecting instead */
+** width; a piece that no order up to NMAX meets is cut GRADE times its
+** nearest branch point's distance from the near end.  A piece costs about
+** as much as 20 evaluations (its bound and order, the stack), so few long
+** pieces beat many short ones: tuned for time on the bench's random curves
+** (FOOTCUT 0.2, GRADE 4, NMAX 48: 43 evaluations; these: 55 and 10% less
+** time). */
+#define FOOTCUT 0.07
+#define GRADE 8.0
+#define NMAX 128         /* highest order used before cutting instead */
 #define MAXDEPTH 60      /* bisection levels below a critical piece */
 #define MAXSTACK (4 + 2 * MAXDEPTH)  /* pending pieces: depth-first search */
 /* e = b^2 of the ellipse with rho = 64 ((rho - 1/rho)/2 squared): a larger
@@ -43,10 +45,12 @@
 ** on the hardest reference curve (found by fuzz/fuzz_length). */
 #define MAXSPLITS 100000L
 
-/* The rule with n points (1 <= n <= 64, every order is tabulated at
-** index n - 1 by tools/gen_gauss_tables.py), clamped into that range. */
+/* The rule with n points (1 <= n <= ARCLEN_GAUSS_MAX, every order is
+** tabulated at index n - 1 by tools/gen_gauss_tables.py), clamped into
+** that range. */
 static const arclen_gauss_rule *rule_at_least(int n) {
-  return &arclen_gauss_rules[n < 1 ? 0 : n > 64 ? 63 : n - 1];
+  return &arclen_gauss_rules[n < 1 ? 0 : n > ARCLEN_GAUSS_MAX
+                                             ? ARCLEN_GAUSS_MAX - 1 : n - 1];
 }
 
 /* hh * sum w_i f(c + hh x_i): the rule on [c - hh, c + hh]. */
@@ -169,6 +173,7 @@ typedef struct integrator {
   double unit;                /* dt/ds: the result's factor (sub-ranges) */
   double logk;                /* log2((32/15) width / (rtol lest)) */
   double lgoal;               /* log2(2 rtol lest / (width lead 128/15pi)) */
+  double lkl;                 /* log2(lead 128/15pi), rounded up */
   double mins[2];             /* feet of near branch points in (t0, t1) */
   int nmin;
   int top;
@@ -256,9 +261,10 @@ static int start(integrator *in, const double *c, int dim, double t0,
   if (!in->cc.ok)                     /* the ellipse bound's target */
     in->logk = rough_log2((32.0 / 15.0) * in->width / in->rtol) -
               rough_log2(in->lest) + 2 * LOG2_ERR;   /* an upper bound */
-  in->lgoal = rough_log2(2 * in->rtol * in->lest / in->width) -
-              rough_log2(in->br.lead * (128 / (15 * 3.14159265358979323846))) -
-              2 * LOG2_ERR;                       /* a lower bound */
+  in->lkl = rough_log2(in->br.lead * (128 / (15 * 3.14159265358979323846))) +
+            LOG2_ERR;
+  in->lgoal = rough_log2(2 * in->rtol * in->lest / in->width) - in->lkl -
+              LOG2_ERR;                           /* a lower bound */
   return 1;
 }
 
@@ -406,11 +412,6 @@ int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
   return ARCLEN_OK;
 }
 
-/* Safeguarded Newton for s(t) = goal inside an accepted piece [a, b] whose
-** length is plen (goal in [0, plen]): s(t) is increasing, so [lo, hi]
-** always brackets the answer, and a step leaving it is replaced by
-** bisection.  Each s(t) is the piece's rule on [a, t] (a sub-interval keeps
-** the piece's branch-point distance or better). */
 /* Whether a Newton step d from t (d = -g/f) lands within tol of the goal
 ** without evaluating there: s(t + d) - goal = g + f d + R = R (up to the
 ** rule error of g, which the tolerance's other half covers), and Taylor
@@ -446,20 +447,71 @@ static double hermite_guess(const arclen_hodo *h, double a, double b,
   return a + w * u;
 }
 
+/* The integral over [x, y] inside an accepted piece to within target
+** (scaled units).  The piece's Bernstein ellipse (eb, half-width hp) holds
+** the disc of radius r = hp (a_semi - 1) about every point of the piece
+** (see newton_certified), so a short [x, y] of half-width h has the
+** ellipse of semi-minor axis r inside it, rho = r/h + sqrt(1 + (r/h)^2),
+** with |f| <= M there: the ellipse bound (quadrature.c's head) at that
+** rho sets its order, for a few operations.  A longer one takes its own
+** branch-cut bound, or the piece's rule r when that is not at hand. */
+static double sub_integral(integrator *in, double x, double y, double target,
+                           const piece_bound *eb, double hp,
+                           const arclen_gauss_rule *r) {
+  double c = x + (y - x) / 2, h = (y - x) / 2;
+  double rad = hp * eb->e / (sqrt(1 + eb->e) + 1);
+  int n = 0;
+  if (!(h > 0)) return 0;
+  if (h < rad / 2) {
+    double beta = rad / h, rho = beta + sqrt(1 + beta * beta);
+    double lnum = rough_log2(h * (64.0 / 15.0) * eb->m / target) -
+                  rough_log2(rho * rho - 1) + 2 * LOG2_ERR;
+    double nn = 1 + lnum / (2 * (rough_log2(rho) - LOG2_ERR));
+    n = nn <= 2 ? 2 : nn < ARCLEN_GAUSS_MAX ? (int)ceil(nn) : 0;
+  } else if (in->cc.ok) {
+    arclen_cut_piece cp;
+    double lg = rough_log2(target) - rough_log2(h) - in->lkl - 2 * LOG2_ERR;
+    arclen_cut_bound(&in->cc, c, h, &cp);
+    n = arclen_cut_order(&in->cc, &cp, lg, ARCLEN_GAUSS_MAX, NULL);
+  }
+  if (n) r = rule_at_least(n);
+  in->evals += r->n;
+  return apply_rule(&in->h, r, c, h);
+}
+
+/* Safeguarded Newton for s(t) = goal inside an accepted piece [a, b] whose
+** length is plen (goal in [0, plen]): s is increasing, so the bracket
+** [lo, hi] always holds the answer, and a step leaving it is replaced by
+** bisection.  s(t) is taken from the nearer end of the bracket, whose s is
+** known, plus the integral between (sub_integral): near the answer these
+** are short and need few points.  The k-th such integral may err by
+** tol 2^-(k+1), so every s known errs by less than tol in all. */
 static double solve_in_piece(integrator *in, double a, double b, double plen,
                              double goal, double tol,
                              const arclen_gauss_rule *r) {
-  double lo = a, hi = b, t = hermite_guess(&in->h, a, b, plen, goal);
+  double lo = a, hi = b, slo = 0, shi = plen, share = tol / 2;
+  double t = hermite_guess(&in->h, a, b, plen, goal);
   piece_bound eb;             /* the piece's ellipse: M and e for Cauchy */
   int it;
   bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &eb);
   in->evals += 2;
   for (it = 0; it < 100; it++) {
-    double g = apply_rule(&in->h, r, a + (t - a) / 2, (t - a) / 2) - goal;
-    double f = arclen_hodo_speed(&in->h, t), next;
-    in->evals += r->n + 1;
+    double g, f, next;
+    if (t - lo <= hi - t)
+      g = slo + sub_integral(in, lo, t, share, &eb, (b - a) / 2, r) - goal;
+    else
+      g = shi - sub_integral(in, t, hi, share, &eb, (b - a) / 2, r) - goal;
+    share /= 2;
+    f = arclen_hodo_speed(&in->h, t);
+    in->evals++;
     if (fabs(g) <= tol) break;
-    if (g < 0) lo = t; else hi = t;
+    if (g < 0) {
+      lo = t;
+      slo = g + goal;
+    } else {
+      hi = t;
+      shi = g + goal;
+    }
     next = f > 0 ? t - g / f : lo + (hi - lo) / 2;
     if (!(next > lo && next < hi)) {
       next = lo + (hi - lo) / 2;

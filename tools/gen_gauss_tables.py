@@ -16,7 +16,8 @@ import math
 import mpmath as mp
 
 mp.mp.dps = 60
-ORDERS = list(range(1, 65))
+MAX_ORDER = 128  # gauss_tables.h: ARCLEN_GAUSS_MAX
+ORDERS = list(range(1, MAX_ORDER + 1))
 
 
 def legendre_rule(n):
@@ -55,10 +56,10 @@ def up(v):
 
 
 def beta_row(i):
-    """B(p + 1, 2n - p), p = (i + 1)/2, for n = 0..64 (inf where it diverges)."""
+    """B(p + 1, 2n - p), p = (i + 1)/2, for n = 0..MAX_ORDER (inf where it diverges)."""
     p = mp.mpf(i + 1) / 2
     row = []
-    for n in range(65):
+    for n in range(MAX_ORDER + 1):
         row.append(up(mp.beta(p + 1, 2 * n - p)) if 2 * n > p else math.inf)
     return row
 
@@ -77,7 +78,7 @@ def main():
     out.append('  {0, 0, 0, 0}')
     out.append('};')
     out.append('')
-    out.append('const double arclen_gauss_beta[4][65] = {')
+    out.append('const double arclen_gauss_beta[4][ARCLEN_GAUSS_MAX + 1] = {')
     for i in range(4):
         row = ['HUGE_VAL' if math.isinf(v) else repr(v) for v in beta_row(i)]
         out.append('  {%s},' % ', '.join(row))
