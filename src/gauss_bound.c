@@ -43,7 +43,6 @@
 ** ellipse bound. */
 #define FAR_ROOT 0x1p100
 #define BOUND_MARGIN (1 + 0x1p-40)  /* rounding in the sums below */
-#define LOW_REF 8                 /* the second reference order */
 
 /* 2^x, never below: 2^k times the degree-4 Taylor polynomial of 2^f (f in
 ** [0, 1); its remainder is positive and below 0.08%, hence the 1.001). */
@@ -202,7 +201,7 @@ static int order_at(const arclen_cut_piece *pb, const double *l,
 
 int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
                      double lgoal, int nmax, double *ratio) {
-  int j, n;
+  int j, n, m;
   if (pb->inside) return 0;
   if (pb->nt == 0) {                     /* a polynomial: exact from n = 2 */
     if (ratio) *ratio = 0;
@@ -210,16 +209,18 @@ int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
   }
   for (j = 0; j < pb->nt; j++)
     if (!(pb->lam[j] > 0)) return 0;     /* rho ~ 1: no order will do */
+  /* From the reference order down by halves: an estimate n >= m is a
+  ** bound and too high by about 1.5 log2(n/m) / lam points. */
   n = order_at(pb, pb->lref, lgoal);
-  if (n < ARCLEN_CUT_REF) {  /* below the reference: again from LOW_REF */
-    double low[2];
+  for (m = ARCLEN_CUT_REF / 2; n < 2 * m && m >= 4; m /= 2) {
+    double l[2];
     for (j = 0; j < pb->nt; j++)
-      low[j] = rough_log2(term_sum(cc->sym[j], LOW_REF, pb->cc[j], pb->z[j])) +
-               LOG2_ERR;
-    n = order_at(pb, low, lgoal);
-    for (; n < LOW_REF && ratio_at(cc, pb, lgoal, n) > 1; n++)
-      continue;                          /* below both: the sum itself */
+      l[j] = rough_log2(term_sum(cc->sym[j], m, pb->cc[j], pb->z[j])) +
+             LOG2_ERR;
+    n = order_at(pb, l, lgoal);
   }
+  if (n < 2 * m)                         /* below all: the sum itself */
+    for (; n < 2 * m && ratio_at(cc, pb, lgoal, n) > 1; n++) continue;
   if (n > nmax) return 0;
   if (ratio) *ratio = ratio_at(cc, pb, lgoal, n);
   return n;

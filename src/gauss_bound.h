@@ -51,7 +51,7 @@ typedef struct arclen_cut_curve {
   double symref[2][4];      /* sym[j][i] beta[i][ARCLEN_CUT_REF] */
 } arclen_cut_curve;
 
-#define ARCLEN_CUT_REF 16
+#define ARCLEN_CUT_REF 32       /* the reference order, then 24, 12, ... */
 
 void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc);
 
