@@ -2,14 +2,17 @@
 ** quadrature.c -- the default length method ("gauss"): Gauss-Legendre on
 ** pieces whose order is chosen from an a priori error bound.
 **
-** The speed f = sqrt(Q) is analytic inside the Bernstein ellipse E_rho of a
-** piece that reaches up to the nearest branch point (branch.c).  For such f,
-** |f| <= M on E_rho, the n-point rule errs by at most
+** The speed f = sqrt(Q) is analytic but for the branch points (branch.c),
+** and the error of the n-point rule on a piece is bounded along the cuts
+** from them (gauss_bound.c).  Curves with a root too far for that take the
+** Bernstein-ellipse bound: f is analytic inside the ellipse E_rho that
+** reaches the nearest branch point, and with |f| <= M on E_rho the rule
+** errs by at most
 **     (64/15) M rho^(2-2n) / (rho^2 - 1)      on [-1, 1]
 ** (Trefethen, "Approximation Theory and Approximation Practice", Thm 19.3,
 ** whose I_n has n+1 points; it follows from |a_k| <= 2 M rho^-k, Thm 8.1).
-** The bound cannot be fooled by two rules agreeing by accident: it is read
-** off the geometry.  [t0, t1] is cut at the feet of the branch points
+** Neither bound can be fooled by two rules agreeing by accident: both are
+** read off the geometry.  [t0, t1] is cut at the feet of the branch points
 ** (where near-cusps put the speed's minima), then a piece that no order up
 ** to NMAX meets is cut again, closer to its nearest branch point (a graded
 ** mesh).  A sub-range is integrated on its own hodograph (cubic.c), so a
