@@ -29,14 +29,19 @@ static double half_time(const double *c, double rtol) {
   return arclen_time(c, halves[(c - curves) / 8], rtol);
 }
 
-static double median_ns(measure_fn f, double arg) {
+/* The median ns per curve; *mean gets the mean (the per-curve times are
+** bimodal, one piece or two, and the median sits near the edge). */
+static double median_ns(measure_fn f, double arg, double *mean) {
   int i, r;
+  double sum = 0;
   for (i = 0; i < NCURVES; i++) {
     const double *c = curves + 8 * i;
     double t0 = bench_now();
     for (r = 0; r < REPS; r++) sink = f(c, arg);
     times[i] = (bench_now() - t0) / REPS * 1e9;
+    sum += times[i];
   }
+  *mean = sum / NCURVES;
   return bench_median(times, NCURVES);
 }
 
@@ -62,23 +67,23 @@ static long median_evals(double rtol, int want_time) {
 }
 
 int main(void) {
-  double base, l12, l15, t12, t15;
+  double base, l12, l15, t12, t15, mb, m12, m15, mt12, mt15;
   int i;
   bench_random_curves(curves, NCURVES, 20261121);
   for (i = 0; i < NCURVES; i++)        /* outside the clock: time alone */
     halves[i] = 0.5 * arclen_length(curves + 8 * i, 1e-12);
-  base = median_ns(gl24, 0);
-  l12 = median_ns(len, 1e-12);
-  l15 = median_ns(len, 1e-15);
-  t12 = median_ns(half_time, 1e-12);
-  t15 = median_ns(half_time, 1e-15);
+  base = median_ns(gl24, 0, &mb);
+  l12 = median_ns(len, 1e-12, &m12);
+  l15 = median_ns(len, 1e-15, &m15);
+  t12 = median_ns(half_time, 1e-12, &mt12);
+  t15 = median_ns(half_time, 1e-15, &mt15);
   printf("3000 random cubics in [0,10]^2, median ns per curve (%d calls each)\n", REPS);
-  printf("%-34s %9s %8s %7s\n", "what", "ns", "ratio", "evals");
-  printf("%-34s %9.1f %8.2f %7d\n", "fixed 24-point Gauss-Legendre", base, 1.0, 24);
-  printf("%-34s %9.1f %8.2f %7ld\n", "arclen_length rtol 1e-12", l12, l12 / base, median_evals(1e-12, 0));
-  printf("%-34s %9.1f %8.2f %7ld\n", "arclen_length rtol 1e-15", l15, l15 / base, median_evals(1e-15, 0));
-  printf("%-34s %9.1f %8.2f %7ld\n", "arclen_time L/2 rtol 1e-12", t12, t12 / base, median_evals(1e-12, 1));
-  printf("%-34s %9.1f %8.2f %7ld\n", "arclen_time L/2 rtol 1e-15", t15, t15 / base, median_evals(1e-15, 1));
+  printf("%-34s %9s %8s %7s %11s\n", "what", "ns", "ratio", "evals", "mean ratio");
+  printf("%-34s %9.1f %8.2f %7d %11.2f\n", "fixed 24-point Gauss-Legendre", base, 1.0, 24, 1.0);
+  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_length rtol 1e-12", l12, l12 / base, median_evals(1e-12, 0), m12 / mb);
+  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_length rtol 1e-15", l15, l15 / base, median_evals(1e-15, 0), m15 / mb);
+  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_time L/2 rtol 1e-12", t12, t12 / base, median_evals(1e-12, 1), mt12 / mb);
+  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_time L/2 rtol 1e-15", t15, t15 / base, median_evals(1e-15, 1), mt15 / mb);
   printf("time / length at 1e-12: %.2f   at 1e-15: %.2f\n", t12 / l12, t15 / l15);
   return 0;
 }

@@ -146,8 +146,9 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
     rho = 1 + am1 + b;
     g = 2 * b * rho;
     z = sqrt(hh * s12 * (0.5 + 0x1p-50));   /* a rounded up */
-    /* ln(1 + g) >= g - g^2/2: the sharper of that and the rough log */
-    lser = g * (1 - g / 2) * (1.4426950408889634 * (1 - 0x1p-50));
+    /* ln(1 + g) >= g - g^2/2: the sharper of that and the rough log; g
+    ** carries some 6 ulps of rounding, the series' margin is 64 */
+    lser = g * (1 - g / 2) * (1.4426950408889634 * (1 - 0x1p-46));
     lrough = rough_log2(1 + g) - LOG2_ERR;
     pb->lam[j] = lser > lrough ? lser : lrough;
     pb->cc[j] = (rho + 1) / (2 * b);     /* inf when b = 0: lam = 0 too */
@@ -184,7 +185,7 @@ static int order_ceil(double x) {
 ** a smaller n when that is below m (not yet a bound).  Each term gets
 ** 63/64 of the goal; a second term must then lie below 1/64 of it, else
 ** each gets half. */
-#define SHARE_LOG2 0.0227         /* log2(64/63), rounded up */
+#define SHARE_LOG2 0.0228         /* log2(64/63) = 0.02272..., rounded up */
 static int order_at(const arclen_cut_piece *pb, const double *l,
                     double lgoal) {
   double n0 = (l[0] - lgoal + SHARE_LOG2) / pb->lam[0], n1;
