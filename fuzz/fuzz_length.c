@@ -9,7 +9,10 @@
 **   - on [0, 1]: chord (1 - tol) <= L <= polygon (1 + tol), tol the
 **     method's guarantee plus a few ulps;
 **   - error-controlled methods agree with "gauss" within the sum of their
-**     tolerances; on a sub-range, L(t0, t1) + L(t1, 1) = L(t0, 1).
+**     tolerances; on a sub-range, L(t0, t1) + L(t1, 1) = L(t0, 1);
+**   - "gauss"'s info.err certifies it: at rtol and at 1e-15 the two
+**     lengths differ by at most the sum of their info.err plus 64 eps of
+**     rounding each (the reserve its tolerance keeps).
 ** The baselines run with at most 2000 steps (their 10^6 default is a
 ** reference row, not a fuzz target).
 */
@@ -128,6 +131,26 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
         fprintf(stderr, "rtol %g, range [%g, %g]\n", o.rtol, t0, t1);
         fz_fail(m->name, c, dim, "length %.17g, gauss %.17g", len, ref);
       }
+    }
+  }
+
+  /* The default method's certificate, against itself at full precision. */
+  {
+    arclen_opts o;
+    arclen_info i1, i2;
+    double l1, l2;
+    arclen_opts_init(&o);
+    o.rtol = rtol > 1e-15 ? rtol : 1e-15;
+    o.t0 = t0;
+    o.t1 = t1;
+    if (arclen_length_gauss(c, dim, &o, &l1, &i1) != ARCLEN_OK) abort();
+    o.rtol = 1e-15;
+    if (arclen_length_gauss(c, dim, &o, &l2, &i2) != ARCLEN_OK) abort();
+    if (isfinite(l1) && isfinite(l2) &&
+        fabs(l1 - l2) > i1.err + i2.err + 128 * DBL_EPSILON * fabs(l2) + TINY) {
+      fprintf(stderr, "rtol %g, range [%g, %g], info.err %.3g and %.3g\n",
+              rtol, t0, t1, i1.err, i2.err);
+      fz_fail("gauss info.err", c, dim, "%.17g at rtol, %.17g at 1e-15", l1, l2);
     }
   }
 
