@@ -471,7 +471,8 @@ static double sub_integral(integrator *in, double x, double y, double target,
                   rough_log2(rho * rho - 1) + 2 * LOG2_ERR;
     double nn = 1 + lnum / (2 * (rough_log2(rho) - LOG2_ERR));
     n = nn <= 2 ? 2 : nn < ARCLEN_GAUSS_MAX ? (int)ceil(nn) : 0;
-  } else if (in->cc.ok) {
+  }
+  if (!n && in->cc.ok) {
     arclen_cut_piece cp;
     double lg = rough_log2(target) - rough_log2(h) - in->lkl - 2 * LOG2_ERR;
     arclen_cut_bound(&in->cc, c, h, &cp);
