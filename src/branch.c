@@ -147,7 +147,16 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
     q[1] += 2 * h->a1[k] * h->a0[k];
     q[0] += h->a0[k] * h->a0[k];
   }
-  while (deg > 0 && q[deg] == 0) deg--;
+  /* Q's leading coefficient is |a2|^2, or |a1|^2 when a2 = 0: a sum of
+  ** squares.  When |a2|^2 underflows (a2 below ~1e-154 of the largest
+  ** coefficient), 2 a2.a1 is of the size of rounding beside |a1|^2 and may
+  ** be negative: dropped with it, or the lead would be the root of a
+  ** negative number (a NaN bound: 10^5 cuts on a near-line). */
+  if (q[4] == 0) {
+    q[3] = 0;
+    if (!(q[2] > 0)) q[2] = q[1] = 0;
+  }
+  deg = q[4] > 0 ? 4 : q[2] > 0 ? 2 : 0;
   b->lead = sqrt(q[deg]);
   if (deg == 0) return;
   n = arclen_quartic(q[4], q[3], q[2], q[1], q[0], re, im);

@@ -43,6 +43,7 @@
 ** ellipse bound. */
 #define FAR_ROOT 0x1p100
 #define BOUND_MARGIN (1 + 0x1p-40)  /* rounding in the sums below */
+#define FAR_PAIR 0x1p40           /* a branch point this many half-widths off */
 
 /* 2^x, never below: 2^k times the degree-4 Taylor polynomial of 2^f (f in
 ** [0, 1); its remainder is positive and below 0.08%, hence the 1.001). */
@@ -136,11 +137,26 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
     ** Next to the interval a - 1 cancels: it is rounded down by the sum's
     ** rounding (r1, r2 are each within 2 ulps), so rho is never above the
     ** true one; rho^2 - 1 = 2 b rho and rho/(rho - 1) = (rho + 1)/(2 b). */
-    double u = (cc->re[j] - c) * inv, v = cc->im[j] * inv;
-    double r1 = sqrt((u - 1) * (u - 1) + v * v);
-    double r2 = sqrt((u + 1) * (u + 1) + v * v), s12 = r1 + r2;
-    double am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50;
-    double b, rho, g, lser, lrough, z;
+    double dr = cc->re[j] - c, im = cc->im[j];
+    double u = dr * inv, v = im * inv, r1, r2, s12, am1, b, rho, g, z;
+    double lser, lrough;
+    if (fabs(dr) + im > FAR_PAIR * hh) {
+      /* Far from the piece (|z| >= 2^39; for a piece of subnormal width u
+      ** and v would overflow): rho >= a >= |z| >= max(|dr|, im)/hh, so
+      ** C = rho/(rho - 1) <= 1 + 2^-38, and hh a <= hh (|z| + 1) <= |dr| +
+      ** im + hh bounds Z^2. */
+      double dmax = fabs(dr) > im ? fabs(dr) : im;
+      pb->lam[j] = 2 * (rough_log2(dmax) - rough_log2(hh) - 2 * LOG2_ERR);
+      pb->cc[j] = 1 + 0x1p-38;
+      pb->z[j] = sqrt((fabs(dr) + im + hh) * (1 + 0x1p-50));
+      pb->lref[j] = rough_log2(term_sum(cc->symref[j], 0, pb->cc[j],
+                                        pb->z[j])) + LOG2_ERR;
+      continue;
+    }
+    r1 = sqrt((u - 1) * (u - 1) + v * v);
+    r2 = sqrt((u + 1) * (u + 1) + v * v);
+    s12 = r1 + r2;
+    am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50;
     if (!(am1 > 0)) am1 = 0;             /* on the interval, or NaN */
     b = sqrt(am1 * (am1 + 2));
     rho = 1 + am1 + b;

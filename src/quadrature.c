@@ -38,6 +38,7 @@
 #define FOOTCUT 0.05
 #define GRADE 8.0
 #define NMAX 128         /* highest order used before cutting instead */
+#define FLOOR_ORDER 48   /* the rule of a piece that cannot be cut further */
 #define MAXDEPTH 60      /* bisection levels below a critical piece */
 #define MAXSTACK (4 + 2 * MAXDEPTH)  /* pending pieces: depth-first search */
 /* e = b^2 of the ellipse with rho = 64 ((rho - 1/rho)/2 squared): a larger
@@ -330,7 +331,7 @@ static int next_piece(integrator *in, double *from, double *to, double *len,
     if (r == NULL) {          /* bisection floor: a piece of ~1e-18 width */
       piece_bound eb;
       bound_piece(&in->br, c, hh, &eb);
-      r = rule_at_least(NMAX);
+      r = rule_at_least(FLOOR_ORDER);
       err = 2 * (2 * hh) * eb.m;     /* crude: the rule and the integral */
     } else if (in->want_err) {       /* are each at most width x M */
       err = in->rtol * in->lest * (2 * hh / in->width) *
