@@ -44,6 +44,7 @@
 #define FAR_ROOT 0x1p100
 #define BOUND_MARGIN (1 + 0x1p-40)  /* rounding in the sums below */
 #define FAR_PAIR 0x1p40           /* a branch point this many half-widths off */
+#define REF_ORDER 32              /* the estimates' order, then 16, 8, 4 */
 
 /* 2^x, never below: 2^k times the degree-4 Taylor polynomial of 2^f (f in
 ** [0, 1); its remainder is positive and below 0.08%, hence the 1.001). */
@@ -101,21 +102,28 @@ void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc) {
       sym[3] = 1;
     }
     for (i = 0; i < 4; i++)
-      cc->symref[j][i] = sym[i] * arclen_gauss_beta[i][ARCLEN_CUT_REF];
+      cc->symref[j][i] = sym[i] * arclen_gauss_beta[i][REF_ORDER];
   }
 }
 
-/* C Z (s[0] b[0] + Z (s[1] b[1] + Z (s[2] b[2] + Z s[3] b[3]))) with b the
-** Beta integrals at order n, or 1 when b is NULL (s already holds them). */
-static double term_sum(const double s[4], int n, double c, double z) {
-  double b0 = 1, b1 = 1, b2 = 1, b3 = 1;
-  if (n) {
-    b0 = arclen_gauss_beta[0][n];
-    b1 = arclen_gauss_beta[1][n];
-    b2 = arclen_gauss_beta[2][n];
-    b3 = arclen_gauss_beta[3][n];
-  }
-  return c * z * (s[0] * b0 + z * (s[1] * b1 + z * (s[2] * b2 + z * s[3] * b3)));
+/* Z (s[0] + Z (s[1] + Z (s[2] + Z s[3]))) */
+static double horner_z(const double s[4], double z) {
+  return z * (s[0] + z * (s[1] + z * (s[2] + z * s[3])));
+}
+
+/* Term j of the bound but for 2^(-n lam_j): C_j times the sum over i of
+** sym_j[i] Z_j^(i+1) and the Beta integral at order n. */
+static double term_sum(const double sym[4], int n, double c, double z) {
+  double s[4];
+  int i;
+  for (i = 0; i < 4; i++) s[i] = sym[i] * arclen_gauss_beta[i][n];
+  return c * horner_z(s, z);
+}
+
+/* log2 of term j's sum at order n, rounded up */
+static double term_log2(const arclen_cut_curve *cc,
+                        const arclen_cut_piece *pb, int j, int n) {
+  return rough_log2(term_sum(cc->sym[j], n, pb->cc[j], pb->z[j])) + LOG2_ERR;
 }
 
 void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
@@ -138,8 +146,6 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
     ** rounding (r1, r2 are each within 2 ulps), so rho is never above the
     ** true one; rho^2 - 1 = 2 b rho and rho/(rho - 1) = (rho + 1)/(2 b). */
     double dr = cc->re[j] - c, im = cc->im[j];
-    double u = dr * inv, v = im * inv, r1, r2, s12, am1, b, rho, g, z;
-    double lser, lrough;
     if (fabs(dr) + im > FAR_PAIR * hh) {
       /* Far from the piece (|z| >= 2^39; for a piece of subnormal width u
       ** and v would overflow): rho >= a >= |z| >= max(|dr|, im)/hh, so
@@ -149,27 +155,25 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
       pb->lam[j] = 2 * (rough_log2(dmax) - rough_log2(hh) - 2 * LOG2_ERR);
       pb->cc[j] = 1 + 0x1p-38;
       pb->z[j] = sqrt((fabs(dr) + im + hh) * (1 + 0x1p-50));
-      pb->lref[j] = rough_log2(term_sum(cc->symref[j], 0, pb->cc[j],
-                                        pb->z[j])) + LOG2_ERR;
-      continue;
+    } else {
+      double u = dr * inv, v = im * inv;
+      double r1 = sqrt((u - 1) * (u - 1) + v * v);
+      double r2 = sqrt((u + 1) * (u + 1) + v * v), s12 = r1 + r2;
+      double am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50, b, rho, g, lser, lrough;
+      if (!(am1 > 0)) am1 = 0;           /* on the interval, or NaN */
+      b = sqrt(am1 * (am1 + 2));
+      rho = 1 + am1 + b;
+      g = 2 * b * rho;
+      /* ln(1 + g) >= g - g^2/2: the sharper of that and the rough log; g
+      ** carries some 6 ulps of rounding, the series' margin is 64 */
+      lser = g * (1 - g / 2) * (1.4426950408889634 * (1 - 0x1p-46));
+      lrough = rough_log2(1 + g) - LOG2_ERR;
+      pb->lam[j] = lser > lrough ? lser : lrough;
+      pb->cc[j] = (rho + 1) / (2 * b);   /* inf when b = 0: lam = 0 too */
+      pb->z[j] = sqrt(hh * s12 * (0.5 + 0x1p-50));   /* a rounded up */
     }
-    r1 = sqrt((u - 1) * (u - 1) + v * v);
-    r2 = sqrt((u + 1) * (u + 1) + v * v);
-    s12 = r1 + r2;
-    am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50;
-    if (!(am1 > 0)) am1 = 0;             /* on the interval, or NaN */
-    b = sqrt(am1 * (am1 + 2));
-    rho = 1 + am1 + b;
-    g = 2 * b * rho;
-    z = sqrt(hh * s12 * (0.5 + 0x1p-50));   /* a rounded up */
-    /* ln(1 + g) >= g - g^2/2: the sharper of that and the rough log; g
-    ** carries some 6 ulps of rounding, the series' margin is 64 */
-    lser = g * (1 - g / 2) * (1.4426950408889634 * (1 - 0x1p-46));
-    lrough = rough_log2(1 + g) - LOG2_ERR;
-    pb->lam[j] = lser > lrough ? lser : lrough;
-    pb->cc[j] = (rho + 1) / (2 * b);     /* inf when b = 0: lam = 0 too */
-    pb->z[j] = z;
-    pb->lref[j] = rough_log2(term_sum(cc->symref[j], 0, pb->cc[j], z)) +
+    /* term_log2 at REF_ORDER, with the Beta integrals taken in prepare */
+    pb->lref[j] = rough_log2(pb->cc[j] * horner_z(cc->symref[j], pb->z[j])) +
                   LOG2_ERR;
   }
 }
@@ -229,11 +233,9 @@ int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
   /* From the reference order down by halves: an estimate n >= m is a
   ** bound and too high by about 1.5 log2(n/m) / lam points. */
   n = order_at(pb, pb->lref, lgoal);
-  for (m = ARCLEN_CUT_REF / 2; n < 2 * m && m >= 4; m /= 2) {
+  for (m = REF_ORDER / 2; n < 2 * m && m >= 4; m /= 2) {
     double l[2];
-    for (j = 0; j < pb->nt; j++)
-      l[j] = rough_log2(term_sum(cc->sym[j], m, pb->cc[j], pb->z[j])) +
-             LOG2_ERR;
+    for (j = 0; j < pb->nt; j++) l[j] = term_log2(cc, pb, j, m);
     n = order_at(pb, l, lgoal);
   }
   if (n < 2 * m)                         /* below all: the sum itself */

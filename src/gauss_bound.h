@@ -38,9 +38,9 @@ static inline double arclen_rough_log2(double x) {
 /* What the bound needs of a curve, once: per branch pair its upper root
 ** and the elementary symmetric functions of the square roots of its
 ** distances to the other roots of Q (t units), alone and times the Beta
-** integrals at the reference order.  ok == 0: a root lies too far for the
-** fast form (beyond 2^100 scaled units), and the pieces take the ellipse
-** bound. */
+** integrals at the reference order of the estimates.  ok == 0: a root lies too
+** far for the fast form (beyond 2^100 scaled units), and the pieces take
+** the ellipse bound. */
 typedef struct arclen_cut_curve {
   const arclen_branch *br;
   int ok;
@@ -48,10 +48,8 @@ typedef struct arclen_cut_curve {
   int npair;                /* branch pairs (conjugate roots, im > 0) */
   double re[2], im[2];      /* their upper roots */
   double sym[2][4];         /* sym[j][i]: coefficient of Z^(i+1) */
-  double symref[2][4];      /* sym[j][i] beta[i][ARCLEN_CUT_REF] */
+  double symref[2][4];      /* sym[j][i] beta[i][the reference order] */
 } arclen_cut_curve;
-
-#define ARCLEN_CUT_REF 32       /* the reference order, then 24, 12, ... */
 
 void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc);
 

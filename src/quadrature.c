@@ -164,8 +164,10 @@ static const arclen_gauss_rule *choose_rule(const piece_bound *pb,
 typedef struct span {
   double a, b;
   int depth;
-  arclen_cut_piece cut;
-  piece_bound pb;
+  union {
+    arclen_cut_piece cut;     /* in->cc.ok */
+    piece_bound pb;           /* otherwise */
+  } u;
 } span;
 
 /* The state of one adaptive integration over [t0, t1] (t0 < t1). */
@@ -200,9 +202,9 @@ static void push(integrator *in, double a, double b, int depth) {
   s->b = b;
   s->depth = depth;
   if (in->cc.ok)
-    arclen_cut_bound(&in->cc, a + (b - a) / 2, (b - a) / 2, &s->cut);
+    arclen_cut_bound(&in->cc, a + (b - a) / 2, (b - a) / 2, &s->u.cut);
   else
-    bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &s->pb);
+    bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &s->u.pb);
   in->top++;
 }
 
@@ -313,11 +315,11 @@ static int next_piece(integrator *in, double *from, double *to, double *len,
     const arclen_gauss_rule *r = NULL;
     int depth = s->depth;
     if (in->cc.ok) {
-      int n = arclen_cut_order(&in->cc, &s->cut, in->lgoal, NMAX,
+      int n = arclen_cut_order(&in->cc, &s->u.cut, in->lgoal, NMAX,
                                in->want_err ? &ratio : NULL);
       if (n) r = rule_at_least(n);
     } else {
-      r = choose_rule(&s->pb, in->logk);
+      r = choose_rule(&s->u.pb, in->logk);
     }
     if (r == NULL && depth < MAXDEPTH && in->splits < MAXSPLITS) {
       double cut = cut_point(in, a, b);
@@ -335,8 +337,8 @@ static int next_piece(integrator *in, double *from, double *to, double *len,
       err = 2 * (2 * hh) * eb.m;     /* crude: the rule and the integral */
     } else if (in->want_err) {       /* are each at most width x M */
       err = in->rtol * in->lest * (2 * hh / in->width) *
-            (in->cc.ok ? ratio
-                       : exp2(s->pb.logc + in->logk - r->n * s->pb.log_rho2));
+            (in->cc.ok ? ratio : exp2(s->u.pb.logc + in->logk -
+                                      r->n * s->u.pb.log_rho2));
     }
     *len = apply_rule(&in->h, r, c, hh);
     in->evals += r->n;
@@ -423,10 +425,13 @@ int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
 ** Bernstein ellipse with |f| <= M, which holds a disc of radius
 ** r = a_semi - 1 = e / (sqrt(1 + e) + 1) (times hh) about every point of
 ** the piece, so |f'| <= M / r (Cauchy's estimate). */
+static double disc_radius(const piece_bound *pb, double hh) {
+  return hh * pb->e / (sqrt(1 + pb->e) + 1);
+}
+
 static int newton_certified(const piece_bound *pb, double hh, double d,
                             double tol) {
-  double r = hh * pb->e / (sqrt(1 + pb->e) + 1);
-  return pb->m * d * d <= 2 * tol * r;
+  return pb->m * d * d <= 2 * tol * disc_radius(pb, hh);
 }
 
 /* A first guess for s(t) = goal in [a, b]: the cubic Hermite interpolant
@@ -454,7 +459,7 @@ static double hermite_guess(const arclen_hodo *h, double a, double b,
 /* The integral over [x, y] inside an accepted piece to within target
 ** (scaled units).  The piece's Bernstein ellipse (eb, half-width hp) holds
 ** the disc of radius r = hp (a_semi - 1) about every point of the piece
-** (see newton_certified), so a short [x, y] of half-width h has the
+** (disc_radius), so a short [x, y] of half-width h has the
 ** ellipse of semi-minor axis r inside it, rho = r/h + sqrt(1 + (r/h)^2),
 ** with |f| <= M there: the ellipse bound (quadrature.c's head) at that
 ** rho sets its order, for a few operations.  A longer one takes its own
@@ -463,7 +468,7 @@ static double sub_integral(integrator *in, double x, double y, double target,
                            const piece_bound *eb, double hp,
                            const arclen_gauss_rule *r) {
   double c = x + (y - x) / 2, h = (y - x) / 2;
-  double rad = hp * eb->e / (sqrt(1 + eb->e) + 1);
+  double rad = disc_radius(eb, hp);
   int n = 0;
   if (!(h > 0)) return 0;
   if (h < rad / 2) {
