@@ -181,6 +181,25 @@ describe("sub-ranges, splitting and geometry", function()
     assert.is_true(H.relerr(arclen.length({0, 0, 0, -1, 0, 0, -1, 0, 0, 0, 1e-154, 0}, {tol = 1e-15}), 1.5) <= 1e-14)
     assert.is_true(H.relerr(arclen.length({0, 0, 0, -1, 0, 0, -1, 0, 0, 0, 1e-80, 0}, {t1 = 0.7}), 0.87) <= 1e-12)
   end)
+  it("degenerate hodographs stay cheap (found by comparing the fuzz harnesses' speed)", function()
+    -- a 3D line whose cubic term is 1e-235 of the others: |a2|^2 underflowed
+    -- beside 2 a2.a1 and made the bound NaN (10^5 cuts, 4.8 million points);
+    -- the curve is a uniformly run line, so the length of [0, t1] is t1 |P3 - P0|
+    local line = {-1.3788107506440077e-235, -1, -2, -3, -4, -5, -6, -7, -8, -9, -10, -11}
+    local L, info = arclen.length(line, {t1 = 0.185794, tol = 1e-9, info = true})
+    assert.is_true(H.relerr(L, 0.185794 * 9 * math.sqrt(3)) <= 1e-9)
+    assert.is_true(info.evals <= 1000, "evaluations: " .. info.evals)
+    -- a cusp 1e-319 from t = 0 leaves a piece of subnormal width, where the
+    -- branch-cut bound overflowed (20000 cuts); elliptic is the reference
+    local cusp = {0, 0, 0, 1.6465078552955172e-317, -9, -82, 3, 0}
+    local L2, i2 = arclen.length(cusp, {tol = 1e-14, info = true})
+    local exact = arclen.length(cusp, {method = "elliptic"})
+    assert.is_true(H.relerr(L2, exact) <= 1e-14 + 1e-13)
+    assert.is_true(i2.evals <= 1000, "evaluations: " .. i2.evals)
+    local t, ti = arclen.time(cusp, L2 / 3, {tol = 1e-12, info = true})
+    assert.is_true(math.abs(arclen.length(cusp, {t1 = t, tol = 1e-15}) - L2 / 3) <= 1e-12 * L2)
+    assert.is_true(ti.evals <= 2000, "evaluations: " .. ti.evals)
+  end)
   it("critical points are the speed's extrema", function()
     local cr = arclen.critical({0, 0, 10, 10, 0, 10, 10, 0})
     assert.are.equal(1, #cr)
