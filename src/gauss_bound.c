@@ -106,9 +106,11 @@ void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc) {
   }
 }
 
-/* Z (s[0] + Z (s[1] + Z (s[2] + Z s[3]))) */
+/* Z (s[0] + s[1] Z + s[2] Z^2 + s[3] Z^3), in Estrin's order: the two
+** halves side by side (it lies on the path to the first evaluation). */
 static double horner_z(const double s[4], double z) {
-  return z * (s[0] + z * (s[1] + z * (s[2] + z * s[3])));
+  double z2 = z * z;
+  return z * ((s[0] + s[1] * z) + z2 * (s[2] + s[3] * z));
 }
 
 /* Term j of the bound but for 2^(-n lam_j): C_j times the sum over i of
@@ -175,6 +177,7 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
     /* term_log2 at REF_ORDER, with the Beta integrals taken in prepare */
     pb->lref[j] = rough_log2(pb->cc[j] * horner_z(cc->symref[j], pb->z[j])) +
                   LOG2_ERR;
+    pb->ilam[j] = 1 / pb->lam[j];
   }
 }
 
@@ -208,10 +211,10 @@ static int order_ceil(double x) {
 #define SHARE_LOG2 0.0228         /* log2(64/63) = 0.02272..., rounded up */
 static int order_at(const arclen_cut_piece *pb, const double *l,
                     double lgoal) {
-  double n0 = (l[0] - lgoal + SHARE_LOG2) / pb->lam[0], n1;
+  double n0 = (l[0] - lgoal + SHARE_LOG2) * pb->ilam[0], n1;
   int n;
   if (pb->nt == 1) return order_ceil(n0);
-  n1 = (l[1] - lgoal + SHARE_LOG2) / pb->lam[1];
+  n1 = (l[1] - lgoal + SHARE_LOG2) * pb->ilam[1];
   n = order_ceil(n0 > n1 ? n0 : n1);
   if (l[0] - n * pb->lam[0] <= lgoal - 6 || l[1] - n * pb->lam[1] <= lgoal - 6)
     return n;

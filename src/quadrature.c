@@ -176,6 +176,7 @@ typedef struct integrator {
   arclen_branch br;
   arclen_cut_curve cc;
   double rtol, lest, width;   /* tolerance, lower bound of L, t1 - t0 */
+  double t0, t1;              /* the range, [-1, 1] for a sub-range */
   double unit;                /* dt/ds: the result's factor (sub-ranges) */
   double logk;                /* log2((32/15) width / (rtol lest)) */
   double lgoal;               /* log2(2 rtol lest / (width lead 128/15pi)) */
@@ -190,14 +191,9 @@ typedef struct integrator {
   span stack[MAXSTACK];       /* last: start() leaves it uninitialised */
 } integrator;
 
-/* Push [a, b] with its bound.  The bound is taken here, not when the piece
-** is popped: the pieces pushed together (the first cuts, the halves of a
-** cut) have independent bounds, whose chains of square roots and divisions
-** then run side by side, and beside the chords in start(). */
-static void push(integrator *in, double a, double b, int depth) {
-  span *s;
-  if (in->top >= MAXSTACK) return;
-  s = &in->stack[in->top];
+/* [a, b] and its bound into s. */
+static void bound_span(const integrator *in, span *s, double a, double b,
+                       int depth) {
   s->a = a;
   s->b = b;
   s->depth = depth;
@@ -205,7 +201,15 @@ static void push(integrator *in, double a, double b, int depth) {
     arclen_cut_bound(&in->cc, a + (b - a) / 2, (b - a) / 2, &s->u.cut);
   else
     bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &s->u.pb);
-  in->top++;
+}
+
+/* Push [a, b] with its bound.  The bound is taken here, not when the piece
+** is popped: the pieces pushed together (the first cuts, the halves of a
+** cut) have independent bounds, whose chains of square roots and divisions
+** then run side by side, and beside the chords in start(). */
+static void push(integrator *in, double a, double b, int depth) {
+  if (in->top >= MAXSTACK) return;
+  bound_span(in, &in->stack[in->top++], a, b, depth);
 }
 
 /* Set up: the cuts are the feet of the branch points near [t0, t1] (the
@@ -248,10 +252,8 @@ static int start(integrator *in, const double *c, int dim, double t0,
       in->nmin++;
     }
   }
-  /* Cut at every foot right away. */
-  push(in, in->nmin ? in->mins[in->nmin - 1] : t0, t1, 0);
-  for (i = in->nmin - 1; i >= 0; i--)
-    push(in, i ? in->mins[i - 1] : t0, in->mins[i], 0);
+  in->t0 = t0;
+  in->t1 = t1;
   prev = t0;
   for (i = 0; i <= in->nmin; i++) {
     double next = i < in->nmin ? in->mins[i] : t1;
@@ -303,24 +305,49 @@ static double cut_point(const integrator *in, double a, double b) {
   return dist < (b - a) / 2 ? best : mid;
 }
 
+/* The rule for span s: the least order whose bound meets its share of the
+** tolerance, or NULL past NMAX; *err gets that bound when info is wanted. */
+static const arclen_gauss_rule *span_rule(const integrator *in,
+                                          const span *s, double *err) {
+  const arclen_gauss_rule *r = NULL;
+  double ratio = 0;
+  *err = 0;
+  if (in->cc.ok) {
+    int n = arclen_cut_order(&in->cc, &s->u.cut, in->lgoal, NMAX,
+                             in->want_err ? &ratio : NULL);
+    if (n) r = rule_at_least(n);
+  } else {
+    r = choose_rule(&s->u.pb, in->logk);
+  }
+  if (r && in->want_err)
+    *err = in->rtol * in->lest * ((s->b - s->a) / in->width) *
+           (in->cc.ok ? ratio : exp2(s->u.pb.logc + in->logk -
+                                     r->n * s->u.pb.log_rho2));
+  return r;
+}
+
+/* Integrate the accepted span s by rule r and count it. */
+static double accept(integrator *in, const span *s,
+                     const arclen_gauss_rule *r, double err) {
+  double a = s->a, b = s->b;
+  in->evals += r->n;
+  in->pieces++;
+  if (s->depth > in->depth) in->depth = s->depth;
+  in->err += err;
+  return apply_rule(&in->h, r, a + (b - a) / 2, (b - a) / 2);
+}
+
 /* Pop the next piece (in increasing t) and integrate it.  A piece is cut
-** (cut_point) when no order up to NMAX meets its share of the tolerance.  Returns 0 when no piece is
-** left; else the accepted piece [*from, *to] and its length. */
+** (cut_point) when no order up to NMAX meets its share of the tolerance.
+** Returns 0 when no piece is left; else the accepted piece [*from, *to]
+** and its length. */
 static int next_piece(integrator *in, double *from, double *to, double *len,
                       const arclen_gauss_rule **rule) {
   while (in->top > 0) {
     const span *s = &in->stack[--in->top];
-    double a = s->a, b = s->b, c = a + (b - a) / 2, hh = (b - a) / 2;
-    double err = 0, ratio = 0;
-    const arclen_gauss_rule *r = NULL;
+    double a = s->a, b = s->b, err;
     int depth = s->depth;
-    if (in->cc.ok) {
-      int n = arclen_cut_order(&in->cc, &s->u.cut, in->lgoal, NMAX,
-                               in->want_err ? &ratio : NULL);
-      if (n) r = rule_at_least(n);
-    } else {
-      r = choose_rule(&s->u.pb, in->logk);
-    }
+    const arclen_gauss_rule *r = span_rule(in, s, &err);
     if (r == NULL && depth < MAXDEPTH && in->splits < MAXSPLITS) {
       double cut = cut_point(in, a, b);
       if (cut > a && cut < b) {        /* s is overwritten from here on */
@@ -332,25 +359,48 @@ static int next_piece(integrator *in, double *from, double *to, double *len,
     }
     if (r == NULL) {          /* bisection floor: a piece of ~1e-18 width */
       piece_bound eb;
-      bound_piece(&in->br, c, hh, &eb);
+      bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &eb);
       r = rule_at_least(FLOOR_ORDER);
-      err = 2 * (2 * hh) * eb.m;     /* crude: the rule and the integral */
-    } else if (in->want_err) {       /* are each at most width x M */
-      err = in->rtol * in->lest * (2 * hh / in->width) *
-            (in->cc.ok ? ratio : exp2(s->u.pb.logc + in->logk -
-                                      r->n * s->u.pb.log_rho2));
-    }
-    *len = apply_rule(&in->h, r, c, hh);
-    in->evals += r->n;
-    in->pieces++;
-    if (depth > in->depth) in->depth = depth;
-    in->err += err;
+      err = 2 * (b - a) * eb.m;      /* crude: the rule and the integral */
+    }                                /* are each at most width x M */
+    *len = accept(in, s, r, err);
     *from = a;
     *to = b;
     if (rule) *rule = r;
     return 1;
   }
   return 0;
+}
+
+/* The first pieces, between the feet, in increasing t. */
+static void push_initial(integrator *in) {
+  int i;
+  push(in, in->nmin ? in->mins[in->nmin - 1] : in->t0, in->t1, 0);
+  for (i = in->nmin - 1; i >= 0; i--)
+    push(in, i ? in->mins[i - 1] : in->t0, in->mins[i], 0);
+}
+
+/* The whole integral.  The first pieces are integrated as they come: most
+** curves need no cut beyond the feet, and then never touch the stack; a
+** piece that must be cut goes through next_piece(). */
+static double integrate(integrator *in) {
+  double sum = 0, pa, pb, piece;
+  int i;
+  for (i = 0; i <= in->nmin; i++) {
+    span s;
+    double err;
+    const arclen_gauss_rule *r;
+    bound_span(in, &s, i ? in->mins[i - 1] : in->t0,
+               i < in->nmin ? in->mins[i] : in->t1, 0);
+    r = span_rule(in, &s, &err);
+    if (r) {
+      sum += accept(in, &s, r, err);
+      continue;
+    }
+    in->stack[in->top++] = s;
+    while (next_piece(in, &pa, &pb, &piece, NULL)) sum += piece;
+  }
+  return sum;
 }
 
 static int check_args(const double *c, int dim, const arclen_opts *o) {
@@ -399,7 +449,7 @@ static double truncation_budget(double rtol) {
 int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
                         double *len, arclen_info *info) {
   integrator in;
-  double a = o->t0, b = o->t1, sum = 0, pa, pb, piece;
+  double a = o->t0, b = o->t1, sum = 0;
   int e = check_args(c, dim, o);
   *len = NAN;
   if (info) arclen_info_init(info);
@@ -408,7 +458,7 @@ int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
   if (a > b) { double t = a; a = b; b = t; }
   if (start(&in, c, dim, a, b, truncation_budget(o->rtol))) {
     in.want_err = info != NULL;
-    while (next_piece(&in, &pa, &pb, &piece, NULL)) sum += piece;
+    sum = integrate(&in);
   }
   *len = in_curve_units(&in, o->t0 > o->t1 ? -sum : sum);
   if (info) {
@@ -554,6 +604,7 @@ int arclen_time_gauss(const double *c, int dim, double s,
     return ARCLEN_OK;
   }
   in.want_err = info != NULL;
+  push_initial(&in);
   goal = ldexp(s, -in.h.exp);
   *t = 1;
   while (next_piece(&in, &pa, &pb, &piece, &r)) {
