@@ -380,24 +380,27 @@ static void push_initial(integrator *in) {
     push(in, i ? in->mins[i - 1] : in->t0, in->mins[i], 0);
 }
 
-/* The whole integral.  The first pieces are integrated as they come: most
-** curves need no cut beyond the feet, and then never touch the stack; a
-** piece that must be cut goes through next_piece(). */
+/* The whole integral.  The first pieces (at most three, between the feet)
+** take their bounds and orders together, so that their chains of square
+** roots and divisions run side by side; then the rules.  Most curves need
+** no cut beyond the feet and never touch the stack; a piece that must be
+** cut goes through next_piece(). */
 static double integrate(integrator *in) {
-  double sum = 0, pa, pb, piece;
+  span s[3];
+  double err[3], sum = 0, pa, pb, piece;
+  const arclen_gauss_rule *r[3];
   int i;
   for (i = 0; i <= in->nmin; i++) {
-    span s;
-    double err;
-    const arclen_gauss_rule *r;
-    bound_span(in, &s, i ? in->mins[i - 1] : in->t0,
+    bound_span(in, &s[i], i ? in->mins[i - 1] : in->t0,
                i < in->nmin ? in->mins[i] : in->t1, 0);
-    r = span_rule(in, &s, &err);
-    if (r) {
-      sum += accept(in, &s, r, err);
+    r[i] = span_rule(in, &s[i], &err[i]);
+  }
+  for (i = 0; i <= in->nmin; i++) {
+    if (r[i]) {
+      sum += accept(in, &s[i], r[i], err[i]);
       continue;
     }
-    in->stack[in->top++] = s;
+    in->stack[in->top++] = s[i];
     while (next_piece(in, &pa, &pb, &piece, NULL)) sum += piece;
   }
   return sum;
