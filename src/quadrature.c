@@ -390,6 +390,19 @@ static double integrate(integrator *in) {
   double err[3], sum = 0, pa, pb, piece;
   const arclen_gauss_rule *r[3];
   int i;
+  if (in->nmin == 0 && in->cc.ok && !in->want_err) {
+    /* one piece, no report: the common case, without the bookkeeping */
+    arclen_cut_piece cp;
+    double c = in->t0 + in->width / 2, hh = in->width / 2;
+    int n;
+    arclen_cut_bound(&in->cc, c, hh, &cp);
+    n = arclen_cut_order(&in->cc, &cp, in->lgoal, NMAX, NULL);
+    if (n) {
+      in->evals = n;
+      in->pieces = 1;
+      return apply_rule(&in->h, rule_at_least(n), c, hh);
+    }
+  }
   for (i = 0; i <= in->nmin; i++) {
     bound_span(in, &s[i], i ? in->mins[i - 1] : in->t0,
                i < in->nmin ? in->mins[i] : in->t1, 0);
@@ -406,13 +419,13 @@ static double integrate(integrator *in) {
   return sum;
 }
 
-static int check_args(const double *c, int dim, const arclen_opts *o) {
+static int check_args(const double *c, int dim, double rtol, double t0,
+                      double t1) {
   int e = arclen_check_curve(c, dim);
   if (e) return e;
-  if (!(o->rtol >= ARCLEN_RTOL_MIN && o->rtol <= ARCLEN_RTOL_MAX))
+  if (!(rtol >= ARCLEN_RTOL_MIN && rtol <= ARCLEN_RTOL_MAX))
     return ARCLEN_ETOL;
-  if (!(o->t0 >= 0 && o->t0 <= 1 && o->t1 >= 0 && o->t1 <= 1))
-    return ARCLEN_ERANGE;
+  if (!(t0 >= 0 && t0 <= 1 && t1 >= 0 && t1 <= 1)) return ARCLEN_ERANGE;
   return ARCLEN_OK;
 }
 
@@ -449,25 +462,30 @@ static double truncation_budget(double rtol) {
   return rtol - (rtol / 2 < ROUNDING_RESERVE ? rtol / 2 : ROUNDING_RESERVE);
 }
 
-int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
-                        double *len, arclen_info *info) {
+/* The length over [t0, t1] of a checked curve (t0 > t1: negative). */
+static double length_core(const double *c, int dim, double t0, double t1,
+                          double rtol, arclen_info *info) {
   integrator in;
-  double a = o->t0, b = o->t1, sum = 0;
-  int e = check_args(c, dim, o);
-  *len = NAN;
-  if (info) arclen_info_init(info);
-  if (e) return e;
-  if (a == b) { *len = 0; return ARCLEN_OK; }
-  if (a > b) { double t = a; a = b; b = t; }
-  if (start(&in, c, dim, a, b, truncation_budget(o->rtol))) {
+  double a = t0 < t1 ? t0 : t1, b = t0 < t1 ? t1 : t0, sum = 0;
+  if (a == b) return 0;
+  if (start(&in, c, dim, a, b, truncation_budget(rtol))) {
     in.want_err = info != NULL;
     sum = integrate(&in);
   }
-  *len = in_curve_units(&in, o->t0 > o->t1 ? -sum : sum);
   if (info) {
     fill_info(info, &in, in.h.exp);
     info->err = in_curve_units(&in, in.err);
   }
+  return in_curve_units(&in, t0 > t1 ? -sum : sum);
+}
+
+int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
+                        double *len, arclen_info *info) {
+  int e = check_args(c, dim, o->rtol, o->t0, o->t1);
+  *len = NAN;
+  if (info) arclen_info_init(info);
+  if (e) return e;
+  *len = length_core(c, dim, o->t0, o->t1, o->rtol, info);
   return ARCLEN_OK;
 }
 
@@ -590,13 +608,10 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
 int arclen_time_gauss(const double *c, int dim, double s,
                       const arclen_opts *o, double *t, arclen_info *info) {
   integrator in;
-  arclen_opts full = *o;
   double cum = 0, pa, pb, piece, goal;
   const arclen_gauss_rule *r;
   int e;
-  full.t0 = 0;
-  full.t1 = 1;
-  e = check_args(c, dim, &full);
+  e = check_args(c, dim, o->rtol, 0, 1);   /* time ignores o->t0, t1 */
   *t = NAN;
   if (info) arclen_info_init(info);
   if (e) return e;
@@ -634,14 +649,8 @@ double arclen_length_gl(const double *c, int dim, int n) {
 
 static double length_of(const double *c, int dim, double t0, double t1,
                         double rtol) {
-  arclen_opts o;
-  double len;
-  arclen_opts_init(&o);
-  o.rtol = rtol;
-  o.t0 = t0;
-  o.t1 = t1;
-  arclen_length_gauss(c, dim, &o, &len, NULL);
-  return len;
+  if (check_args(c, dim, rtol, t0, t1)) return NAN;
+  return length_core(c, dim, t0, t1, rtol, NULL);
 }
 
 static double time_of(const double *c, int dim, double s, double rtol) {
