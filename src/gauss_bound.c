@@ -204,7 +204,8 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
       pb->cc[j] = (rho + 1) / (2 * b);   /* inf when b = 0: lam = 0 too */
       pb->z[j] = sqrt(hh * s12 * (0.5 + 0x1p-50));   /* a rounded up */
     }
-    /* term_log2 at REF_ORDER, with the Beta integrals taken in prepare */
+    /* log2 of term j's sum at REF_ORDER (Beta integrals taken in
+    ** prepare), from above */
     pb->lref[j] = log2_above(pb->cc[j] * horner_z(cc->symref[j], pb->z[j]));
     pb->ilam[j] = 1 / pb->lam[j];
   }

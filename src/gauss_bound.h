@@ -60,7 +60,7 @@ typedef struct arclen_cut_piece {
   int nt;                   /* terms: one per branch pair */
   int inside;               /* a real root strictly inside: must split */
   double lam[2];            /* log2(rho^2), rounded down */
-  double ilam[2];
+  double ilam[2];           /* 1/lam, taken once for every estimate */
   double lref[2];           /* log2 of the term's sum at the reference order */
   double cc[2], z[2];       /* C_j and Z_j */
 } arclen_cut_piece;

@@ -380,42 +380,38 @@ static void push_initial(integrator *in) {
     push(in, i ? in->mins[i - 1] : in->t0, in->mins[i], 0);
 }
 
+/* sum plus a first piece that no order up to NMAX meets, cut on the
+** stack (its pieces added one by one, in increasing t). */
+static double integrate_cut(integrator *in, const span *s, double sum) {
+  double pa, pb, piece;
+  in->stack[in->top++] = *s;
+  while (next_piece(in, &pa, &pb, &piece, NULL)) sum += piece;
+  return sum;
+}
+
 /* The whole integral.  The first pieces (at most three, between the feet)
 ** take their bounds and orders together, so that their chains of square
 ** roots and divisions run side by side; then the rules.  Most curves need
-** no cut beyond the feet and never touch the stack; a piece that must be
-** cut goes through next_piece(). */
+** no cut beyond the feet and never touch the stack. */
 static double integrate(integrator *in) {
   span s[3];
-  double err[3], sum = 0, pa, pb, piece;
+  double err[3], sum = 0;
   const arclen_gauss_rule *r[3];
   int i;
-  if (in->nmin == 0 && in->cc.ok && !in->want_err) {
-    /* one piece, no report: the common case, without the bookkeeping */
-    arclen_cut_piece cp;
-    double c = in->t0 + in->width / 2, hh = in->width / 2;
-    int n;
-    arclen_cut_bound(&in->cc, c, hh, &cp);
-    n = arclen_cut_order(&in->cc, &cp, in->lgoal, NMAX, NULL);
-    if (n) {
-      in->evals = n;
-      in->pieces = 1;
-      return apply_rule(&in->h, rule_at_least(n), c, hh);
-    }
+  if (in->nmin == 0) {      /* one piece, two curves in three: no loops */
+    bound_span(in, &s[0], in->t0, in->t1, 0);
+    r[0] = span_rule(in, &s[0], &err[0]);
+    return r[0] ? accept(in, &s[0], r[0], err[0])
+                : integrate_cut(in, &s[0], 0);
   }
   for (i = 0; i <= in->nmin; i++) {
     bound_span(in, &s[i], i ? in->mins[i - 1] : in->t0,
                i < in->nmin ? in->mins[i] : in->t1, 0);
     r[i] = span_rule(in, &s[i], &err[i]);
   }
-  for (i = 0; i <= in->nmin; i++) {
-    if (r[i]) {
-      sum += accept(in, &s[i], r[i], err[i]);
-      continue;
-    }
-    in->stack[in->top++] = s[i];
-    while (next_piece(in, &pa, &pb, &piece, NULL)) sum += piece;
-  }
+  for (i = 0; i <= in->nmin; i++)
+    sum = r[i] ? sum + accept(in, &s[i], r[i], err[i])
+               : integrate_cut(in, &s[i], sum);
   return sum;
 }
 
