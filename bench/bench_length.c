@@ -15,7 +15,6 @@
 
 static double curves[8 * NCURVES];
 static double halves[NCURVES];   /* L/2 of each curve, for the time calls */
-static double times[NCURVES];
 static volatile double sink;
 
 typedef double (*measure_fn)(const double *c, double arg);
@@ -29,20 +28,29 @@ static double half_time(const double *c, double rtol) {
   return arclen_time(c, halves[(c - curves) / 8], rtol);
 }
 
-/* The median ns per curve; *mean gets the mean (the per-curve times are
-** bimodal, one piece or two, and the median sits near the edge). */
-static double median_ns(measure_fn f, double arg, double *mean) {
-  int i, r;
-  double sum = 0;
+#define NMEASURES 5
+
+/* Per-curve ns of every measure, the measures taken in turn on each curve
+** so that all of them see the machine in the same state (its speed drifts
+** over seconds: a shared core, frequency steps); then the median of each,
+** and the mean in mean[] (the per-curve times are bimodal, one piece or
+** two, and the median sits near the edge). */
+static void median_ns(const measure_fn f[NMEASURES],
+                      const double arg[NMEASURES], double med[NMEASURES],
+                      double mean[NMEASURES]) {
+  static double times[NMEASURES][NCURVES];
+  int i, m, r;
+  for (m = 0; m < NMEASURES; m++) mean[m] = 0;
   for (i = 0; i < NCURVES; i++) {
     const double *c = curves + 8 * i;
-    double t0 = bench_now();
-    for (r = 0; r < REPS; r++) sink = f(c, arg);
-    times[i] = (bench_now() - t0) / REPS * 1e9;
-    sum += times[i];
+    for (m = 0; m < NMEASURES; m++) {
+      double t0 = bench_now();
+      for (r = 0; r < REPS; r++) sink = f[m](c, arg[m]);
+      times[m][i] = (bench_now() - t0) / REPS * 1e9;
+      mean[m] += times[m][i] / NCURVES;
+    }
   }
-  *mean = sum / NCURVES;
-  return bench_median(times, NCURVES);
+  for (m = 0; m < NMEASURES; m++) med[m] = bench_median(times[m], NCURVES);
 }
 
 static long median_evals(double rtol, int want_time) {
@@ -67,23 +75,21 @@ static long median_evals(double rtol, int want_time) {
 }
 
 int main(void) {
-  double base, l12, l15, t12, t15, mb, m12, m15, mt12, mt15;
+  static const measure_fn f[NMEASURES] = {gl24, len, len, half_time, half_time};
+  static const double arg[NMEASURES] = {0, 1e-12, 1e-15, 1e-12, 1e-15};
+  double med[NMEASURES], mean[NMEASURES];
   int i;
   bench_random_curves(curves, NCURVES, 20261121);
   for (i = 0; i < NCURVES; i++)        /* outside the clock: time alone */
     halves[i] = 0.5 * arclen_length(curves + 8 * i, 1e-12);
-  base = median_ns(gl24, 0, &mb);
-  l12 = median_ns(len, 1e-12, &m12);
-  l15 = median_ns(len, 1e-15, &m15);
-  t12 = median_ns(half_time, 1e-12, &mt12);
-  t15 = median_ns(half_time, 1e-15, &mt15);
+  median_ns(f, arg, med, mean);
   printf("3000 random cubics in [0,10]^2, median ns per curve (%d calls each)\n", REPS);
   printf("%-34s %9s %8s %7s %11s\n", "what", "ns", "ratio", "evals", "mean ratio");
-  printf("%-34s %9.1f %8.2f %7d %11.2f\n", "fixed 24-point Gauss-Legendre", base, 1.0, 24, 1.0);
-  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_length rtol 1e-12", l12, l12 / base, median_evals(1e-12, 0), m12 / mb);
-  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_length rtol 1e-15", l15, l15 / base, median_evals(1e-15, 0), m15 / mb);
-  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_time L/2 rtol 1e-12", t12, t12 / base, median_evals(1e-12, 1), mt12 / mb);
-  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_time L/2 rtol 1e-15", t15, t15 / base, median_evals(1e-15, 1), mt15 / mb);
-  printf("time / length at 1e-12: %.2f   at 1e-15: %.2f\n", t12 / l12, t15 / l15);
+  printf("%-34s %9.1f %8.2f %7d %11.2f\n", "fixed 24-point Gauss-Legendre", med[0], 1.0, 24, 1.0);
+  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_length rtol 1e-12", med[1], med[1] / med[0], median_evals(1e-12, 0), mean[1] / mean[0]);
+  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_length rtol 1e-15", med[2], med[2] / med[0], median_evals(1e-15, 0), mean[2] / mean[0]);
+  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_time L/2 rtol 1e-12", med[3], med[3] / med[0], median_evals(1e-12, 1), mean[3] / mean[0]);
+  printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_time L/2 rtol 1e-15", med[4], med[4] / med[0], median_evals(1e-15, 1), mean[4] / mean[0]);
+  printf("time / length at 1e-12: %.2f   at 1e-15: %.2f\n", med[3] / med[1], med[4] / med[2]);
   return 0;
 }
