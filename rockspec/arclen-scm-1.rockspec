@@ -22,6 +22,7 @@ build = {
         "src/conic_arc.c",
         "src/conic_length.c",
         "src/cubic.c",
+        "src/ellipse_table.c",
         "src/elliptic.c",
         "src/elliptic3d.c",
         "src/elliptic_far.c",

@@ -35,6 +35,7 @@
 #include <string.h>
 
 #include "gauss_bound.h"
+#include "ellipse_table.h"
 #include "gauss_tables.h"
 
 #define rough_log2 arclen_rough_log2
@@ -153,9 +154,57 @@ static double term_log2(const arclen_cut_curve *cc,
   return rough_log2(term_sum(cc->sym[j], n, pb->cc[j], pb->z[j])) + LOG2_ERR;
 }
 
+/* The ellipse's quantities for x = a - 1 (rounded down) from the table:
+** lines on x's cell (ellipse_table.h), no square root or division on the
+** way to the order.  0 when x lies outside the table, or is 0 or NaN (its
+** bits then give no cell). */
+static int from_table(double am1, double sqrthh, arclen_cut_piece *pb, int j) {
+  const arclen_ellipse_cell *e;
+  uint64_t u, k;
+  double x0, dx;
+  memcpy(&u, &am1, sizeof u);
+  k = (u >> ARCLEN_ELLIPSE_SHIFT) - ARCLEN_ELLIPSE_BASE;
+  if (k >= ARCLEN_ELLIPSE_CELLS) return 0;       /* also negative, 0, NaN */
+  e = &arclen_ellipse_cells[k];
+  u &= ~((1ULL << ARCLEN_ELLIPSE_SHIFT) - 1);    /* the cell's start */
+  memcpy(&x0, &u, sizeof x0);
+  dx = am1 - x0;                                 /* exact: Sterbenz */
+  pb->lam[j] = e->lam + dx * e->dlam;
+  pb->ilam[j] = e->ilam + dx * e->dilam;
+  pb->cc[j] = e->c + dx * e->dc;
+  pb->z[j] = sqrthh * (e->sa + dx * e->dsa);
+  return 1;
+}
+
+/* The same from their formulas, for x off the table.  b = sqrt(a^2 - 1)
+** and rho = a + b; next to the interval a - 1 cancels, so x is rounded down
+** by the sum's rounding (r1, r2 are each within 2 ulps), and rho is never
+** above the true one; rho^2 - 1 = 2 b rho and rho/(rho - 1) = (rho + 1)/(2 b). */
+static void from_formulas(double am1, double s12, double hh,
+                          arclen_cut_piece *pb, int j) {
+  double b, rho, g;
+  if (!(am1 > 0)) am1 = 0;             /* on the interval, or NaN */
+  b = sqrt(am1 * (am1 + 2));
+  rho = 1 + am1 + b;
+  g = 2 * b * rho;
+  if (g < 4) {
+    /* ln(1 + g) = 2 atanh(y), y = g/(2 + g) < 2/3, whose series has
+    ** positive terms: cut after y^9/9 it is below, by at most 0.12%;
+    ** g carries some 6 ulps of rounding, the margin is 64 */
+    double y = g / (2 + g), y2 = y * y;
+    pb->lam[j] = 2 * y * (1 + y2 * (1.0 / 3 + y2 * (0.2 + y2 * (1.0 / 7 +
+                 y2 * (1.0 / 9))))) * (1.4426950408889634 * (1 - 0x1p-46));
+  } else {
+    pb->lam[j] = rough_log2(1 + g) - LOG2_ERR;
+  }
+  pb->ilam[j] = 1 / pb->lam[j];
+  pb->cc[j] = (rho + 1) / (2 * b);     /* inf when b = 0: lam = 0 too */
+  pb->z[j] = sqrt(hh * s12 * (0.5 + 0x1p-50));   /* a rounded up */
+}
+
 void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
                       arclen_cut_piece *pb) {
-  double inv = 1 / hh;
+  double inv = 1 / hh, sqrthh = sqrt(hh);
   int j, k;
   pb->nt = cc->npair;
   pb->inside = 0;
@@ -168,10 +217,10 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
   for (j = 0; j < cc->npair; j++) {
     /* The Bernstein ellipse through the branch point z = u + iv (piece
     ** units) has foci +-1, so its semi-major axis is a = (|z - 1| + |z + 1|)/2
-    ** (two square roots side by side), b = sqrt(a^2 - 1) and rho = a + b.
-    ** Next to the interval a - 1 cancels: it is rounded down by the sum's
-    ** rounding (r1, r2 are each within 2 ulps), so rho is never above the
-    ** true one; rho^2 - 1 = 2 b rho and rho/(rho - 1) = (rho + 1)/(2 b). */
+    ** (two square roots side by side).  Next to the interval a - 1 cancels:
+    ** it is rounded down by the sum's rounding (r1, r2 are each within 2
+    ** ulps), and all else is taken from it, from the table or the formulas,
+    ** each erring on the safe side. */
     double dr = cc->re[j] - c, im = cc->im[j];
     if (fabs(dr) + im > FAR_PAIR * hh) {
       /* Far from the piece (|z| >= 2^39; for a piece of subnormal width u
@@ -182,32 +231,17 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
       pb->lam[j] = 2 * (rough_log2(dmax) - rough_log2(hh) - 2 * LOG2_ERR);
       pb->cc[j] = 1 + 0x1p-38;
       pb->z[j] = sqrt((fabs(dr) + im + hh) * (1 + 0x1p-50));
+      pb->ilam[j] = 1 / pb->lam[j];
     } else {
       double u = dr * inv, v = im * inv;
       double r1 = sqrt((u - 1) * (u - 1) + v * v);
       double r2 = sqrt((u + 1) * (u + 1) + v * v), s12 = r1 + r2;
-      double am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50, b, rho, g;
-      if (!(am1 > 0)) am1 = 0;           /* on the interval, or NaN */
-      b = sqrt(am1 * (am1 + 2));
-      rho = 1 + am1 + b;
-      g = 2 * b * rho;
-      if (g < 4) {
-        /* ln(1 + g) = 2 atanh(y), y = g/(2 + g) < 2/3, whose series has
-        ** positive terms: cut after y^9/9 it is below, by at most 0.12%;
-        ** g carries some 6 ulps of rounding, the margin is 64 */
-        double y = g / (2 + g), y2 = y * y;
-        pb->lam[j] = 2 * y * (1 + y2 * (1.0 / 3 + y2 * (0.2 + y2 * (1.0 / 7 +
-                     y2 * (1.0 / 9))))) * (1.4426950408889634 * (1 - 0x1p-46));
-      } else {
-        pb->lam[j] = rough_log2(1 + g) - LOG2_ERR;
-      }
-      pb->cc[j] = (rho + 1) / (2 * b);   /* inf when b = 0: lam = 0 too */
-      pb->z[j] = sqrt(hh * s12 * (0.5 + 0x1p-50));   /* a rounded up */
+      double am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50;
+      if (!from_table(am1, sqrthh, pb, j)) from_formulas(am1, s12, hh, pb, j);
     }
     /* log2 of term j's sum at REF_ORDER (Beta integrals taken in
     ** prepare), from above */
     pb->lref[j] = log2_above(pb->cc[j] * horner_z(cc->symref[j], pb->z[j]));
-    pb->ilam[j] = 1 / pb->lam[j];
   }
 }
 
