@@ -10,25 +10,28 @@
 ** F grows like w^2, and across a cut F changes sign, so
 **     |a_k| <= (4/pi) sum_pairs \int_{rho_j}^inf |F(r e^{i arg w_j})| r^(-k-1) dr
 ** (a pair and its conjugate give equal terms).  The n-point rule is exact
-** to degree 2n - 1 and |E_n(T_k)| <= 2 + 2/(k^2 - 1) <= 32/15, so its error
-** is at most (32/15) sum_{k >= 2n} |a_k| (times hh for the t integral).
+** to degree 2n - 1, and symmetric, so exact on every odd T_k too; on even
+** k >= 2n its error E_n(T_k) is about pi/2 in size for k = 2n and 2n + 2,
+** tiny up to 3n and beyond, and never above 2 + 2/(k^2 - 1) <= 32/15
+** (ellipse_table.h: bounds for every stored rule).  So its error is at
+** most sum_{k even >= 2n} |E_n(T_k)| |a_k| (times hh for the t integral).
 **
 ** Along the cut, with r = s rho_j and x = s - 1, |J(s w_j) - J(w_j)| <=
 ** x a_j (a_j = (rho_j + 1/rho_j)/2, the ellipse's semi-axis), and every
 ** other root R_m lies at most D_m + x hh a_j from the point; the speed is
 ** lead prod |t - R_m|^(1/2), so with Z = sqrt(hh a_j), q_m = sqrt(D_m):
 **     |F| <= lead Z x^(1/2) prod_m (q_m + Z x^(1/2)).
-** Summing the tail, sum_{k >= 2n} r^(-k-1) dr <= rho_j^(-2n) C_j s^(-2n-1) ds
-** with C_j = rho_j/(rho_j - 1), and each power of x integrates to a Beta
-** function (tabulated, gauss_tables.c):
-**     E <= hh (128 / 15 pi) lead sum_j rho_j^(-2n) C_j
+** Summing over k, sum_{k even >= 2n} |E_n(T_k)| r^(-k-1) dr <= rho_j^(-2n)
+** C_j(n) s^(-2n-1) ds, with C_j(n) the aliasing tail of ellipse_table.h
+** (at most 3.3 where rho_j/(rho_j - 1) times 32/15, the sum over all k
+** with the crude bound, is 20 for rho = 1.12), and each power of x
+** integrates to a Beta function (tabulated, gauss_tables.c):
+**     E <= hh (4 / pi) lead sum_j rho_j^(-2n) C_j(n)
 **                 sum_i sym_j[i] Z_j^(i+1) B((i+1)/2 + 1, 2n - (i+1)/2).
-** Unlike the Bernstein-ellipse bound (|f| <= M on the whole ellipse) this
-** sees that f vanishes like a square root at the branch point: on the
-** pieces of the bench's curves it is 14 times the true error at the median
-** (2.3 at best), where the ellipse bound is 1400 times too large (measured
-** before the distances between pairs took one square root, which adds at
-** most 8%).
+** C_j(n) falls with n: the orders' estimates take C_j(REF_ORDER) from the
+** reference order on, and C_j(2) below it.  Unlike the Bernstein-ellipse
+** bound (|f| <= M on the whole ellipse) this sees that f vanishes like a
+** square root at the branch point.
 */
 #include <math.h>
 #include <stdint.h>
@@ -139,7 +142,7 @@ static double horner_z(const double s[4], double z) {
   return z * ((s[0] + s[1] * z) + z2 * (s[2] + s[3] * z));
 }
 
-/* Term j of the bound but for 2^(-n lam_j): C_j times the sum over i of
+/* Term j of the bound but for 2^(-n lam_j): C_j(2) times the sum over i of
 ** sym_j[i] Z_j^(i+1) and the Beta integral at order n. */
 static double term_sum(const double sym[4], int n, double c, double z) {
   double s[4];
@@ -156,9 +159,10 @@ static double term_log2(const arclen_cut_curve *cc,
 
 /* The ellipse's quantities for x = a - 1 (rounded down) from the table:
 ** lines on x's cell (ellipse_table.h), no square root or division on the
-** way to the order.  0 when x lies outside the table, or is 0 or NaN (its
-** bits then give no cell). */
-static int from_table(double am1, double sqrthh, arclen_cut_piece *pb, int j) {
+** way to the order; *cref gets C(REF_ORDER).  0 when x lies outside the
+** table, or is 0 or NaN (its bits then give no cell). */
+static int from_table(double am1, double sqrthh, arclen_cut_piece *pb, int j,
+                      double *cref) {
   const arclen_ellipse_cell *e;
   uint64_t u, k;
   double x0, dx;
@@ -171,18 +175,20 @@ static int from_table(double am1, double sqrthh, arclen_cut_piece *pb, int j) {
   dx = am1 - x0;                                 /* exact: Sterbenz */
   pb->lam[j] = e->lam + dx * e->dlam;
   pb->ilam[j] = e->ilam + dx * e->dilam;
-  pb->cc[j] = e->c + dx * e->dc;
+  pb->cc[j] = e->c2 + dx * e->dc2;
+  *cref = e->cref + dx * e->dcref;
   pb->z[j] = sqrthh * (e->sa + dx * e->dsa);
   return 1;
 }
 
-/* The same from their formulas, for x off the table.  b = sqrt(a^2 - 1)
-** and rho = a + b; next to the interval a - 1 cancels, so x is rounded down
-** by the sum's rounding (r1, r2 are each within 2 ulps), and rho is never
-** above the true one; rho^2 - 1 = 2 b rho and rho/(rho - 1) = (rho + 1)/(2 b). */
+/* The same from their formulas, for x off the table (C(2) for both C's).
+** b = sqrt(a^2 - 1) and rho = a + b; next to the interval a - 1 cancels,
+** so x is rounded down by the sum's rounding (r1, r2 are each within 2
+** ulps), and rho is never above the true one; g = rho^2 - 1 = 2 b rho. */
 static void from_formulas(double am1, double s12, double hh,
-                          arclen_cut_piece *pb, int j) {
-  double b, rho, g;
+                          arclen_cut_piece *pb, int j, double *cref) {
+  const double *al = arclen_gauss_alias;
+  double b, rho, g, r;
   if (!(am1 > 0)) am1 = 0;             /* on the interval, or NaN */
   b = sqrt(am1 * (am1 + 2));
   rho = 1 + am1 + b;
@@ -198,7 +204,12 @@ static void from_formulas(double am1, double s12, double hh,
     pb->lam[j] = rough_log2(1 + g) - LOG2_ERR;
   }
   pb->ilam[j] = 1 / pb->lam[j];
-  pb->cc[j] = (rho + 1) / (2 * b);     /* inf when b = 0: lam = 0 too */
+  /* C(2) with r = rho^-2 = 1/(1 + g), 1/(1 - r) = (1 + g)/g (inf when
+  ** g = 0: lam = 0 too), the roundings covered by the factor */
+  r = 1 / (1 + g);
+  pb->cc[j] = (al[0] + al[1] * r + (al[2] * r * r + (32.0 / 15) * r / rho) *
+               ((1 + g) / g)) * (1 + 0x1p-44);
+  *cref = pb->cc[j];
   pb->z[j] = sqrt(hh * s12 * (0.5 + 0x1p-50));   /* a rounded up */
 }
 
@@ -221,15 +232,15 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
     ** it is rounded down by the sum's rounding (r1, r2 are each within 2
     ** ulps), and all else is taken from it, from the table or the formulas,
     ** each erring on the safe side. */
-    double dr = cc->re[j] - c, im = cc->im[j];
+    double dr = cc->re[j] - c, im = cc->im[j], cref;
     if (fabs(dr) + im > FAR_PAIR * hh) {
       /* Far from the piece (|z| >= 2^39; for a piece of subnormal width u
       ** and v would overflow): rho >= a >= |z| >= max(|dr|, im)/hh, so
-      ** C = rho/(rho - 1) <= 1 + 2^-38, and hh a <= hh (|z| + 1) <= |dr| +
-      ** im + hh bounds Z^2. */
+      ** C(n) <= alias[0] + 2^-70, and hh a <= hh (|z| + 1) <= |dr| + im +
+      ** hh bounds Z^2. */
       double dmax = fabs(dr) > im ? fabs(dr) : im;
       pb->lam[j] = 2 * (rough_log2(dmax) - rough_log2(hh) - 2 * LOG2_ERR);
-      pb->cc[j] = 1 + 0x1p-38;
+      pb->cc[j] = cref = arclen_gauss_alias[0] * (1 + 0x1p-40);
       pb->z[j] = sqrt((fabs(dr) + im + hh) * (1 + 0x1p-50));
       pb->ilam[j] = 1 / pb->lam[j];
     } else {
@@ -237,11 +248,13 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
       double r1 = sqrt((u - 1) * (u - 1) + v * v);
       double r2 = sqrt((u + 1) * (u + 1) + v * v), s12 = r1 + r2;
       double am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50;
-      if (!from_table(am1, sqrthh, pb, j)) from_formulas(am1, s12, hh, pb, j);
+      if (!from_table(am1, sqrthh, pb, j, &cref))
+        from_formulas(am1, s12, hh, pb, j, &cref);
     }
     /* log2 of term j's sum at REF_ORDER (Beta integrals taken in
     ** prepare), from above */
-    pb->lref[j] = log2_above(pb->cc[j] * horner_z(cc->symref[j], pb->z[j]));
+    pb->cref[j] = cref;
+    pb->lref[j] = log2_above(cref * horner_z(cc->symref[j], pb->z[j]));
   }
 }
 
@@ -252,7 +265,8 @@ static double ratio_at(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
   int j;
   for (j = 0; j < pb->nt; j++)
     r += exp2_above(-n * pb->lam[j] - lgoal) *
-         term_sum(cc->sym[j], n, pb->cc[j], pb->z[j]);
+         term_sum(cc->sym[j], n, n >= REF_ORDER ? pb->cref[j] : pb->cc[j],
+                  pb->z[j]);
   return r * BOUND_MARGIN;
 }
 

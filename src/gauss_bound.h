@@ -54,15 +54,16 @@ typedef struct arclen_cut_curve {
 void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc);
 
 /* The bound of one piece [c - hh, c + hh] as a function of the order n:
-**     sum_j 2^(-n lam_j) C_j sum_i sym_j[i] Z_j^(i+1) beta[i][n]
-** times the common factor lead 128/(15 pi) (and hh); see gauss_bound.c. */
+**     sum_j 2^(-n lam_j) C_j(n) sum_i sym_j[i] Z_j^(i+1) beta[i][n]
+** times the common factor lead 4/pi (and hh); see gauss_bound.c. */
 typedef struct arclen_cut_piece {
   int nt;                   /* terms: one per branch pair */
   int inside;               /* a real root strictly inside: must split */
   double lam[2];            /* log2(rho^2), rounded down */
   double ilam[2];           /* 1/lam, taken once for every estimate */
   double lref[2];           /* log2 of the term's sum at the reference order */
-  double cc[2], z[2];       /* C_j and Z_j */
+  double cc[2], z[2];       /* C_j(2), good at every order, and Z_j */
+  double cref[2];           /* C_j(REF_ORDER), from that order on */
 } arclen_cut_piece;
 
 void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,

@@ -179,8 +179,8 @@ typedef struct integrator {
   double t0, t1;              /* the range, [-1, 1] for a sub-range */
   double unit;                /* dt/ds: the result's factor (sub-ranges) */
   double logk;                /* log2((32/15) width / (rtol lest)) */
-  double lgoal;               /* log2(2 rtol lest / (width lead 128/15pi)) */
-  double lkl;                 /* log2(lead 128/15pi), rounded up */
+  double lgoal;               /* log2(2 rtol lest / (width lead 4/pi)) */
+  double lkl;                 /* log2(lead 4/pi), rounded up */
   double mins[2];             /* feet of near branch points in (t0, t1) */
   int nmin;
   int top;
@@ -269,7 +269,7 @@ static int start(integrator *in, const double *c, int dim, double t0,
   if (!in->cc.ok)                     /* the ellipse bound's target */
     in->logk = rough_log2((32.0 / 15.0) * in->width / in->rtol) -
               rough_log2(in->lest) + 2 * LOG2_ERR;   /* an upper bound */
-  in->lkl = rough_log2(in->br.lead * (128 / (15 * 3.14159265358979323846))) +
+  in->lkl = rough_log2(in->br.lead * (4 / 3.14159265358979323846)) +
             LOG2_ERR;
   in->lgoal = rough_log2(2 * in->rtol * in->lest / in->width) - in->lkl -
               LOG2_ERR;                           /* a lower bound */
