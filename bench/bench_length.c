@@ -30,26 +30,31 @@ static double half_time(const double *c, double rtol) {
 
 #define NMEASURES 5
 
-/* Per-curve ns of every measure, the measures taken in turn on each curve
-** so that all of them see the machine in the same state (its speed drifts
-** over seconds: a shared core, frequency steps); then the median of each,
-** and the mean in mean[] (the per-curve times are bimodal, one piece or
-** two, and the median sits near the edge). */
+#define NMEASURES 5
+#define BLOCK 50        /* curves timed by one measure before the next */
+
+/* Per-curve ns of every measure, the measures taken in turn on each block
+** of curves: all of them then see the machine in the same state (its speed
+** drifts over seconds: a shared core, frequency steps), and each curve is
+** timed after another curve's calls to the same function, as when one
+** measure runs over all curves.  Then the median of each, and the mean in
+** mean[] (the per-curve times are bimodal, one piece or two, and the median
+** sits near the edge). */
 static void median_ns(const measure_fn f[NMEASURES],
                       const double arg[NMEASURES], double med[NMEASURES],
                       double mean[NMEASURES]) {
   static double times[NMEASURES][NCURVES];
-  int i, m, r;
+  int b, i, m, r;
   for (m = 0; m < NMEASURES; m++) mean[m] = 0;
-  for (i = 0; i < NCURVES; i++) {
-    const double *c = curves + 8 * i;
-    for (m = 0; m < NMEASURES; m++) {
-      double t0 = bench_now();
-      for (r = 0; r < REPS; r++) sink = f[m](c, arg[m]);
-      times[m][i] = (bench_now() - t0) / REPS * 1e9;
-      mean[m] += times[m][i] / NCURVES;
-    }
-  }
+  for (b = 0; b < NCURVES; b += BLOCK)
+    for (m = 0; m < NMEASURES; m++)
+      for (i = b; i < b + BLOCK && i < NCURVES; i++) {
+        const double *c = curves + 8 * i;
+        double t0 = bench_now();
+        for (r = 0; r < REPS; r++) sink = f[m](c, arg[m]);
+        times[m][i] = (bench_now() - t0) / REPS * 1e9;
+        mean[m] += times[m][i] / NCURVES;
+      }
   for (m = 0; m < NMEASURES; m++) med[m] = bench_median(times[m], NCURVES);
 }
 
