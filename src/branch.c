@@ -58,7 +58,7 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
     double di = 2 * x1 * y1 - 4 * (x2 * y0 + y2 * x0);
     double r = sqrt(dr * dr + di * di), s = sqrt((r + fabs(dr)) / 2);
     double inv2 = 1 / n2, qr, qi, sr, si, nq;
-    b->lead = sqrt(n2);
+    b->lead2 = n2;
     if (s > 0) {                         /* d = sqrt(D), on the side of A1 */
       double ur = dr >= 0 ? s : fabs(di) / (2 * s);
       double ui = dr >= 0 ? di / (2 * s) : copysign(s, di);
@@ -83,11 +83,11 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
     si = (y0 * qr - x0 * qi) * nq;
     add_pair(b, sr + I * si, REAL_ROOT_RTOL2);
   } else if (n1 > 0) {
-    b->lead = sqrt(n1);
+    b->lead2 = n1;
     add_pair(b, -cdiv(h->a0[0] + I * h->a0[1], h->a1[0] + I * h->a1[1]),
              REAL_ROOT_RTOL2);
   } else {
-    b->lead = sqrt(x0 * x0 + y0 * y0);
+    b->lead2 = x0 * x0 + y0 * y0;
   }
 }
 
@@ -157,7 +157,7 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
     if (!(q[2] > 0)) q[2] = q[1] = 0;
   }
   deg = q[4] > 0 ? 4 : q[2] > 0 ? 2 : 0;
-  b->lead = sqrt(q[deg]);
+  b->lead2 = q[deg];
   if (deg == 0) return;
   n = arclen_quartic(q[4], q[3], q[2], q[1], q[0], re, im);
   for (k = 0; k < n; k++) z[k] = re[k] + I * im[k];

@@ -34,7 +34,7 @@ double arclen_hodo_chord(const arclen_hodo *h, double a, double b);
 int arclen_hodo_critical(const arclen_hodo *h, double roots[3]);
 int arclen_cubic_roots01(const double p[4], double roots[3]);
 
-/* speed(z)^2 = lead^2 * prod (z - r_k) over the n <= 4 roots r_k of |z'|^2,
+/* speed(z)^2 = lead2 * prod (z - r_k) over the n <= 4 roots r_k of |z'|^2,
 ** a real polynomial of degree 2 deg(z') that is >= 0 on the real line.
 ** Non-real roots (in conjugate pairs, both stored) are branch points of the
 ** speed.  Real roots have even multiplicity (each stored as often as it
@@ -42,7 +42,7 @@ int arclen_cubic_roots01(const double p[4], double roots[3]);
 ** kink where a piece must be cut. */
 typedef struct arclen_branch {
   int n;                    /* number of roots stored, with multiplicity */
-  double lead;              /* leading coefficient of the speed (scaled) */
+  double lead2;             /* the speed's leading coefficient, squared */
   double re[4], im[4];      /* im >= 0; im == 0 marks a real root */
 } arclen_branch;
 

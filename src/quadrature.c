@@ -128,7 +128,7 @@ static void bound_piece(const arclen_branch *br, double c, double hh,
   g = 2 * e + 2 * sqrt(e * (1 + e));          /* rho^2 - 1 */
   rho2 = 1 + g;
   a = hh * sqrt(1 + e);                        /* semi-major axis, t units */
-  prod = br->lead;
+  prod = sqrt(br->lead2);
   for (k = 0; k < np; k++) prod *= d[k] + a;
   pb->m = prod;
   pb->e = e;
@@ -140,7 +140,7 @@ static void bound_piece(const arclen_branch *br, double c, double hh,
   if (prod > 1e-300 && prod < 1e300) {
     pb->logc = rough_log2(prod) + LOG2_ERR;
   } else {                                     /* huge or tiny parts */
-    pb->logc = log2(br->lead) + log2(rho2) - log2(g);
+    pb->logc = 0.5 * log2(br->lead2) + log2(rho2) - log2(g);
     for (k = 0; k < np; k++) pb->logc += log2(d[k] + a);
   }
 }
@@ -269,9 +269,14 @@ static int start(integrator *in, const double *c, int dim, double t0,
   if (!in->cc.ok)                     /* the ellipse bound's target */
     in->logk = rough_log2((32.0 / 15.0) * in->width / in->rtol) -
               rough_log2(in->lest) + 2 * LOG2_ERR;   /* an upper bound */
-  in->lkl = rough_log2(in->br.lead * (4 / 3.14159265358979323846)) +
+  /* lead = sqrt(lead2) and 1/width = 1 or 1/2 taken without a square
+  ** root or a division (they would wait for the roots' and the chords') */
+  in->lkl = 0.5 * rough_log2(in->br.lead2 * (16 / (3.14159265358979323846 *
+                                                   3.14159265358979323846))) +
             LOG2_ERR;
-  in->lgoal = rough_log2(2 * in->rtol * in->lest / in->width) - in->lkl -
+  in->lgoal = rough_log2(2 * in->rtol * in->lest *
+                         (in->width == 1 ? 1 : in->width == 2 ? 0.5
+                                                             : 1 / in->width)) - in->lkl -
               LOG2_ERR;                           /* a lower bound */
   return 1;
 }
