@@ -56,12 +56,14 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
   if (n2 > 0) {
     double dr = (x1 * x1 - y1 * y1) - 4 * (x2 * x0 - y2 * y0);
     double di = 2 * x1 * y1 - 4 * (x2 * y0 + y2 * x0);
-    double r = sqrt(dr * dr + di * di), s = sqrt((r + fabs(dr)) / 2);
+    double r = sqrt(dr * dr + di * di), w = (r + fabs(dr)) / 2, s = sqrt(w);
     double inv2 = 1 / n2, qr, qi, sr, si, nq;
     b->lead2 = n2;
     if (s > 0) {                         /* d = sqrt(D), on the side of A1 */
-      double ur = dr >= 0 ? s : fabs(di) / (2 * s);
-      double ui = dr >= 0 ? di / (2 * s) : copysign(s, di);
+      /* the other part di/(2s) = di s/(2w): 1/(2w) is taken beside s */
+      double o = w > 0x1p-1000 ? di * s * (0.5 / w) : di / (2 * s);
+      double ur = dr >= 0 ? s : fabs(o);
+      double ui = dr >= 0 ? o : copysign(s, di);
       if (x1 * ur + y1 * ui < 0) { ur = -ur; ui = -ui; }
       qr = -(x1 + ur) / 2;
       qi = -(y1 + ui) / 2;
