@@ -23,8 +23,8 @@
 **     |F| <= lead Z x^(1/2) prod_m (q_m + Z x^(1/2)).
 ** Summing over k, sum_{k even >= 2n} |E_n(T_k)| r^(-k-1) dr <= rho_j^(-2n)
 ** C_j(n) s^(-2n-1) ds, with C_j(n) the aliasing tail of ellipse_table.h
-** (at most 3.3 where rho_j/(rho_j - 1) times 32/15, the sum over all k
-** with the crude bound, is 20 for rho = 1.12), and each power of x
+** (3.3 for rho = 1.12, where the sum over all k with 32/15 for every
+** |E_n(T_k)|, (32/15) rho_j/(rho_j - 1), is 20), and each power of x
 ** integrates to a Beta function (tabulated, gauss_tables.c):
 **     E <= hh (4 / pi) lead sum_j rho_j^(-2n) C_j(n)
 **                 sum_i sym_j[i] Z_j^(i+1) B((i+1)/2 + 1, 2n - (i+1)/2).
@@ -74,8 +74,8 @@ static double exp2_above(double x) {
 ** 2^k (1 + f/2) for x = 2^2k (1 + f) and 2^k (3/2 + f/2) for x = 2^(2k+1)
 ** (1 + f), and (1 + f/2)^2 >= 1 + f, (3/2 + f/2)^2 - 2 (1 + f) = (1/2 -
 ** f/2)^2 >= 0; the 1 rounds the halving up.  Zero and subnormals come out
-** above their root.  No square root for the distances between branch
-** points, which only scale the bound (the bound's own roots are exact). */
+** above their root.  For the distances between branch points, which only
+** scale the bound (the ellipse's, where a - 1 cancels, take sqrt). */
 static double sqrt_above(double x) {
   uint64_t u;
   memcpy(&u, &x, sizeof u);

@@ -223,7 +223,7 @@ static void push(integrator *in, double a, double b, int depth) {
 static int start(integrator *in, const double *c, int dim, double t0,
                  double t1, double rtol) {
   int i, j;
-  double prev;
+  double prev, iw;
   /* h, br and cc are filled below; the stack is filled by push() before
   ** pop reads it */
   in->lest = in->logk = in->lgoal = in->err = 0;
@@ -269,14 +269,13 @@ static int start(integrator *in, const double *c, int dim, double t0,
   if (!in->cc.ok)                     /* the ellipse bound's target */
     in->logk = rough_log2((32.0 / 15.0) * in->width / in->rtol) -
               rough_log2(in->lest) + 2 * LOG2_ERR;   /* an upper bound */
-  /* lead = sqrt(lead2) and 1/width = 1 or 1/2 taken without a square
-  ** root or a division (they would wait for the roots' and the chords') */
+  /* the lead's square root and 1/width (1 or 1/2) go into the logs: a
+  ** square root and a division fewer */
   in->lkl = 0.5 * rough_log2(in->br.lead2 * (16 / (3.14159265358979323846 *
                                                    3.14159265358979323846))) +
             LOG2_ERR;
-  in->lgoal = rough_log2(2 * in->rtol * in->lest *
-                         (in->width == 1 ? 1 : in->width == 2 ? 0.5
-                                                             : 1 / in->width)) - in->lkl -
+  iw = in->width == 1 ? 1 : in->width == 2 ? 0.5 : 1 / in->width;
+  in->lgoal = rough_log2(2 * in->rtol * in->lest * iw) - in->lkl -
               LOG2_ERR;                           /* a lower bound */
   return 1;
 }
