@@ -20,19 +20,12 @@
 static double curves[8 * NCURVES];
 static double ratios[MAXRATIOS], chosen[NCURVES], oracle[NCURVES];
 
-/* The bound of the n-point rule on [0, 1] in scaled units: hh (4/pi) lead
-** times the sum over pairs of 2^(-n lam) C(n) sum_i sym Z^(i+1) beta(n). */
+/* The bound of the n-point rule on [0, 1] in scaled units: the method's
+** own (arclen_cut_ratio at 2^0) times its common factor hh (4/pi) lead. */
 static double bound_at(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
                        double lead, int n) {
-  double sum = 0;
-  int j, i;
-  for (j = 0; j < pb->nt; j++) {
-    double s = 0, zp = pb->z[j];
-    for (i = 0; i < 4; i++, zp *= pb->z[j])
-      s += cc->sym[j][i] * arclen_gauss_beta[i][n] * zp;
-    sum += exp2(-n * pb->lam[j]) * (n >= 32 ? pb->cref[j] : pb->cc[j]) * s;
-  }
-  return 0.5 * (4 / 3.14159265358979323846) * lead * sum;
+  return arclen_cut_ratio(cc, pb, 0, n) * 0.5 * (4 / 3.14159265358979323846) *
+         lead;
 }
 
 int main(void) {

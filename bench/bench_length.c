@@ -29,8 +29,6 @@ static double half_time(const double *c, double rtol) {
 }
 
 #define NMEASURES 5
-
-#define NMEASURES 5
 #define BLOCK 50        /* curves timed by one measure before the next */
 
 /* Per-curve ns of every measure, the measures taken in turn on each block

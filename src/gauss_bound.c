@@ -174,10 +174,10 @@ static double term_log2(const arclen_cut_curve *cc,
 
 /* The ellipse's quantities for x = a - 1 (rounded down) from the table:
 ** lines on x's cell (ellipse_table.h), no square root or division on the
-** way to the order; *cref gets C(REF_ORDER).  0 when x lies outside the
-** table, or is 0 or NaN (its bits then give no cell). */
-static int from_table(double am1, double sqrthh, arclen_cut_piece *pb, int j,
-                      double *cref) {
+** way to the order.  0 when x lies outside the table, or is 0 or NaN (its
+** bits then give no cell). */
+static int from_table(double am1, double sqrthh, arclen_cut_piece *pb,
+                      int j) {
   const arclen_ellipse_cell *e;
   uint64_t u, k;
   double x0, dx;
@@ -191,7 +191,7 @@ static int from_table(double am1, double sqrthh, arclen_cut_piece *pb, int j,
   pb->lam[j] = e->lam + dx * e->dlam;
   pb->ilam[j] = e->ilam + dx * e->dilam;
   pb->cc[j] = e->c2 + dx * e->dc2;
-  *cref = e->cref + dx * e->dcref;
+  pb->cref[j] = e->cref + dx * e->dcref;
   pb->z[j] = sqrthh * (e->sa + dx * e->dsa);
   return 1;
 }
@@ -201,7 +201,7 @@ static int from_table(double am1, double sqrthh, arclen_cut_piece *pb, int j,
 ** so x is rounded down by the sum's rounding (r1, r2 are each within 2
 ** ulps), and rho is never above the true one; g = rho^2 - 1 = 2 b rho. */
 static void from_formulas(double am1, double s12, double hh,
-                          arclen_cut_piece *pb, int j, double *cref) {
+                          arclen_cut_piece *pb, int j) {
   const double *al = arclen_gauss_alias;
   double b, rho, g, r;
   if (!(am1 > 0)) am1 = 0;             /* on the interval, or NaN */
@@ -224,7 +224,7 @@ static void from_formulas(double am1, double s12, double hh,
   r = 1 / (1 + g);
   pb->cc[j] = (al[0] + al[1] * r + (al[2] * r * r + (32.0 / 15) * r / rho) *
                ((1 + g) / g)) * (1 + 0x1p-44);
-  *cref = pb->cc[j];
+  pb->cref[j] = pb->cc[j];
   pb->z[j] = sqrt(hh * s12 * (0.5 + 0x1p-50));   /* a rounded up */
 }
 
@@ -249,7 +249,7 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
     ** it is rounded down by the sum's rounding (r1, r2 are each within 2
     ** ulps), and all else is taken from it, from the table or the formulas,
     ** each erring on the safe side. */
-    double dr = cc->re[j] - c, im = cc->im[j], cref;
+    double dr = cc->re[j] - c, im = cc->im[j];
     if (fabs(dr) + im > FAR_PAIR * hh) {
       /* Far from the piece (|z| >= 2^39; for a piece of subnormal width u
       ** and v would overflow): rho >= a >= |z| >= max(|dr|, im)/hh, so
@@ -257,7 +257,7 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
       ** hh bounds Z^2. */
       double dmax = fabs(dr) > im ? fabs(dr) : im;
       pb->lam[j] = 2 * (rough_log2(dmax) - rough_log2(hh) - 2 * LOG2_ERR);
-      pb->cc[j] = cref = arclen_gauss_alias[0] * (1 + 0x1p-40);
+      pb->cc[j] = pb->cref[j] = arclen_gauss_alias[0] * (1 + 0x1p-40);
       pb->z[j] = sqrt((fabs(dr) + im + hh) * (1 + 0x1p-50));
       pb->ilam[j] = 1 / pb->lam[j];
     } else {
@@ -265,19 +265,19 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
       double r1 = sqrt((u - 1) * (u - 1) + v * v);
       double r2 = sqrt((u + 1) * (u + 1) + v * v), s12 = r1 + r2;
       double am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50;
-      if (!from_table(am1, sqrthh, pb, j, &cref))
-        from_formulas(am1, s12, hh, pb, j, &cref);
+      if (!from_table(am1, sqrthh, pb, j))
+        from_formulas(am1, s12, hh, pb, j);
     }
     /* log2 of term j's sum at REF_ORDER (Beta integrals taken in
     ** prepare), from above */
-    pb->cref[j] = cref;
-    pb->lref[j] = log2_above(cref * horner_z(cc->symref[j], pb->z[j]));
+    pb->lref[j] = log2_above(pb->cref[j] *
+                             horner_z(cc->symref[j], pb->z[j]));
   }
 }
 
 /* The bound at order n over 2^lgoal. */
-static double ratio_at(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
-                       double lgoal, int n) {
+double arclen_cut_ratio(const arclen_cut_curve *cc,
+                        const arclen_cut_piece *pb, double lgoal, int n) {
   double r = 0;
   int j;
   for (j = 0; j < pb->nt; j++)
@@ -337,8 +337,8 @@ int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
     n = order_at(pb, l, lgoal);
   }
   if (n < 2 * m)                         /* below all: the sum itself */
-    for (; n < 2 * m && ratio_at(cc, pb, lgoal, n) > 1; n++) continue;
+    while (n < 2 * m && arclen_cut_ratio(cc, pb, lgoal, n) > 1) n++;
   if (n > nmax) return 0;
-  if (ratio) *ratio = ratio_at(cc, pb, lgoal, n);
+  if (ratio) *ratio = arclen_cut_ratio(cc, pb, lgoal, n);
   return n;
 }

@@ -68,6 +68,9 @@ typedef struct arclen_cut_piece {
 
 void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
                       arclen_cut_piece *pb);
+/* The bound at order n (2 <= n <= ARCLEN_GAUSS_MAX) over 2^lgoal. */
+double arclen_cut_ratio(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
+                        double lgoal, int n);
 /* An order n in [2, nmax] whose bound is at most 2^lgoal (lgoal includes
 ** log2 of the common factor), the least or within a point of it; 0 if
 ** none.  When ratio is not NULL it gets the bound over 2^lgoal there. */

@@ -212,6 +212,14 @@ static void push(integrator *in, double a, double b, int depth) {
   bound_span(in, &in->stack[in->top++], a, b, depth);
 }
 
+/* The ends of first piece i (0 <= i <= nmin), between the feet. */
+static double first_from(const integrator *in, int i) {
+  return i ? in->mins[i - 1] : in->t0;
+}
+static double first_to(const integrator *in, int i) {
+  return i < in->nmin ? in->mins[i] : in->t1;
+}
+
 /* Set up: the cuts are the feet of the branch points near [t0, t1] (the
 ** real part of each conjugate pair, and each real root): as a branch point
 ** nears the axis the speed dips to a minimum (a near-cusp) right below it,
@@ -223,7 +231,7 @@ static void push(integrator *in, double a, double b, int depth) {
 static int start(integrator *in, const double *c, int dim, double t0,
                  double t1, double rtol) {
   int i, j;
-  double prev, iw;
+  double iw;
   /* h, br and cc are filled below; the stack is filled by push() before
   ** pop reads it */
   in->lest = in->logk = in->lgoal = in->err = 0;
@@ -254,12 +262,8 @@ static int start(integrator *in, const double *c, int dim, double t0,
   }
   in->t0 = t0;
   in->t1 = t1;
-  prev = t0;
-  for (i = 0; i <= in->nmin; i++) {
-    double next = i < in->nmin ? in->mins[i] : t1;
-    in->lest += arclen_hodo_chord(&in->h, prev, next);
-    prev = next;
-  }
+  for (i = 0; i <= in->nmin; i++)
+    in->lest += arclen_hodo_chord(&in->h, first_from(in, i), first_to(in, i));
   /* Zero chords between every pair of cuts but a moving point: the curve
   ** returns to where it was; bound L below by a coarse rule. */
   if (!(in->lest > 0))
@@ -379,9 +383,8 @@ static int next_piece(integrator *in, double *from, double *to, double *len,
 /* The first pieces, between the feet, in increasing t. */
 static void push_initial(integrator *in) {
   int i;
-  push(in, in->nmin ? in->mins[in->nmin - 1] : in->t0, in->t1, 0);
-  for (i = in->nmin - 1; i >= 0; i--)
-    push(in, i ? in->mins[i - 1] : in->t0, in->mins[i], 0);
+  for (i = in->nmin; i >= 0; i--)      /* the stack pops the first first */
+    push(in, first_from(in, i), first_to(in, i), 0);
 }
 
 /* sum plus a first piece that no order up to NMAX meets, cut on the
@@ -409,8 +412,7 @@ static double integrate(integrator *in) {
                 : integrate_cut(in, &s[0], 0);
   }
   for (i = 0; i <= in->nmin; i++) {
-    bound_span(in, &s[i], i ? in->mins[i - 1] : in->t0,
-               i < in->nmin ? in->mins[i] : in->t1, 0);
+    bound_span(in, &s[i], first_from(in, i), first_to(in, i), 0);
     r[i] = span_rule(in, &s[i], &err[i]);
   }
   for (i = 0; i <= in->nmin; i++)
