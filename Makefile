@@ -5,6 +5,7 @@
 #   make test            the spec suite under Lua 5.4 (ends "N passed, N failed")
 #   make demo            Henkel's six arcs by every method
 #   make bench           speed ratios within one run
+#   make bench-icount    instructions per call under callgrind (valgrind)
 #   make install PREFIX=/usr/local
 
 LUA ?= 5.4
@@ -38,7 +39,7 @@ MODULE = $(OUT)/arclen.so
 LIBDIR = $(PREFIX)/lib/lua/$(LUA_ABI)
 SHAREDIR = $(PREFIX)/share/lua/$(LUA_ABI)
 
-.PHONY: all lib test deps demo bench install uninstall clean
+.PHONY: all lib test deps demo bench bench-icount install uninstall clean
 
 all: $(MODULE)
 
@@ -75,6 +76,9 @@ demo: deps $(MODULE)
 
 bench: $(BUILD)/libarclen.a
 	$(MAKE) -C bench run
+
+bench-icount: $(BUILD)/libarclen.a
+	$(MAKE) -C bench icount
 
 install: $(MODULE)
 	mkdir -p $(DESTDIR)$(LIBDIR) $(DESTDIR)$(SHAREDIR)/arclen $(DESTDIR)$(PREFIX)/bin

@@ -1,0 +1,62 @@
+/*
+** bench_icount.c -- one measure of bench_length over its 3000 random
+** curves, for callgrind (bench/icount.sh): instructions are counted only
+** inside measured(), so set-up outside it (the pieces of each curve, found
+** with info) costs nothing.  Instruction counts do not drift with the
+** machine's state as times do, and they tell where a method's time goes
+** when its code is bound by how many instructions issue, not by latency.
+**
+**   bench_icount gl24 | one | multi | all | all15
+**
+** gl24: the fixed 24-point rule on every curve; one, multi: the default
+** method at tol 1e-12 on the curves it integrates in one piece, in more;
+** all, all15: on every curve at tol 1e-12, 1e-15.  Prints the number of
+** calls measured.
+*/
+#include <stdio.h>
+#include <string.h>
+
+#include "arclen.h"
+#include "bench_util.h"
+
+#define NCURVES 3000
+
+static double curves[8 * NCURVES];
+static volatile double sink;
+
+/* Not inlined: callgrind collects by this function's name. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+static double measured(const double *c, int gl24, double rtol) {
+  return gl24 ? arclen_length_gl(c, 2, 24) : arclen_length(c, rtol);
+}
+
+static long pieces_of(const double *c) {
+  arclen_opts o;
+  arclen_info info;
+  double v;
+  arclen_opts_init(&o);
+  arclen_length_gauss(c, 2, &o, &v, &info);
+  return info.pieces;
+}
+
+int main(int argc, char **argv) {
+  const char *mode = argc > 1 ? argv[1] : "";
+  int gl24 = strcmp(mode, "gl24") == 0, one = strcmp(mode, "one") == 0;
+  int multi = strcmp(mode, "multi") == 0, all15 = strcmp(mode, "all15") == 0;
+  int i, calls = 0;
+  if (!gl24 && !one && !multi && !all15 && strcmp(mode, "all") != 0) {
+    fprintf(stderr, "usage: bench_icount gl24|one|multi|all|all15\n");
+    return 2;
+  }
+  bench_random_curves(curves, NCURVES, 20261121);
+  for (i = 0; i < NCURVES; i++) {
+    const double *c = curves + 8 * i;
+    if ((one || multi) && (pieces_of(c) > 1) != multi) continue;
+    sink = measured(c, gl24, all15 ? 1e-15 : 1e-12);
+    calls++;
+  }
+  printf("%d\n", calls);
+  return 0;
+}
