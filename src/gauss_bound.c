@@ -114,7 +114,7 @@ void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc) {
   cc->ok = 1;
   cc->has_real = 0;
   cc->npair = 0;
-  for (k = 0; k < br->n; k++)
+  for (k = 0; k < br->n; k += 2)      /* k + 1 holds the conjugate */
     if (!(fabs(br->re[k]) <= FAR_ROOT && br->im[k] <= FAR_ROOT)) cc->ok = 0;
   if (!cc->ok) return;
   if (br->n == 4) {          /* between the pairs: |R1 - R2|, |R1 - conj R2| */
@@ -124,7 +124,7 @@ void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc) {
     qx[1] = sqrt_hypot_above(dx, dp);
   }
   for (k = 0; k < br->n; k += 2) {
-    double q0, *sym;
+    double q0, sym[4];
     if (br->im[k] == 0) {                /* a real root: no branch point */
       cc->has_real = 1;
       continue;
@@ -132,7 +132,6 @@ void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc) {
     j = cc->npair++;
     cc->re[j] = br->re[k];
     cc->im[j] = br->im[k];
-    sym = cc->sym[j];
     q0 = sqrt_above(2 * br->im[k]);      /* to the conjugate */
     /* Z prod_m (q_m + Z) = sum_i e_{nq - i}(q) Z^(i+1) */
     if (br->n == 2) {
@@ -145,8 +144,10 @@ void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc) {
       sym[2] = q0 + qx[0] + qx[1];
       sym[3] = 1;
     }
-    for (i = 0; i < 4; i++)
+    for (i = 0; i < 4; i++) {   /* from the local copy: no stores read back */
+      cc->sym[j][i] = sym[i];
       cc->symref[j][i] = sym[i] * arclen_gauss_beta[i][REF_ORDER];
+    }
   }
 }
 
