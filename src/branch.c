@@ -8,7 +8,6 @@
 */
 #include <complex.h>
 #include <math.h>
-#include <string.h>
 
 #include "arclen.h"
 #include "cubic.h"
@@ -24,10 +23,15 @@
 
 #define TWO_PI 6.283185307179586476925286766559
 
-/* Store z and its conjugate (a real root: twice). */
-static void add_pair(arclen_branch *b, double complex z, double rtol) {
+/* Store z and its conjugate (a real root: twice).  Inline: the 2D path
+** runs on every default-method call. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void add_pair(arclen_branch *b, double complex z, double rtol) {
   double re = creal(z), im = fabs(cimag(z));
-  if (b->n > 2 || !isfinite(re) || !isfinite(im)) return;
+  /* x - x is 0 for finite x, NaN for inf and NaN: one test for both */
+  if (b->n > 2 || !((re - re) + (im - im) == 0)) return;
   if (im <= rtol * (1 + fabs(re))) im = 0;
   b->re[b->n] = b->re[b->n + 1] = re;
   b->im[b->n] = b->im[b->n + 1] = im;
@@ -137,6 +141,11 @@ static double complex near_cusp(const arclen_hodo *h, double complex z) {
 ** as in elliptic3d.c (CLOSE_REL), where the roots are then recomputed. */
 #define CLUSTER_REL 0.05
 
+/* Not inlined: its frame and saved registers would be set up on the 2D
+** path too. */
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
 static void branch3(const arclen_hodo *h, arclen_branch *b) {
   double q[5] = {0, 0, 0, 0, 0}, re[4], im[4];
   double complex z[4], rep[4];
@@ -194,7 +203,8 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
 }
 
 void arclen_branch_points(const arclen_hodo *h, arclen_branch *b) {
-  memset(b, 0, sizeof *b);
+  b->n = 0;                 /* re[k], im[k] are read for k < n only */
+  b->lead2 = 0;
   if (h->zero) return;
   if (h->dim == 2) branch2(h, b);
   else branch3(h, b);
