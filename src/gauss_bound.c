@@ -41,6 +41,14 @@
 #include "ellipse_table.h"
 #include "gauss_tables.h"
 
+/* For the helpers on the path to the first evaluation: one call each
+** would cost more than its body. */
+#if defined(__GNUC__)
+#define ALWAYS_INLINE __attribute__((always_inline)) inline
+#else
+#define ALWAYS_INLINE inline
+#endif
+
 #define rough_log2 arclen_rough_log2
 #define LOG2_ERR ARCLEN_LOG2_ERR
 
@@ -107,47 +115,64 @@ static double log2_above(double x) {
   return (double)(int64_t)u * 0x1p-52 - 1023 + 0.0861;
 }
 
+/* Whether root k (and its conjugate, k + 1) is near enough for this bound. */
+static int root_near(const arclen_branch *br, int k) {
+  return fabs(br->re[k]) <= FAR_ROOT && br->im[k] <= FAR_ROOT;
+}
+
+/* Branch pair j of cc from its upper root re + i im, with qx the square
+** roots of its distances to the other pair's roots (NULL: no other pair):
+** sym holds Z prod_m (q_m + Z) = sum_i e_{nq - i}(q) Z^(i+1), q_0 the root
+** of the distance to its conjugate; symref the same times the Beta
+** integrals at the reference order. */
+static ALWAYS_INLINE void set_pair(arclen_cut_curve *cc, int j, double re,
+                                   double im, const double *qx) {
+  double q0 = sqrt_above(2 * im), sym[4];
+  int i;
+  cc->re[j] = re;
+  cc->im[j] = im;
+  if (!qx) {
+    sym[0] = q0;
+    sym[1] = 1;
+    sym[2] = sym[3] = 0;
+  } else {
+    sym[0] = q0 * qx[0] * qx[1];
+    sym[1] = q0 * (qx[0] + qx[1]) + qx[0] * qx[1];
+    sym[2] = q0 + qx[0] + qx[1];
+    sym[3] = 1;
+  }
+  for (i = 0; i < 4; i++) {   /* from the local copy: no stores read back */
+    cc->sym[j][i] = sym[i];
+    cc->symref[j][i] = sym[i] * arclen_gauss_beta[i][REF_ORDER];
+  }
+}
+
+/* Between the pairs of roots 0 and 2: sqrt |R1 - R2|, sqrt |R1 - conj R2|. */
+static ALWAYS_INLINE void pair_distances(const arclen_branch *br,
+                                         double qx[2]) {
+  double dx = br->re[2] - br->re[0];
+  double dm = br->im[2] - br->im[0], dp = br->im[2] + br->im[0];
+  qx[0] = sqrt_hypot_above(dx, dm);
+  qx[1] = sqrt_hypot_above(dx, dp);
+}
+
 void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc) {
   double qx[2] = {0, 0};
-  int k, j, i;
+  int k;
   cc->br = br;
   cc->ok = 1;
   cc->has_real = 0;
   cc->npair = 0;
   for (k = 0; k < br->n; k += 2)      /* k + 1 holds the conjugate */
-    if (!(fabs(br->re[k]) <= FAR_ROOT && br->im[k] <= FAR_ROOT)) cc->ok = 0;
+    if (!root_near(br, k)) cc->ok = 0;
   if (!cc->ok) return;
-  if (br->n == 4) {          /* between the pairs: |R1 - R2|, |R1 - conj R2| */
-    double dx = br->re[2] - br->re[0];
-    double dm = br->im[2] - br->im[0], dp = br->im[2] + br->im[0];
-    qx[0] = sqrt_hypot_above(dx, dm);
-    qx[1] = sqrt_hypot_above(dx, dp);
-  }
+  if (br->n == 4) pair_distances(br, qx);
   for (k = 0; k < br->n; k += 2) {
-    double q0, sym[4];
     if (br->im[k] == 0) {                /* a real root: no branch point */
       cc->has_real = 1;
       continue;
     }
-    j = cc->npair++;
-    cc->re[j] = br->re[k];
-    cc->im[j] = br->im[k];
-    q0 = sqrt_above(2 * br->im[k]);      /* to the conjugate */
-    /* Z prod_m (q_m + Z) = sum_i e_{nq - i}(q) Z^(i+1) */
-    if (br->n == 2) {
-      sym[0] = q0;
-      sym[1] = 1;
-      sym[2] = sym[3] = 0;
-    } else {
-      sym[0] = q0 * qx[0] * qx[1];
-      sym[1] = q0 * (qx[0] + qx[1]) + qx[0] * qx[1];
-      sym[2] = q0 + qx[0] + qx[1];
-      sym[3] = 1;
-    }
-    for (i = 0; i < 4; i++) {   /* from the local copy: no stores read back */
-      cc->sym[j][i] = sym[i];
-      cc->symref[j][i] = sym[i] * arclen_gauss_beta[i][REF_ORDER];
-    }
+    set_pair(cc, cc->npair++, br->re[k], br->im[k], br->n == 4 ? qx : NULL);
   }
 }
 
@@ -160,7 +185,8 @@ static double horner_z(const double s[4], double z) {
 
 /* Term j of the bound but for 2^(-n lam_j): C_j(2) times the sum over i of
 ** sym_j[i] Z_j^(i+1) and the Beta integral at order n. */
-static double term_sum(const double sym[4], int n, double c, double z) {
+static ALWAYS_INLINE double term_sum(const double sym[4], int n, double c,
+                                     double z) {
   double s[4];
   int i;
   for (i = 0; i < 4; i++) s[i] = sym[i] * arclen_gauss_beta[i][n];
@@ -177,8 +203,8 @@ static double term_log2(const arclen_cut_curve *cc,
 ** lines on x's cell (ellipse_table.h), no square root or division on the
 ** way to the order.  0 when x lies outside the table, or is 0 or NaN (its
 ** bits then give no cell). */
-static int from_table(double am1, double sqrthh, arclen_cut_piece *pb,
-                      int j) {
+static ALWAYS_INLINE int from_table(double am1, double sqrthh,
+                                    arclen_cut_piece *pb, int j) {
   const arclen_ellipse_cell *e;
   uint64_t u, k;
   double x0, dx;
@@ -229,11 +255,53 @@ static void from_formulas(double am1, double s12, double hh,
   pb->z[j] = sqrt(hh * s12 * (0.5 + 0x1p-50));   /* a rounded up */
 }
 
+/* Term j of the bound of the piece [c - hh, c + hh] (inv = 1/hh, sqrthh =
+** sqrt(hh)). */
+static ALWAYS_INLINE void pair_bound(const arclen_cut_curve *cc, int j,
+                                     double c, double hh, double inv,
+                                     double sqrthh, arclen_cut_piece *pb) {
+  /* The Bernstein ellipse through the branch point z = u + iv (piece
+  ** units) has foci +-1, so its semi-major axis is a = (|z - 1| + |z + 1|)/2
+  ** (two square roots side by side).  Next to the interval a - 1 cancels:
+  ** it is rounded down by the sum's rounding (r1, r2 are each within 2
+  ** ulps), and all else is taken from it, from the table or the formulas,
+  ** each erring on the safe side. */
+  double dr = cc->re[j] - c, im = cc->im[j];
+  if (fabs(dr) + im > FAR_PAIR * hh) {
+    /* Far from the piece (|z| >= 2^39; for a piece of subnormal width u
+    ** and v would overflow): rho >= a >= |z| >= max(|dr|, im)/hh, so
+    ** C(n) <= alias[0] + 2^-70, and hh a <= hh (|z| + 1) <= |dr| + im +
+    ** hh bounds Z^2. */
+    double dmax = fabs(dr) > im ? fabs(dr) : im;
+    pb->lam[j] = 2 * (rough_log2(dmax) - rough_log2(hh) - 2 * LOG2_ERR);
+    pb->cc[j] = pb->cref[j] = arclen_gauss_alias[0] * (1 + 0x1p-40);
+    pb->z[j] = sqrt((fabs(dr) + im + hh) * (1 + 0x1p-50));
+    pb->ilam[j] = 1 / pb->lam[j];
+  } else {
+    double u = dr * inv, v = im * inv;
+    double r1 = sqrt((u - 1) * (u - 1) + v * v);
+    double r2 = sqrt((u + 1) * (u + 1) + v * v), s12 = r1 + r2;
+    double am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50;
+    if (!from_table(am1, sqrthh, pb, j))
+      from_formulas(am1, s12, hh, pb, j);
+  }
+  /* log2 of term j's sum at REF_ORDER (Beta integrals taken in
+  ** prepare), from above */
+  pb->lref[j] = log2_above(pb->cref[j] *
+                           horner_z(cc->symref[j], pb->z[j]));
+}
+
+/* 1/hh and sqrt(hh), known for the whole range ([0, 1] or [-1, 1]). */
+static double inverse_of(double hh) {
+  return hh == 0.5 ? 2 : hh == 1 ? 1 : 1 / hh;
+}
+static double sqrt_of(double hh) {
+  return hh == 0.5 ? 0.70710678118654757 : hh == 1 ? 1 : sqrt(hh);
+}
+
 void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
                       arclen_cut_piece *pb) {
-  /* 1/hh and sqrt(hh) of the whole range ([0, 1] or [-1, 1]) are known */
-  double inv = hh == 0.5 ? 2 : hh == 1 ? 1 : 1 / hh;
-  double sqrthh = hh == 0.5 ? 0.70710678118654757 : hh == 1 ? 1 : sqrt(hh);
+  double inv = inverse_of(hh), sqrthh = sqrt_of(hh);
   int j, k;
   pb->nt = cc->npair;
   pb->inside = 0;
@@ -243,37 +311,7 @@ void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
       if (br->im[k] == 0 && fabs(br->re[k] - c) < hh * (1 - 1e-12))
         pb->inside = 1;                  /* a kink: the rule cannot see it */
   }
-  for (j = 0; j < cc->npair; j++) {
-    /* The Bernstein ellipse through the branch point z = u + iv (piece
-    ** units) has foci +-1, so its semi-major axis is a = (|z - 1| + |z + 1|)/2
-    ** (two square roots side by side).  Next to the interval a - 1 cancels:
-    ** it is rounded down by the sum's rounding (r1, r2 are each within 2
-    ** ulps), and all else is taken from it, from the table or the formulas,
-    ** each erring on the safe side. */
-    double dr = cc->re[j] - c, im = cc->im[j];
-    if (fabs(dr) + im > FAR_PAIR * hh) {
-      /* Far from the piece (|z| >= 2^39; for a piece of subnormal width u
-      ** and v would overflow): rho >= a >= |z| >= max(|dr|, im)/hh, so
-      ** C(n) <= alias[0] + 2^-70, and hh a <= hh (|z| + 1) <= |dr| + im +
-      ** hh bounds Z^2. */
-      double dmax = fabs(dr) > im ? fabs(dr) : im;
-      pb->lam[j] = 2 * (rough_log2(dmax) - rough_log2(hh) - 2 * LOG2_ERR);
-      pb->cc[j] = pb->cref[j] = arclen_gauss_alias[0] * (1 + 0x1p-40);
-      pb->z[j] = sqrt((fabs(dr) + im + hh) * (1 + 0x1p-50));
-      pb->ilam[j] = 1 / pb->lam[j];
-    } else {
-      double u = dr * inv, v = im * inv;
-      double r1 = sqrt((u - 1) * (u - 1) + v * v);
-      double r2 = sqrt((u + 1) * (u + 1) + v * v), s12 = r1 + r2;
-      double am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50;
-      if (!from_table(am1, sqrthh, pb, j))
-        from_formulas(am1, s12, hh, pb, j);
-    }
-    /* log2 of term j's sum at REF_ORDER (Beta integrals taken in
-    ** prepare), from above */
-    pb->lref[j] = log2_above(pb->cref[j] *
-                             horner_z(cc->symref[j], pb->z[j]));
-  }
+  for (j = 0; j < cc->npair; j++) pair_bound(cc, j, c, hh, inv, sqrthh, pb);
 }
 
 /* The bound at order n over 2^lgoal. */
@@ -305,8 +343,8 @@ static int order_ceil(double x) {
 ** 63/64 of the goal; a second term must then lie below 1/64 of it, else
 ** each gets half. */
 #define SHARE_LOG2 0.0228         /* log2(64/63) = 0.02272..., rounded up */
-static int order_at(const arclen_cut_piece *pb, const double *l,
-                    double lgoal) {
+static ALWAYS_INLINE int order_at(const arclen_cut_piece *pb,
+                                  const double *l, double lgoal) {
   double n0 = (l[0] - lgoal + SHARE_LOG2) * pb->ilam[0], n1;
   int n;
   if (pb->nt == 1) return order_ceil(n0);
@@ -319,8 +357,9 @@ static int order_at(const arclen_cut_piece *pb, const double *l,
   return order_ceil(n0 > n1 ? n0 : n1);
 }
 
-int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
-                     double lgoal, int nmax, double *ratio) {
+static ALWAYS_INLINE int order_of(const arclen_cut_curve *cc,
+                                  const arclen_cut_piece *pb, double lgoal,
+                                  int nmax, double *ratio) {
   int j, n, m;
   if (pb->inside) return 0;
   if (pb->nt == 0) {                     /* a polynomial: exact from n = 2 */
@@ -333,7 +372,7 @@ int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
   ** bound and too high by about 1.5 log2(n/m) / lam points. */
   n = order_at(pb, pb->lref, lgoal);
   for (m = REF_ORDER / 2; n < 2 * m && m >= 4; m /= 2) {
-    double l[2];
+    double l[2] = {0, 0};   /* l[1] is read only when nt = 2 */
     for (j = 0; j < pb->nt; j++) l[j] = term_log2(cc, pb, j, m);
     n = order_at(pb, l, lgoal);
   }
@@ -342,4 +381,29 @@ int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
   if (n > nmax) return 0;
   if (ratio) *ratio = arclen_cut_ratio(cc, pb, lgoal, n);
   return n;
+}
+
+int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
+                     double lgoal, int nmax, double *ratio) {
+  return order_of(cc, pb, lgoal, nmax, ratio);
+}
+
+int arclen_cut_order_whole(const arclen_branch *br, double c, double hh,
+                           double lgoal, int nmax) {
+  arclen_cut_curve cc;
+  arclen_cut_piece pb;
+  double qx[2];
+  if (br->n != 4 || !(br->im[0] > 0 && br->im[2] > 0)) return 0;
+  if (!root_near(br, 0) || !root_near(br, 2)) return 0;
+  cc.br = br;
+  cc.ok = 1;
+  cc.has_real = 0;
+  cc.npair = pb.nt = 2;
+  pb.inside = 0;
+  pair_distances(br, qx);
+  set_pair(&cc, 0, br->re[0], br->im[0], qx);
+  set_pair(&cc, 1, br->re[2], br->im[2], qx);
+  pair_bound(&cc, 0, c, hh, inverse_of(hh), sqrt_of(hh), &pb);
+  pair_bound(&cc, 1, c, hh, inverse_of(hh), sqrt_of(hh), &pb);
+  return order_of(&cc, &pb, lgoal, nmax, NULL);
 }

@@ -76,5 +76,12 @@ double arclen_cut_ratio(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
 ** none.  When ratio is not NULL it gets the bound over 2^lgoal there. */
 int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
                      double lgoal, int nmax, double *ratio);
+/* The same order for the one piece [c - hh, c + hh] between the branch
+** points br, as arclen_cut_prepare, arclen_cut_bound and arclen_cut_order
+** give it, for the common case -- two branch pairs, no real root, both
+** within reach -- with no record kept between them; 0 when the case is
+** not that (or no order up to nmax will do): the caller takes the three. */
+int arclen_cut_order_whole(const arclen_branch *br, double c, double hh,
+                           double lgoal, int nmax);
 
 #endif

@@ -248,7 +248,6 @@ static int start(integrator *in, const double *c, int dim, double t0,
   }
   if (in->h.zero) return 0;
   arclen_branch_points(&in->h, &in->br);
-  arclen_cut_prepare(&in->br, &in->cc);
   in->rtol = rtol;
   in->width = t1 - t0;
   for (i = 0; i < in->br.n; i += 2) {
@@ -270,9 +269,6 @@ static int start(integrator *in, const double *c, int dim, double t0,
     in->lest = 0.5 * apply_rule(&in->h, rule_at_least(8), t0 + in->width / 2,
                                 in->width / 2);
   if (!(in->lest > 0)) return 0;
-  if (!in->cc.ok)                     /* the ellipse bound's target */
-    in->logk = rough_log2((32.0 / 15.0) * in->width / in->rtol) -
-              rough_log2(in->lest) + 2 * LOG2_ERR;   /* an upper bound */
   /* the lead's square root and 1/width (1 or 1/2) go into the logs: a
   ** square root and a division fewer */
   in->lkl = 0.5 * rough_log2(in->br.lead2 * (16 / (3.14159265358979323846 *
@@ -282,6 +278,17 @@ static int start(integrator *in, const double *c, int dim, double t0,
   in->lgoal = rough_log2(2 * in->rtol * in->lest * iw) - in->lkl -
               LOG2_ERR;                           /* a lower bound */
   return 1;
+}
+
+/* What the pieces' bounds need of the curve (gauss_bound.c), or the
+** ellipse bound's target when a root lies too far for that; taken after
+** start(), by all but the one-piece curves that arclen_cut_order_whole
+** serves. */
+static void prepare_bounds(integrator *in) {
+  arclen_cut_prepare(&in->br, &in->cc);
+  if (!in->cc.ok)
+    in->logk = rough_log2((32.0 / 15.0) * in->width / in->rtol) -
+              rough_log2(in->lest) + 2 * LOG2_ERR;   /* an upper bound */
 }
 
 /* Where to cut a piece: at a foot of a branch point inside it (the one
@@ -406,11 +413,21 @@ static double integrate(integrator *in) {
   const arclen_gauss_rule *r[3];
   int i;
   if (in->nmin == 0) {      /* one piece, two curves in three: no loops */
+    double hh = in->width / 2;
+    int n = in->want_err ? 0 : arclen_cut_order_whole(&in->br, in->t0 + hh,
+                                                       hh, in->lgoal, NMAX);
+    if (n) {
+      in->evals += n;
+      in->pieces++;
+      return apply_rule(&in->h, rule_at_least(n), in->t0 + hh, hh);
+    }
+    prepare_bounds(in);
     bound_span(in, &s[0], in->t0, in->t1, 0);
     r[0] = span_rule(in, &s[0], &err[0]);
     return r[0] ? accept(in, &s[0], r[0], err[0])
                 : integrate_cut(in, &s[0], 0);
   }
+  prepare_bounds(in);
   for (i = 0; i <= in->nmin; i++) {
     bound_span(in, &s[i], first_from(in, i), first_to(in, i), 0);
     r[i] = span_rule(in, &s[i], &err[i]);
@@ -624,6 +641,7 @@ int arclen_time_gauss(const double *c, int dim, double s,
     return ARCLEN_OK;
   }
   in.want_err = info != NULL;
+  prepare_bounds(&in);
   push_initial(&in);
   goal = ldexp(s, -in.h.exp);
   *t = 1;
