@@ -388,22 +388,38 @@ int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
   return order_of(cc, pb, lgoal, nmax, ratio);
 }
 
-int arclen_cut_order_whole(const arclen_branch *br, double c, double hh,
-                           double lgoal, int nmax) {
+static ALWAYS_INLINE int orders_of(const arclen_branch *br, int np,
+                                   const double *c, const double *hh,
+                                   double lgoal, int nmax, int *n) {
   arclen_cut_curve cc;
-  arclen_cut_piece pb;
+  arclen_cut_piece pb[ARCLEN_CUT_PIECES];
   double qx[2];
+  int i;
   if (br->n != 4 || !(br->im[0] > 0 && br->im[2] > 0)) return 0;
   if (!root_near(br, 0) || !root_near(br, 2)) return 0;
   cc.br = br;
   cc.ok = 1;
   cc.has_real = 0;
-  cc.npair = pb.nt = 2;
-  pb.inside = 0;
+  cc.npair = 2;
   pair_distances(br, qx);
   set_pair(&cc, 0, br->re[0], br->im[0], qx);
   set_pair(&cc, 1, br->re[2], br->im[2], qx);
-  pair_bound(&cc, 0, c, hh, inverse_of(hh), sqrt_of(hh), &pb);
-  pair_bound(&cc, 1, c, hh, inverse_of(hh), sqrt_of(hh), &pb);
-  return order_of(&cc, &pb, lgoal, nmax, NULL);
+  for (i = 0; i < np; i++) {      /* the pieces' chains side by side */
+    double inv = inverse_of(hh[i]), sqrthh = sqrt_of(hh[i]);
+    pb[i].nt = 2;
+    pb[i].inside = 0;
+    pair_bound(&cc, 0, c[i], hh[i], inv, sqrthh, &pb[i]);
+    pair_bound(&cc, 1, c[i], hh[i], inv, sqrthh, &pb[i]);
+  }
+  for (i = 0; i < np; i++)
+    if (!(n[i] = order_of(&cc, &pb[i], lgoal, nmax, NULL))) return 0;
+  return 1;
+}
+
+int arclen_cut_orders(const arclen_branch *br, int np, const double *c,
+                      const double *hh, double lgoal, int nmax, int *n) {
+  if (np == 1)            /* two curves in three: the loops unrolled */
+    return orders_of(br, 1, c, hh, lgoal, nmax, n);
+  return np > 1 && np <= ARCLEN_CUT_PIECES &&
+         orders_of(br, np, c, hh, lgoal, nmax, n);
 }

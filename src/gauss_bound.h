@@ -76,12 +76,15 @@ double arclen_cut_ratio(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
 ** none.  When ratio is not NULL it gets the bound over 2^lgoal there. */
 int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
                      double lgoal, int nmax, double *ratio);
-/* The same order for the one piece [c - hh, c + hh] between the branch
-** points br, as arclen_cut_prepare, arclen_cut_bound and arclen_cut_order
-** give it, for the common case -- two branch pairs, no real root, both
-** within reach -- with no record kept between them; 0 when the case is
-** not that (or no order up to nmax will do): the caller takes the three. */
-int arclen_cut_order_whole(const arclen_branch *br, double c, double hh,
-                           double lgoal, int nmax);
+/* The same orders for np <= ARCLEN_CUT_PIECES pieces [c_i - hh_i, c_i +
+** hh_i] between the branch points br, as arclen_cut_prepare,
+** arclen_cut_bound and arclen_cut_order give them, for the common case --
+** two branch pairs, no real root, both within reach -- with no record
+** kept between them: 1 and the orders in n[], or 0 when the case is not
+** that or a piece needs a cut (no order up to nmax will do); the caller
+** then takes the three. */
+#define ARCLEN_CUT_PIECES 3
+int arclen_cut_orders(const arclen_branch *br, int np, const double *c,
+                      const double *hh, double lgoal, int nmax, int *n);
 
 #endif

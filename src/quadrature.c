@@ -405,22 +405,32 @@ static double integrate_cut(integrator *in, const span *s, double sum) {
 
 /* The whole integral.  The first pieces (at most three, between the feet)
 ** take their bounds and orders together, so that their chains of square
-** roots and divisions run side by side; then the rules.  Most curves need
-** no cut beyond the feet and never touch the stack. */
+** roots and divisions run side by side; then the rules.  Most curves get
+** their orders straight from the branch points (arclen_cut_orders); the
+** rest -- the error asked for, a real or far root, a piece to be cut --
+** take the records of prepare_bounds, and the stack for the cuts. */
 static double integrate(integrator *in) {
   span s[3];
   double err[3], sum = 0;
   const arclen_gauss_rule *r[3];
   int i;
-  if (in->nmin == 0) {      /* one piece, two curves in three: no loops */
-    double hh = in->width / 2;
-    int n = in->want_err ? 0 : arclen_cut_order_whole(&in->br, in->t0 + hh,
-                                                       hh, in->lgoal, NMAX);
-    if (n) {
-      in->evals += n;
-      in->pieces++;
-      return apply_rule(&in->h, rule_at_least(n), in->t0 + hh, hh);
+  if (!in->want_err) {
+    double c[3], hh[3];
+    int n[3];
+    for (i = 0; i <= in->nmin; i++) {
+      hh[i] = (first_to(in, i) - first_from(in, i)) / 2;
+      c[i] = first_from(in, i) + hh[i];
     }
+    if (arclen_cut_orders(&in->br, in->nmin + 1, c, hh, in->lgoal, NMAX, n)) {
+      for (i = 0; i <= in->nmin; i++) {
+        in->evals += n[i];
+        in->pieces++;
+        sum += apply_rule(&in->h, rule_at_least(n[i]), c[i], hh[i]);
+      }
+      return sum;
+    }
+  }
+  if (in->nmin == 0) {      /* one piece, two curves in three: no loops */
     prepare_bounds(in);
     bound_span(in, &s[0], in->t0, in->t1, 0);
     r[0] = span_rule(in, &s[0], &err[0]);
