@@ -30,11 +30,12 @@
 
 /* The range is cut at the foot of a branch point within FOOTCUT of its
 ** width; a piece that no order up to NMAX meets is cut GRADE times its
-** nearest branch point's distance from the near end.  A piece costs about
-** as much as 20 evaluations (its bound and order, the stack), so few long
-** pieces beat many short ones: tuned for time on the bench's random curves
+** nearest branch point's distance from the near end.  A second piece costs
+** about as much as 30 evaluations (its bounds, the estimates below the
+** reference order, a chord, a rule: make bench-icount), so few long pieces
+** beat many short ones: tuned for time on the bench's random curves
 ** (FOOTCUT 0.2, GRADE 4, NMAX 48: 43 evaluations in 2.4 pieces; these: 59
-** in 1.5 and 10% less time). */
+** in 1.5 and 10% less time; FOOTCUT 0.08 or 0.1 slows the median). */
 #define FOOTCUT 0.05
 #define GRADE 8.0
 #define NMAX 128         /* highest order used before cutting instead */
