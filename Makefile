@@ -6,6 +6,7 @@
 #   make demo            Henkel's six arcs by every method
 #   make bench           speed ratios within one run
 #   make bench-icount    instructions per call under callgrind (valgrind)
+#   make bench-explore   where the median curve could save points
 #   make install PREFIX=/usr/local
 
 LUA ?= 5.4
@@ -39,7 +40,7 @@ MODULE = $(OUT)/arclen.so
 LIBDIR = $(PREFIX)/lib/lua/$(LUA_ABI)
 SHAREDIR = $(PREFIX)/share/lua/$(LUA_ABI)
 
-.PHONY: all lib test deps demo bench bench-icount install uninstall clean
+.PHONY: all lib test deps demo bench bench-icount bench-explore install uninstall clean
 
 all: $(MODULE)
 
@@ -79,6 +80,9 @@ bench: $(BUILD)/libarclen.a
 
 bench-icount: $(BUILD)/libarclen.a
 	$(MAKE) -C bench icount
+
+bench-explore: $(BUILD)/libarclen.a
+	$(MAKE) -C bench explore
 
 install: $(MODULE)
 	mkdir -p $(DESTDIR)$(LIBDIR) $(DESTDIR)$(SHAREDIR)/arclen $(DESTDIR)$(PREFIX)/bin
