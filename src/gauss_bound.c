@@ -388,6 +388,10 @@ int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
   return order_of(cc, pb, lgoal, nmax, ratio);
 }
 
+/* arclen_cut_prepare for the common case (two complex pairs within reach,
+** so no real root and no far one), then arclen_cut_bound and
+** arclen_cut_order for each piece, in one frame: the records stay local,
+** and the compiler keeps most of them in registers. */
 static ALWAYS_INLINE int orders_of(const arclen_branch *br, int np,
                                    const double *c, const double *hh,
                                    double lgoal, int nmax, int *n) {
