@@ -86,13 +86,10 @@ static double rho_through(double complex u) {
   return a + sqrt(a * a - 1);
 }
 
-/* The speed at t from the control points (curve units). */
+/* The speed at t (curve units). */
 static double speed(const double *c, double t) {
-  double s = 1 - t, d[2];
-  int k;
-  for (k = 0; k < 2; k++)
-    d[k] = 3 * (s * s * (c[2 + k] - c[k]) + 2 * s * t * (c[4 + k] - c[2 + k]) +
-                t * t * (c[6 + k] - c[4 + k]));
+  double d[2];
+  arclen_derivative(c, 2, t, d);
   return hypot(d[0], d[1]);
 }
 

@@ -182,7 +182,7 @@ typedef struct integrator {
   double logk;                /* log2((32/15) width / (rtol lest)) */
   double lgoal;               /* log2(2 rtol lest / (width lead 4/pi)) */
   double lkl;                 /* log2(lead 4/pi), rounded up */
-  double mins[2];             /* feet of near branch points in (t0, t1) */
+  double mins[ARCLEN_CUT_PIECES - 1];  /* feet of near branch points */
   int nmin;
   int top;
   long evals, pieces, splits;
@@ -283,8 +283,8 @@ static int start(integrator *in, const double *c, int dim, double t0,
 
 /* What the pieces' bounds need of the curve (gauss_bound.c), or the
 ** ellipse bound's target when a root lies too far for that; taken after
-** start(), by all but the one-piece curves that arclen_cut_order_whole
-** serves. */
+** start() by the curves whose first pieces arclen_cut_orders does not
+** serve, and by time. */
 static void prepare_bounds(integrator *in) {
   arclen_cut_prepare(&in->br, &in->cc);
   if (!in->cc.ok)
@@ -411,13 +411,13 @@ static double integrate_cut(integrator *in, const span *s, double sum) {
 ** rest -- the error asked for, a real or far root, a piece to be cut --
 ** take the records of prepare_bounds, and the stack for the cuts. */
 static double integrate(integrator *in) {
-  span s[3];
-  double err[3], sum = 0;
-  const arclen_gauss_rule *r[3];
+  span s[ARCLEN_CUT_PIECES];
+  double err[ARCLEN_CUT_PIECES], sum = 0;
+  const arclen_gauss_rule *r[ARCLEN_CUT_PIECES];
   int i;
   if (!in->want_err) {
-    double c[3], hh[3];
-    int n[3];
+    double c[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES];
+    int n[ARCLEN_CUT_PIECES];
     for (i = 0; i <= in->nmin; i++) {
       hh[i] = (first_to(in, i) - first_from(in, i)) / 2;
       c[i] = first_from(in, i) + hh[i];
@@ -430,13 +430,6 @@ static double integrate(integrator *in) {
       }
       return sum;
     }
-  }
-  if (in->nmin == 0) {      /* one piece, two curves in three: no loops */
-    prepare_bounds(in);
-    bound_span(in, &s[0], in->t0, in->t1, 0);
-    r[0] = span_rule(in, &s[0], &err[0]);
-    return r[0] ? accept(in, &s[0], r[0], err[0])
-                : integrate_cut(in, &s[0], 0);
   }
   prepare_bounds(in);
   for (i = 0; i <= in->nmin; i++) {
