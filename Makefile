@@ -7,6 +7,7 @@
 #   make bench           speed ratios within one run
 #   make bench-icount    instructions per call under callgrind (valgrind)
 #   make bench-explore   where the median curve could save points
+#   make bench-latency   each set-up step's time as a dependent chain
 #   make install PREFIX=/usr/local
 
 LUA ?= 5.4
@@ -40,7 +41,7 @@ MODULE = $(OUT)/arclen.so
 LIBDIR = $(PREFIX)/lib/lua/$(LUA_ABI)
 SHAREDIR = $(PREFIX)/share/lua/$(LUA_ABI)
 
-.PHONY: all lib test deps demo bench bench-icount bench-explore install uninstall clean
+.PHONY: all lib test deps demo bench bench-icount bench-explore bench-latency install uninstall clean
 
 all: $(MODULE)
 
@@ -83,6 +84,9 @@ bench-icount: $(BUILD)/libarclen.a
 
 bench-explore: $(BUILD)/libarclen.a
 	$(MAKE) -C bench explore
+
+bench-latency: $(BUILD)/libarclen.a
+	$(MAKE) -C bench latency
 
 install: $(MODULE)
 	mkdir -p $(DESTDIR)$(LIBDIR) $(DESTDIR)$(SHAREDIR)/arclen $(DESTDIR)$(PREFIX)/bin
