@@ -128,22 +128,28 @@ static int oracle(const double *c, double len, const cubic_map *m) {
   return n;
 }
 
+/* The least order whose ellipse bound (64/15) M rho^(2-2n) / (rho^2 - 1)
+** meets 1e-12 len (M and len in the same units). */
+static int bound_order(double big, double rho, double len) {
+  int n;
+  for (n = 2; n < 200; n++)
+    if ((64.0 / 15.0) * big * pow(rho, 2 - 2 * n) / (rho * rho - 1) <=
+        1e-12 * len)
+      break;
+  return n;
+}
+
 /* The order the ellipse bound asks for with M bounded by the triangle
 ** inequality (see the head), in scaled units (h), on the ellipse rho. */
 static int crude_order(const arclen_hodo *h, const arclen_branch *b,
                        const cubic_map *m, double rho, double len) {
   double a = (rho + 1 / rho) / 2, r = a + fabs(m->up);
   double far = m->a * r + m->k * r * r * r, big = sqrt(b->lead2);
-  int k, n;
+  int k;
   for (k = 0; k < b->n; k++)   /* |map(u) - r_k| <= far + |p - r_k| */
     big *= sqrt(far + hypot(m->p - b->re[k], b->im[k]));
   big *= m->a + 3 * m->k * r * r;
-  len = ldexp(len, -h->exp);
-  for (n = 2; n < 200; n++)
-    if ((64.0 / 15.0) * big * pow(rho, 2 - 2 * n) / (rho * rho - 1) <=
-        1e-12 * len)
-      break;
-  return n;
+  return bound_order(big, rho, ldexp(len, -h->exp));
 }
 
 /* The nearest preimage's rho. */
@@ -163,7 +169,7 @@ static double rho_star(const arclen_branch *b, const cubic_map *m) {
 static int ellipse_order(const double *c, const arclen_branch *b,
                          const cubic_map *m, double len) {
   double rho = rho_star(b, m), big = 0, a, bb;
-  int j, n;
+  int j;
   a = (rho + 1 / rho) / 2;
   bb = (rho - 1 / rho) / 2;
   for (j = 0; j < SAMPLES; j++) {
@@ -177,11 +183,7 @@ static int ellipse_order(const double *c, const arclen_branch *b,
     double g = sqrt(cabs(x * x + y * y)) * cabs(map_slope(m, w));
     if (g > big) big = g;
   }
-  for (n = 2; n < 200; n++)
-    if ((64.0 / 15.0) * big * pow(rho, 2 - 2 * n) / (rho * rho - 1) <=
-        1e-12 * len)
-      break;
-  return n;
+  return bound_order(big, rho, len);
 }
 
 /* ---- the map's bound with rho certified ---------------------------------
@@ -251,28 +253,31 @@ static int far_clear(const cubic_map *m, double rho, double dre, double dim) {
   return xb2 > 0 && fabs(dre) < sqrt(xb2) * (a + k * xb2 - 3 * k * be * be);
 }
 
-/* The least order the bound allows over 20 ellipses up to the near
-** preimages' (0: none clears the other pair), tolerance 1e-12 len. */
-static int rigorous_order(const arclen_branch *br, int j0, const cubic_map *m,
-                          double len) {
+/* The least order crude_order allows over 20 ellipses up to the near
+** preimages' that clear the other pair (0: none does). */
+static int rigorous_order(const arclen_hodo *h, const arclen_branch *br,
+                          int j0, const cubic_map *m, double len) {
   double rn = near_rho(m, br->im[j0]), dre = br->re[2 - j0] - m->p;
-  double dim = br->im[2 - j0], d2 = hypot(dre, dim);
   int s, best = 0;
   for (s = 20; s >= 1 && rn > 1; s--) {
-    double rho = 1 + (rn - 1) * s / 20, r, phi, big;
+    double rho = 1 + (rn - 1) * s / 20;
     int n;
-    if (!far_clear(m, rho, dre, dim)) continue;
-    r = (rho + 1 / rho) / 2 + fabs(m->up);
-    phi = r * (m->a + m->k * r * r);
-    big = sqrt(br->lead2) * (phi + br->im[j0]) * (phi + d2) *
-          (m->a + 3 * m->k * r * r);
-    for (n = 2; n < 200; n++)
-      if ((64.0 / 15.0) * big * pow(rho, 2 - 2 * n) / (rho * rho - 1) <=
-          1e-12 * len)
-        break;
+    if (!far_clear(m, rho, dre, br->im[2 - j0])) continue;
+    n = crude_order(h, br, m, rho, len);
     if (best == 0 || n < best) best = n;
   }
   return best;
+}
+
+/* The pair whose foot lies inside (0.02, 0.98), the lowest if both do, of
+** a speed with two complex pairs (the other is 2 - j); -1 if none. */
+static int near_pair(const arclen_branch *b) {
+  int k, j = -1;
+  if (b->n != 4 || !(b->im[0] > 0 && b->im[2] > 0)) return -1;
+  for (k = 0; k < 4; k += 2)
+    if (b->re[k] > 0.02 && b->re[k] < 0.98 && (j < 0 || b->im[k] < b->im[j]))
+      j = k;
+  return j;
 }
 
 /* The cost over all curves (see the head): evaluations + 30 per extra
@@ -289,21 +294,18 @@ static void whole_set(void) {
     arclen_branch b;
     cubic_map m;
     double v, len;
-    int j0 = -1, k, n;
+    int j0, n;
     arclen_opts_init(&o);
     arclen_length_gauss(c, 2, &o, &v, &info);
     deflt[i] = better[i] = tested[i] = info.evals + 30.0 * (info.pieces - 1);
     arclen_hodo_scaled(c, 2, &h);
     arclen_branch_points(&h, &b);
-    if (b.n != 4 || !(b.im[0] > 0 && b.im[2] > 0)) continue;
-    for (k = 0; k < 4; k += 2)
-      if (b.re[k] > 0.02 && b.re[k] < 0.98 && (j0 < 0 || b.im[k] < b.im[j0]))
-        j0 = k;
+    j0 = near_pair(&b);
     if (j0 < 0 || b.im[j0] > 0.5) continue;
     if (!map_for(&m, b.re[j0], slope_for(b.im[j0]))) continue;
     o.rtol = 1e-15;
     arclen_length_gauss(c, 2, &o, &len, NULL);
-    n = rigorous_order(&b, j0, &m, ldexp(len, -h.exp));
+    n = rigorous_order(&h, &b, j0, &m, len);
     if (n == 0 || n > ARCLEN_GAUSS_MAX) continue;
     v = fabs(rule(c, n, &m) - len) / len;  /* the bound holds? */
     if (v > worst) worst = v;
@@ -338,19 +340,18 @@ int main(void) {
     arclen_hodo h;
     arclen_branch b;
     cubic_map m;
-    double len, v, foot = -1, lowest = HUGE_VAL;
-    int k;
+    double len, v, foot, lowest;
+    int j0;
     arclen_opts_init(&o);
     arclen_length_gauss(c, 2, &o, &v, &info);
     if (info.pieces != 1 || info.evals < 55 || info.evals > 95) continue;
     arclen_hodo_scaled(c, 2, &h);
     arclen_branch_points(&h, &b);
-    for (k = 0; k < b.n; k += 2)
-      if (b.re[k] > 0.02 && b.re[k] < 0.98 && b.im[k] < lowest) {
-        lowest = b.im[k];
-        foot = b.re[k];
-      }
-    if (foot < 0 || !map_for(&m, foot, SLOPE)) continue;
+    j0 = near_pair(&b);
+    if (j0 < 0) continue;
+    foot = b.re[j0];
+    lowest = b.im[j0];
+    if (!map_for(&m, foot, SLOPE)) continue;
     o.rtol = 1e-15;
     arclen_length_gauss(c, 2, &o, &len, NULL);
     o.rtol = 1e-12;
@@ -376,8 +377,7 @@ int main(void) {
     {
       cubic_map mc;
       int n = map_for(&mc, foot, slope_for(lowest))
-                  ? rigorous_order(&b, b.re[0] == foot && b.im[0] == lowest
-                                           ? 0 : 2, &mc, ldexp(len, -h.exp))
+                  ? rigorous_order(&h, &b, j0, &mc, len)
                   : 0;
       certified += n > 0 && n < info.evals ? n : info.evals;
     }
