@@ -234,22 +234,6 @@ void arclen_hodo_local(const double *c, int dim, double t0, double t1,
   scale_hodo(h, pre64);
 }
 
-/* Chord |z(b) - z(a)| in scaled units, from the antiderivative of the
-** hodograph (z(t) - P0 = a2 t^3/3 + a1 t^2/2 + a0 t).  It bounds the
-** length below for the quadrature's tolerance, where the ulp lost by
-** multiplying with a rounded 1/3 (a division costs more) is immaterial. */
-double arclen_hodo_chord(const arclen_hodo *h, double a, double b) {
-  double s = 0;
-  int k;
-  for (k = 0; k < h->dim; k++) {
-    double c3 = h->a2[k] * (1.0 / 3), c2 = h->a1[k] * 0.5;
-    double za = ((c3 * a + c2) * a + h->a0[k]) * a;
-    double zb = ((c3 * b + c2) * b + h->a0[k]) * b;
-    s += (zb - za) * (zb - za);
-  }
-  return sqrt(s);
-}
-
 /* Value of the cubic p[3] t^3 + p[2] t^2 + p[1] t + p[0]. */
 static double cubic_at(const double p[4], double t) {
   return ((p[3] * t + p[2]) * t + p[1]) * t + p[0];
