@@ -424,7 +424,7 @@ static ALWAYS_INLINE int orders_of(const arclen_branch *br, int np,
 
 int arclen_cut_orders(const arclen_branch *br, int np, const double *c,
                       const double *hh, double lgoal, int nmax, int *n) {
-  if (np == 1)            /* two curves in three: the loops unrolled */
+  if (np == 1)            /* the commonest case: the loops unrolled */
     return orders_of(br, 1, c, hh, lgoal, nmax, n);
   return np > 1 && np <= ARCLEN_CUT_PIECES &&
          orders_of(br, np, c, hh, lgoal, nmax, n);

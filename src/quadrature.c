@@ -34,10 +34,10 @@
 ** about as much as 30 evaluations (its bounds, the estimates below the
 ** reference order, a chord, a rule: make bench-icount), so few long pieces
 ** beat many short ones: tuned for time on the bench's random curves
-** (FOOTCUT 0.2, GRADE 4, NMAX 48: 43 evaluations in 2.4 pieces, 10% more
-** time than FOOTCUT 0.05 with these, 57 in 1.4; FOOTCUT 0.1, 46 in 1.7,
-** takes 2-3% less than 0.05 at the median at 1e-12 and 7% at 1e-15; 0.15
-** no less at the median and more on average). */
+** (median evaluations and mean pieces with GRADE 8, NMAX 128: FOOTCUT
+** 0.05 57 in 1.4, 0.1 46 in 1.7 and 2-3% less time at the median at 1e-12,
+** 7% less at 1e-15; 0.15 no less at the median, more on average.  FOOTCUT
+** 0.2, GRADE 4, NMAX 48 took 43 in 2.4 and 10% more time than 0.05). */
 #define FOOTCUT 0.1
 #define GRADE 8.0
 #define NMAX 128         /* highest order used before cutting instead */
