@@ -457,14 +457,23 @@ static int check_args(const double *c, int dim, double rtol, double t0,
 /* x in the integrator's scaled units and local variable as a length of
 ** the curve: x unit 2^exp, with unit's exponent folded into exp so that
 ** neither product over- or underflows on the way. */
+/* x 2^e, as ldexp(x, e) but for the common e without a call: 2^e is then
+** a normal number, and the one product rounds as ldexp does (also into
+** subnormals). */
+static double times_pow2(double x, int e) {
+  if (e >= -1022 && e <= 1023) {
+    uint64_t u = (uint64_t)(e + 1023) << 52;         /* 2^e, exact */
+    double m;
+    memcpy(&m, &u, sizeof m);
+    return x * m;
+  }
+  return ldexp(x, e);
+}
+
 static double in_curve_units(const integrator *in, double x) {
   int k;
   double m;
-  if (in->unit == 1 && in->h.exp >= -1022 && in->h.exp <= 1023) {
-    uint64_t u = (uint64_t)(in->h.exp + 1023) << 52;   /* 2^exp, exact */
-    memcpy(&m, &u, sizeof m);
-    return x * m;          /* rounds as ldexp does, also into subnormals */
-  }
+  if (in->unit == 1) return times_pow2(x, in->h.exp);
   m = frexp(in->unit, &k);
   return ldexp(x * m, in->h.exp + k);
 }
@@ -668,7 +677,7 @@ double arclen_length_gl(const double *c, int dim, int n) {
   arclen_hodo h;
   arclen_hodo_scaled(c, dim, &h);
   if (h.zero) return 0;
-  return ldexp(apply_rule(&h, rule_at_least(n), 0.5, 0.5), h.exp);
+  return times_pow2(apply_rule(&h, rule_at_least(n), 0.5, 0.5), h.exp);
 }
 
 /* ---- the plain API ---------------------------------------------------- */
