@@ -4,11 +4,19 @@
 ** any accurate method must beat), measured in the same run on 3000 random
 ** curves.  Each curve is timed over REPS calls; the median is reported.
 ** The time calls ask for L/2, computed before the clock starts.
+**
+** The ratios are to arclen_length_gl(c, 2, 24), which evaluates the speed
+** as the default method does (packed square roots where SSE2 is there), so
+** they measure what the error control costs.  A plain loop of the same
+** rule, one square root at a time, is timed beside it: the unit in which
+** ../shared/notes/anchors.md gives the peers' costs.
 */
+#include <math.h>
 #include <stdio.h>
 
 #include "arclen.h"
 #include "bench_util.h"
+#include "gauss_tables.h"
 
 #define NCURVES 3000
 #define REPS 64
@@ -23,12 +31,37 @@ static double gl24(const double *c, double arg) {
   (void)arg;
   return arclen_length_gl(c, 2, 24);
 }
+
+/* The same rule as a plain loop, one square root at a time on the
+** unscaled hodograph: what a library without packed square roots runs
+** (the peers, and the floor in ../shared/notes/anchors.md). */
+static double plain24(const double *c, double arg) {
+  const arclen_gauss_rule *r = &arclen_gauss_rules[23];
+  double ax[3], ay[3], s = 0;
+  int i;
+  (void)arg;
+  ax[0] = 3 * (c[2] - c[0]);
+  ay[0] = 3 * (c[3] - c[1]);
+  ax[1] = 6 * (c[4] - 2 * c[2] + c[0]);
+  ay[1] = 6 * (c[5] - 2 * c[3] + c[1]);
+  ax[2] = 3 * (c[6] - 3 * c[4] + 3 * c[2] - c[0]);
+  ay[2] = 3 * (c[7] - 3 * c[5] + 3 * c[3] - c[1]);
+  for (i = 0; i < r->half; i++) {
+    double t0 = 0.5 - 0.5 * r->x[i], t1 = 0.5 + 0.5 * r->x[i];
+    double x0 = (ax[2] * t0 + ax[1]) * t0 + ax[0];
+    double y0 = (ay[2] * t0 + ay[1]) * t0 + ay[0];
+    double x1 = (ax[2] * t1 + ax[1]) * t1 + ax[0];
+    double y1 = (ay[2] * t1 + ay[1]) * t1 + ay[0];
+    s += r->w[i] * (sqrt(x0 * x0 + y0 * y0) + sqrt(x1 * x1 + y1 * y1));
+  }
+  return 0.5 * s;
+}
 static double len(const double *c, double rtol) { return arclen_length(c, rtol); }
 static double half_time(const double *c, double rtol) {
   return arclen_time(c, halves[(c - curves) / 8], rtol);
 }
 
-#define NMEASURES 5
+#define NMEASURES 6
 #define BLOCK 50        /* curves timed by one measure before the next */
 
 /* Per-curve ns of every measure, the measures taken in turn on each block
@@ -78,8 +111,9 @@ static long median_evals(double rtol, int want_time) {
 }
 
 int main(void) {
-  static const measure_fn f[NMEASURES] = {gl24, len, len, half_time, half_time};
-  static const double arg[NMEASURES] = {0, 1e-12, 1e-15, 1e-12, 1e-15};
+  static const measure_fn f[NMEASURES] = {gl24, len, len, half_time,
+                                          half_time, plain24};
+  static const double arg[NMEASURES] = {0, 1e-12, 1e-15, 1e-12, 1e-15, 0};
   double med[NMEASURES], mean[NMEASURES];
   int i;
   bench_random_curves(curves, NCURVES, 20261121);
@@ -93,6 +127,8 @@ int main(void) {
   printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_length rtol 1e-15", med[2], med[2] / med[0], median_evals(1e-15, 0), mean[2] / mean[0]);
   printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_time L/2 rtol 1e-12", med[3], med[3] / med[0], median_evals(1e-12, 1), mean[3] / mean[0]);
   printf("%-34s %9.1f %8.2f %7ld %11.2f\n", "arclen_time L/2 rtol 1e-15", med[4], med[4] / med[0], median_evals(1e-15, 1), mean[4] / mean[0]);
+  printf("%-34s %9.1f %8.2f %7d %11.2f\n", "plain 24-point loop (scalar)", med[5], med[5] / med[0], 24, mean[5] / mean[0]);
   printf("time / length at 1e-12: %.2f   at 1e-15: %.2f\n", med[3] / med[1], med[4] / med[2]);
+  printf("length / plain 24-point loop at 1e-12: %.2f   at 1e-15: %.2f\n", med[1] / med[5], med[2] / med[5]);
   return 0;
 }

@@ -22,6 +22,9 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "arclen.h"
 #include "cubic.h"
@@ -60,19 +63,52 @@ static const arclen_gauss_rule *rule_at_least(int n) {
                                              ? ARCLEN_GAUSS_MAX - 1 : n - 1];
 }
 
+#if defined(__SSE2__)
+/* Coordinate k of the hodograph at the two times in t. */
+static __m128d coord_pair(const arclen_hodo *h, int k, __m128d t) {
+  __m128d v = _mm_add_pd(_mm_mul_pd(_mm_set1_pd(h->a2[k]), t),
+                         _mm_set1_pd(h->a1[k]));
+  v = _mm_add_pd(_mm_mul_pd(v, t), _mm_set1_pd(h->a0[k]));
+  return _mm_mul_pd(v, v);
+}
+
+/* s + sum w_i (f(c - hh x_i) + f(c + hh x_i)) for i from i0: the two
+** points of a pair in the two lanes of one register, so that one packed
+** square root serves both -- the loop is bound by the square roots, and
+** sqrtpd issues as often as sqrtsd.  Each lane rounds as arclen_hodo_speed
+** does (c + (-hh) x is c - hh x exactly) and the pair is added in the same
+** order, so the sum is the scalar loop's to the bit. */
+static double pairs(const arclen_hodo *h, const arclen_gauss_rule *r, int i0,
+                    double c, double hh, double s) {
+  __m128d cc = _mm_set1_pd(c), lanes = _mm_set_pd(hh, -hh);
+  int i;
+  for (i = i0; i < r->half; i++) {
+    __m128d t = _mm_add_pd(cc, _mm_mul_pd(lanes, _mm_set1_pd(r->x[i])));
+    __m128d q = _mm_add_pd(coord_pair(h, 0, t), coord_pair(h, 1, t));
+    __m128d f;
+    if (h->dim == 3) q = _mm_add_pd(q, coord_pair(h, 2, t));
+    f = _mm_sqrt_pd(q);
+    s += r->w[i] * (_mm_cvtsd_f64(f) + _mm_cvtsd_f64(_mm_unpackhi_pd(f, f)));
+  }
+  return s;
+}
+#else
+static double pairs(const arclen_hodo *h, const arclen_gauss_rule *r, int i0,
+                    double c, double hh, double s) {
+  int i;
+  for (i = i0; i < r->half; i++)
+    s += r->w[i] * (arclen_hodo_speed(h, c - hh * r->x[i]) +
+                    arclen_hodo_speed(h, c + hh * r->x[i]));
+  return s;
+}
+#endif
+
 /* hh * sum w_i f(c + hh x_i): the rule on [c - hh, c + hh]. */
 static double apply_rule(const arclen_hodo *h, const arclen_gauss_rule *r,
                          double c, double hh) {
-  double s = 0;
-  int i = 0;
-  if (r->n % 2) {
-    s = r->w[0] * arclen_hodo_speed(h, c);
-    i = 1;
-  }
-  for (; i < r->half; i++)
-    s += r->w[i] * (arclen_hodo_speed(h, c - hh * r->x[i]) +
-                    arclen_hodo_speed(h, c + hh * r->x[i]));
-  return hh * s;
+  if (r->n % 2)
+    return hh * pairs(h, r, 1, c, hh, r->w[0] * arclen_hodo_speed(h, c));
+  return hh * pairs(h, r, 0, c, hh, 0);
 }
 
 #define rough_log2 arclen_rough_log2
