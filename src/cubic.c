@@ -158,8 +158,11 @@ static const double *tame(const double *c, int dim, double small[12],
 /* Coordinate k of the power form, as arclen_hodograph: the largest
 ** magnitude so far into *big, and the coefficients' sum into *sum (inf or
 ** NaN if any of them overflowed, which the maximum would not show). */
-static void hodo_coord(const double *c, int dim, int k, arclen_hodo *h,
-                       double *big, double *sum) {
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void hodo_coord(const double *c, int dim, int k,
+                              arclen_hodo *h, double *big, double *sum) {
   double d0 = c[dim + k] - c[k];
   double d1 = c[2 * dim + k] - c[dim + k];
   double d2 = c[3 * dim + k] - c[2 * dim + k];

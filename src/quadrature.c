@@ -64,33 +64,48 @@ static const arclen_gauss_rule *rule_at_least(int n) {
 }
 
 #if defined(__SSE2__)
-/* Coordinate k of the hodograph at the two times in t. */
-static __m128d coord_pair(const arclen_hodo *h, int k, __m128d t) {
-  __m128d v = _mm_add_pd(_mm_mul_pd(_mm_set1_pd(h->a2[k]), t),
-                         _mm_set1_pd(h->a1[k]));
-  v = _mm_add_pd(_mm_mul_pd(v, t), _mm_set1_pd(h->a0[k]));
-  return _mm_mul_pd(v, v);
-}
+/* The squares of coordinate k of the hodograph (coefficients broadcast in
+** a2, a1, a0) at the two times in t. */
+#define SQUARE_PAIR(a2, a1, a0, t) \
+  _mm_mul_pd(_mm_add_pd(_mm_mul_pd(_mm_add_pd(_mm_mul_pd(a2, t), a1), t), a0), \
+             _mm_add_pd(_mm_mul_pd(_mm_add_pd(_mm_mul_pd(a2, t), a1), t), a0))
 
 /* s + sum w_i (f(c - hh x_i) + f(c + hh x_i)) for i from i0: the two
 ** points of a pair in the two lanes of one register, so that one packed
 ** square root serves both -- the loop is bound by the square roots, and
 ** sqrtpd issues as often as sqrtsd.  Each lane rounds as arclen_hodo_speed
 ** does (c + (-hh) x is c - hh x exactly) and the pair is added in the same
-** order, so the sum is the scalar loop's to the bit. */
-static double pairs(const arclen_hodo *h, const arclen_gauss_rule *r, int i0,
-                    double c, double hh, double s) {
-  __m128d cc = _mm_set1_pd(c), lanes = _mm_set_pd(hh, -hh);
+** order, so the sum is the scalar loop's to the bit.  The coefficients are
+** broadcast once, and dim3 is a constant in each caller. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline double pairs_dim(const arclen_hodo *h,
+                               const arclen_gauss_rule *r, int i0, double c,
+                               double hh, double s, int dim3) {
+  const __m128d cc = _mm_set1_pd(c), lanes = _mm_set_pd(hh, -hh);
+  const __m128d x2 = _mm_set1_pd(h->a2[0]), x1 = _mm_set1_pd(h->a1[0]);
+  const __m128d x0 = _mm_set1_pd(h->a0[0]), y2 = _mm_set1_pd(h->a2[1]);
+  const __m128d y1 = _mm_set1_pd(h->a1[1]), y0 = _mm_set1_pd(h->a0[1]);
+  const __m128d z2 = _mm_set1_pd(h->a2[2]), z1 = _mm_set1_pd(h->a1[2]);
+  const __m128d z0 = _mm_set1_pd(h->a0[2]);
   int i;
   for (i = i0; i < r->half; i++) {
     __m128d t = _mm_add_pd(cc, _mm_mul_pd(lanes, _mm_set1_pd(r->x[i])));
-    __m128d q = _mm_add_pd(coord_pair(h, 0, t), coord_pair(h, 1, t));
+    __m128d q = _mm_add_pd(SQUARE_PAIR(x2, x1, x0, t),
+                           SQUARE_PAIR(y2, y1, y0, t));
     __m128d f;
-    if (h->dim == 3) q = _mm_add_pd(q, coord_pair(h, 2, t));
+    if (dim3) q = _mm_add_pd(q, SQUARE_PAIR(z2, z1, z0, t));
     f = _mm_sqrt_pd(q);
     s += r->w[i] * (_mm_cvtsd_f64(f) + _mm_cvtsd_f64(_mm_unpackhi_pd(f, f)));
   }
   return s;
+}
+
+static double pairs(const arclen_hodo *h, const arclen_gauss_rule *r, int i0,
+                    double c, double hh, double s) {
+  return h->dim == 3 ? pairs_dim(h, r, i0, c, hh, s, 1)
+                     : pairs_dim(h, r, i0, c, hh, s, 0);
 }
 #else
 static double pairs(const arclen_hodo *h, const arclen_gauss_rule *r, int i0,
