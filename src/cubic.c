@@ -3,7 +3,6 @@
 ** de Casteljau splitting, the hodograph and the speed's critical points.
 */
 #include <math.h>
-#include <stdint.h>
 #include <string.h>
 
 #include "arclen.h"
@@ -155,62 +154,14 @@ static const double *tame(const double *c, int dim, double small[12],
   return small;
 }
 
-/* Coordinate k of the power form, as arclen_hodograph: the largest
-** magnitude so far into *big, and the coefficients' sum into *sum (inf or
-** NaN if any of them overflowed, which the maximum would not show). */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline void hodo_coord(const double *c, int dim, int k,
-                              arclen_hodo *h, double *big, double *sum) {
-  double d0 = c[dim + k] - c[k];
-  double d1 = c[2 * dim + k] - c[dim + k];
-  double d2 = c[3 * dim + k] - c[2 * dim + k];
-  double a0 = 3 * d0, a1 = 6 * (d1 - d0), a2 = 3 * ((d2 - d1) - (d1 - d0));
-  double m = fabs(a0) > fabs(a1) ? fabs(a0) : fabs(a1);
-  m = m > fabs(a2) ? m : fabs(a2);
-  *big = m > *big ? m : *big;
-  *sum += (a0 + a1) + a2;
-  h->a0[k] = a0;
-  h->a1[k] = a1;
-  h->a2[k] = a2;
-}
-
-/* The common case first: the power form straight from the points, and
-** when its largest coefficient is a normal number the power of two read
-** off its bits (frexp's e is the biased exponent less 1022) -- the fixed
-** rule and every default-method call start here.  Overflow on the way
-** (a coordinate near DBL_MAX) shows as an inf or NaN coefficient, and a
-** subnormal or zero one needs care: both take tame() and scale_hodo(),
-** which give the same result wherever the fast path applies (scaling by
-** 2^-64 commutes with the rounding of differences that do not overflow). */
+/* The slow path of arclen_hodo_quick (cubic.h): overflow, zero and
+** subnormal coefficients take tame() and scale_hodo(), which give the same
+** result wherever the quick path applies (scaling by 2^-64 commutes with
+** the rounding of differences that do not overflow). */
 void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h) {
-  double small[12], big = 0, sum = 0;
-  uint64_t u;
-  int k, e, pre64;
-  h->dim = dim;
-  h->zero = 0;
-  hodo_coord(c, dim, 0, h, &big, &sum);
-  hodo_coord(c, dim, 1, h, &big, &sum);
-  if (dim == 3) {
-    hodo_coord(c, dim, 2, h, &big, &sum);
-  } else {
-    h->a2[2] = h->a1[2] = h->a0[2] = 0;
-  }
-  memcpy(&u, &big, sizeof u);
-  e = (int)(u >> 52) - 1022;              /* big >= 0: no sign bit */
-  if (e > -1000 && e < 1000 && sum - sum == 0) {   /* 2^-e normal too */
-    double inv;
-    u = (uint64_t)(1023 - e) << 52;
-    memcpy(&inv, &u, sizeof inv);
-    h->exp = e;
-    for (k = 0; k < dim; k++) {
-      h->a2[k] *= inv;
-      h->a1[k] *= inv;
-      h->a0[k] *= inv;
-    }
-    return;
-  }
+  double small[12];
+  int pre64;
+  if (arclen_hodo_quick(c, dim, h)) return;
   memset(h, 0, sizeof *h);
   h->dim = dim;
   c = tame(c, dim, small, &pre64);

@@ -7,6 +7,8 @@
 #define ARCLEN_CUBIC_H
 
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 /* z'(t) / 2^exp = a2 t^2 + a1 t + a0, with the power of two chosen so
 ** that the largest coefficient lies in [0.5, 1). */
@@ -18,6 +20,65 @@ typedef struct arclen_hodo {
 } arclen_hodo;
 
 void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h);
+
+/* Coordinate k of the power form, as arclen_hodograph: the largest
+** magnitude so far into *big, and the coefficients' sum into *sum (inf or
+** NaN if any of them overflowed, which the maximum would not show). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void arclen_hodo_coord(const double *c, int dim, int k,
+                                     arclen_hodo *h, double *big,
+                                     double *sum) {
+  double d0 = c[dim + k] - c[k];
+  double d1 = c[2 * dim + k] - c[dim + k];
+  double d2 = c[3 * dim + k] - c[2 * dim + k];
+  double a0 = 3 * d0, a1 = 6 * (d1 - d0), a2 = 3 * ((d2 - d1) - (d1 - d0));
+  double m = fabs(a0) > fabs(a1) ? fabs(a0) : fabs(a1);
+  m = m > fabs(a2) ? m : fabs(a2);
+  *big = m > *big ? m : *big;
+  *sum += (a0 + a1) + a2;
+  h->a0[k] = a0;
+  h->a1[k] = a1;
+  h->a2[k] = a2;
+}
+
+/* arclen_hodo_scaled for the common case, inline: the power form straight
+** from the points, and when its largest coefficient is a normal number the
+** power of two read off its bits (frexp's e is the biased exponent less
+** 1022).  Returns 0, h unfinished, when a coefficient is inf or NaN (a
+** coordinate is, or a difference overflowed: every coordinate enters a
+** coefficient), zero or tiny: arclen_hodo_scaled then takes care. */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline int arclen_hodo_quick(const double *c, int dim,
+                                    arclen_hodo *h) {
+  double big = 0, sum = 0, inv;
+  uint64_t u;
+  int k, e;
+  h->dim = dim;
+  h->zero = 0;
+  arclen_hodo_coord(c, dim, 0, h, &big, &sum);
+  arclen_hodo_coord(c, dim, 1, h, &big, &sum);
+  if (dim == 3) {
+    arclen_hodo_coord(c, dim, 2, h, &big, &sum);
+  } else {
+    h->a2[2] = h->a1[2] = h->a0[2] = 0;
+  }
+  memcpy(&u, &big, sizeof u);
+  e = (int)(u >> 52) - 1022;              /* big >= 0: no sign bit */
+  if (!(e > -1000 && e < 1000 && sum - sum == 0)) return 0;
+  u = (uint64_t)(1023 - e) << 52;         /* 2^-e, normal */
+  memcpy(&inv, &u, sizeof inv);
+  h->exp = e;
+  for (k = 0; k < dim; k++) {
+    h->a2[k] *= inv;
+    h->a1[k] *= inv;
+    h->a0[k] *= inv;
+  }
+  return 1;
+}
 /* The hodograph of [t0, t1] in s in [-1, 1] (t = (t0 + t1)/2 + s (t1 - t0)/2),
 ** its coefficients correct to rounding: lengths are (t1 - t0)/2 times its. */
 void arclen_hodo_local(const double *c, int dim, double t0, double t1,
