@@ -31,17 +31,24 @@
 #include "gauss_bound.h"
 #include "gauss_tables.h"
 
-/* The range is cut at the foot of a branch point within FOOTCUT of its
-** width; a piece that no order up to NMAX meets is cut GRADE times its
-** nearest branch point's distance from the near end.  A second piece costs
-** about as much as 30 evaluations (its bounds, the estimates below the
-** reference order, a chord, a rule: make bench-icount), so few long pieces
-** beat many short ones: tuned for time on the bench's random curves
-** (median evaluations and mean pieces with GRADE 8, NMAX 128: FOOTCUT
-** 0.05 57 in 1.4, 0.1 46 in 1.7 and 2-3% less time at the median at 1e-12,
-** 7% less at 1e-15; 0.15 no less at the median, more on average.  FOOTCUT
-** 0.2, GRADE 4, NMAX 48 took 43 in 2.4 and 10% more time than 0.05). */
-#define FOOTCUT 0.1
+/* The range is cut at the foot of a branch point nearer to it than
+** footcut(rtol) times its width; a piece that no order up to NMAX meets is
+** cut GRADE times its nearest branch point's distance from the near end.
+** A cut pays when one piece would need many more points than two, and the
+** points grow with the bits asked for: on the bench's random curves the
+** least time (median and mean; make bench's curves, a cut at every foot
+** below the share against none) came at 0.04 of the width for rtol 1e-9,
+** 0.05-0.06 for 1e-12 and 0.07 for 1e-15, so the share is linear in the
+** bits, between 0.02 and 0.1.  (With one square root per point, 0.1 had
+** been best at 1e-12: the dearer the points, the more a cut saves.)  A
+** second piece costs about as much as 30 packed evaluations (its bounds,
+** the estimates below the reference order, a chord, a rule: make
+** bench-icount), so few long pieces beat many short ones; a share of 0.2,
+** GRADE 4, NMAX 48 took 10% more time than 0.05 with GRADE 8, NMAX 128. */
+static double footcut(double rtol) {
+  double f = -0.0015 * arclen_rough_log2(rtol) - 0.005;
+  return f < 0.02 ? 0.02 : f > 0.1 ? 0.1 : f;
+}
 #define GRADE 8.0
 #define NMAX 128         /* highest order used before cutting instead */
 #define FLOOR_ORDER 48   /* the rule of a piece that cannot be cut further */
@@ -285,7 +292,7 @@ static double first_to(const integrator *in, int i) {
 static int start(integrator *in, const double *c, int dim, double t0,
                  double t1, double rtol) {
   int i, j;
-  double iw;
+  double iw, cut;
   /* h, br and cc are filled below; the stack is filled by push() before
   ** pop reads it */
   in->lest = in->logk = in->lgoal = in->err = 0;
@@ -304,9 +311,10 @@ static int start(integrator *in, const double *c, int dim, double t0,
   arclen_branch_points(&in->h, &in->br);
   in->rtol = rtol;
   in->width = t1 - t0;
+  cut = footcut(rtol) * in->width;
   for (i = 0; i < in->br.n; i += 2) {
     double foot = in->br.re[i];
-    if (foot > t0 && foot < t1 && in->br.im[i] < FOOTCUT * in->width) {
+    if (foot > t0 && foot < t1 && in->br.im[i] < cut) {
       for (j = in->nmin; j > 0 && in->mins[j - 1] > foot; j--)
         in->mins[j] = in->mins[j - 1];     /* insertion: keep ascending */
       in->mins[j] = foot;
@@ -559,14 +567,14 @@ static int length_fast(const double *c, double rtol, double *len) {
   arclen_branch br;
   double mid[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES];
   double mins[ARCLEN_CUT_PIECES - 1];
-  double lest = 0, lkl, lgoal, sum = 0;
+  double lest = 0, lkl, lgoal, sum = 0, cut = footcut(rtol);
   int n[ARCLEN_CUT_PIECES], nmin = 0, i, j;
   if (!arclen_hodo_quick(c, 2, &h)) return 0;
   arclen_branch_points(&h, &br);
   if (br.n != 4) return 0;
   for (i = 0; i < 4; i += 2) {
     double foot = br.re[i];
-    if (foot > 0 && foot < 1 && br.im[i] < FOOTCUT) {
+    if (foot > 0 && foot < 1 && br.im[i] < cut) {
       for (j = nmin; j > 0 && mins[j - 1] > foot; j--) mins[j] = mins[j - 1];
       mins[j] = foot;
       nmin++;
