@@ -44,6 +44,7 @@ build = {
         "src/methods.c",
         "src/quadrature.c",
         "src/roots.c",
+        "src/speed_sum.c",
       },
       defines = { "_POSIX_C_SOURCE=200809L" },
       libraries = { "m" },

@@ -22,14 +22,12 @@
 #include <stddef.h>
 #include <stdint.h>
 #include <string.h>
-#if defined(__SSE2__)
-#include <emmintrin.h>
-#endif
 
 #include "arclen.h"
 #include "cubic.h"
 #include "gauss_bound.h"
 #include "gauss_tables.h"
+#include "speed_sum.h"
 
 /* The range is cut at the foot of a branch point nearer to it than
 ** footcut(rtol) times its width; a piece that no order up to NMAX meets is
@@ -70,67 +68,13 @@ static const arclen_gauss_rule *rule_at_least(int n) {
                                              ? ARCLEN_GAUSS_MAX - 1 : n - 1];
 }
 
-#if defined(__SSE2__)
-/* The squares of coordinate k of the hodograph (coefficients broadcast in
-** a2, a1, a0) at the two times in t. */
-#define SQUARE_PAIR(a2, a1, a0, t) \
-  _mm_mul_pd(_mm_add_pd(_mm_mul_pd(_mm_add_pd(_mm_mul_pd(a2, t), a1), t), a0), \
-             _mm_add_pd(_mm_mul_pd(_mm_add_pd(_mm_mul_pd(a2, t), a1), t), a0))
-
-/* s + sum w_i (f(c - hh x_i) + f(c + hh x_i)) for i from i0: the two
-** points of a pair in the two lanes of one register, so that one packed
-** square root serves both -- the loop is bound by the square roots, and
-** sqrtpd issues as often as sqrtsd.  Each lane rounds as arclen_hodo_speed
-** does (c + (-hh) x is c - hh x exactly) and the pair is added in the same
-** order, so the sum is the scalar loop's to the bit.  The coefficients are
-** broadcast once, and dim3 is a constant in each caller. */
-#if defined(__GNUC__)
-__attribute__((always_inline))
-#endif
-static inline double pairs_dim(const arclen_hodo *h,
-                               const arclen_gauss_rule *r, int i0, double c,
-                               double hh, double s, int dim3) {
-  const __m128d cc = _mm_set1_pd(c), lanes = _mm_set_pd(hh, -hh);
-  const __m128d x2 = _mm_set1_pd(h->a2[0]), x1 = _mm_set1_pd(h->a1[0]);
-  const __m128d x0 = _mm_set1_pd(h->a0[0]), y2 = _mm_set1_pd(h->a2[1]);
-  const __m128d y1 = _mm_set1_pd(h->a1[1]), y0 = _mm_set1_pd(h->a0[1]);
-  const __m128d z2 = _mm_set1_pd(h->a2[2]), z1 = _mm_set1_pd(h->a1[2]);
-  const __m128d z0 = _mm_set1_pd(h->a0[2]);
-  int i;
-  for (i = i0; i < r->half; i++) {
-    __m128d t = _mm_add_pd(cc, _mm_mul_pd(lanes, _mm_set1_pd(r->x[i])));
-    __m128d q = _mm_add_pd(SQUARE_PAIR(x2, x1, x0, t),
-                           SQUARE_PAIR(y2, y1, y0, t));
-    __m128d f;
-    if (dim3) q = _mm_add_pd(q, SQUARE_PAIR(z2, z1, z0, t));
-    f = _mm_sqrt_pd(q);
-    s += r->w[i] * (_mm_cvtsd_f64(f) + _mm_cvtsd_f64(_mm_unpackhi_pd(f, f)));
-  }
-  return s;
-}
-
-static double pairs(const arclen_hodo *h, const arclen_gauss_rule *r, int i0,
-                    double c, double hh, double s) {
-  return h->dim == 3 ? pairs_dim(h, r, i0, c, hh, s, 1)
-                     : pairs_dim(h, r, i0, c, hh, s, 0);
-}
-#else
-static double pairs(const arclen_hodo *h, const arclen_gauss_rule *r, int i0,
-                    double c, double hh, double s) {
-  int i;
-  for (i = i0; i < r->half; i++)
-    s += r->w[i] * (arclen_hodo_speed(h, c - hh * r->x[i]) +
-                    arclen_hodo_speed(h, c + hh * r->x[i]));
-  return s;
-}
-#endif
-
 /* hh * sum w_i f(c + hh x_i): the rule on [c - hh, c + hh]. */
 static double apply_rule(const arclen_hodo *h, const arclen_gauss_rule *r,
                          double c, double hh) {
   if (r->n % 2)
-    return hh * pairs(h, r, 1, c, hh, r->w[0] * arclen_hodo_speed(h, c));
-  return hh * pairs(h, r, 0, c, hh, 0);
+    return hh * arclen_speed_pairs(h, r->x, r->w, 1, r->half, c, hh,
+                                   r->w[0] * arclen_hodo_speed(h, c));
+  return hh * arclen_speed_pairs(h, r->x, r->w, 0, r->half, c, hh, 0);
 }
 
 #define rough_log2 arclen_rough_log2
