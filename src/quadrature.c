@@ -234,7 +234,7 @@ static double first_to(const integrator *in, int i) {
 ** of the tolerance, rtol lest w / width for width w, is safe.  Returns 0
 ** when there is nothing to integrate (a point, or a zero speed). */
 static int start(integrator *in, const double *c, int dim, double t0,
-                 double t1, double rtol) {
+                 double t1, double rtol, double share) {
   int i, j;
   double iw, cut;
   /* h, br and cc are filled below; the stack is filled by push() before
@@ -255,7 +255,7 @@ static int start(integrator *in, const double *c, int dim, double t0,
   arclen_branch_points(&in->h, &in->br);
   in->rtol = rtol;
   in->width = t1 - t0;
-  cut = footcut(rtol) * in->width;
+  cut = share * in->width;
   for (i = 0; i < in->br.n; i += 2) {
     double foot = in->br.re[i];
     if (foot > t0 && foot < t1 && in->br.im[i] < cut) {
@@ -557,7 +557,8 @@ static double length_core(const double *c, int dim, double t0, double t1,
   integrator in;
   double a = t0 < t1 ? t0 : t1, b = t0 < t1 ? t1 : t0, sum = 0;
   if (a == b) return 0;
-  if (start(&in, c, dim, a, b, truncation_budget(rtol))) {
+  if (start(&in, c, dim, a, b, truncation_budget(rtol),
+            footcut(truncation_budget(rtol)))) {
     in.want_err = info != NULL;
     sum = integrate(&in);
   }
@@ -596,16 +597,44 @@ static int newton_certified(const piece_bound *pb, double hh, double d,
   return pb->m * d * d <= 2 * tol * disc_radius(pb, hh);
 }
 
+/* The speed's slope at t, where it is f > 0: (z' . z'')/|z'|. */
+static double speed_slope(const arclen_hodo *h, double t, double f) {
+  double s = 0;
+  int k;
+  for (k = 0; k < h->dim; k++) {
+    double v = (h->a2[k] * t + h->a1[k]) * t + h->a0[k];
+    s += v * (2 * h->a2[k] * t + h->a1[k]);
+  }
+  return s / f;
+}
+
+/* The step to the root of the Taylor polynomial of second order, from the
+** Newton step d = -g/f and the slope f1 of the speed: e = d - c with c =
+** f1 d^2 / (2 f) makes g + f e + f1 e^2 / 2 = (f1 / 2) c (c - 2 d), and
+** the remainder is at most max |f''| |e|^3 / 6 with |f''| <= 2 M / r^2
+** (Cauchy, as for newton_certified).  Returns e when the two are within
+** tol (1/1024 of it kept for rounding), else 0 (e = 0 means g = 0, which
+** the caller has taken already). */
+static double second_order_step(const piece_bound *pb, double hh, double d,
+                                double f, double f1, double tol) {
+  double r = disc_radius(pb, hh), c = f1 * d * d / (2 * f), e = d - c;
+  double res = fabs(f1 / 2 * c * (c - 2 * d)) +
+               pb->m * fabs(e * e * e) / (3 * r * r);
+  return res <= tol * (1 - 1.0 / 1024) ? e : 0;
+}
+
 /* A first guess for s(t) = goal in [a, b]: the cubic Hermite interpolant
 ** of s from its values 0, plen and slopes (the speeds) at the ends,
-** inverted by a few Newton steps on u = (t - a)/(b - a) kept in (0, 1).  It
-** starts the safeguarded Newton two steps closer than the chord would. */
+** inverted by three Newton steps on u = (t - a)/(b - a) kept in (0, 1).
+** Three, not more: each is a division on the path to the answer, and
+** refine_guess() takes the guess much closer for the cost of one. */
+#define HERMITE_STEPS 3
 static double hermite_guess(const arclen_hodo *h, double a, double b,
                             double plen, double goal) {
   double w = b - a, fa = w * arclen_hodo_speed(h, a);
   double fb = w * arclen_hodo_speed(h, b), u = goal / plen;
   int it;
-  for (it = 0; it < 6; it++) {
+  for (it = 0; it < HERMITE_STEPS; it++) {
     double u2 = u * u, u3 = u2 * u;
     double s = plen * (3 * u2 - 2 * u3) + fa * (u - 2 * u2 + u3) +
                fb * (u3 - u2) - goal;
@@ -616,6 +645,28 @@ static double hermite_guess(const arclen_hodo *h, double a, double b,
     u = next;
   }
   return a + w * u;
+}
+
+/* A better guess, no bound: s(t) from the piece's own rule r on the nearer
+** part of [a, b] (about as good as on the piece), then the second-order
+** step from it.  The Hermite guess errs by up to ~1e-2 of the piece where
+** a branch point stands near it; after this step the certified
+** evaluations number 2.1 on average on the bench's curves (were 3.4). */
+static double refine_guess(integrator *in, double a, double b, double plen,
+                           double goal, const arclen_gauss_rule *r,
+                           double t) {
+  double sg, f;
+  if (t - a <= b - t)
+    sg = apply_rule(&in->h, r, a + (t - a) / 2, (t - a) / 2) - goal;
+  else
+    sg = plen - apply_rule(&in->h, r, t + (b - t) / 2, (b - t) / 2) - goal;
+  f = arclen_hodo_speed(&in->h, t);
+  in->evals += r->n + 1;
+  if (f > 0) {
+    double d = -sg / f, e = d - speed_slope(&in->h, t, f) * d * d / (2 * f);
+    if (t + e > a && t + e < b) return t + e;
+  }
+  return t;
 }
 
 /* The integral over [x, y] inside an accepted piece to within target
@@ -638,6 +689,15 @@ static double sub_integral(integrator *in, double x, double y, double target,
     double lnum = rough_log2(h * (64.0 / 15.0) * eb->m / target) -
                   rough_log2(rho * rho - 1) + 2 * LOG2_ERR;
     double nn = 1 + lnum / (2 * (rough_log2(rho) - LOG2_ERR));
+    n = nn <= 2 ? 2 : nn < ARCLEN_GAUSS_MAX ? (int)ceil(nn) : 0;
+  }
+  if (!n && !eb->inside && eb->log_rho2 > 0) {
+    /* The piece's own ellipse: [x, y] lies in the piece, so the ellipse of
+    ** [x, y] with the piece's rho lies inside the piece's (the Green's
+    ** function of a subset is the larger), where |f| <= M: the bound at
+    ** the piece's rho, M and 2^logc = M rho^2/(rho^2 - 1), scaled by h. */
+    double nn = (rough_log2(h * (64.0 / 15.0) / target) + LOG2_ERR +
+                 eb->logc) / eb->log_rho2;
     n = nn <= 2 ? 2 : nn < ARCLEN_GAUSS_MAX ? (int)ceil(nn) : 0;
   }
   if (!n && in->cc.ok) {
@@ -667,6 +727,7 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
   int it;
   bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &eb);
   in->evals += 2;
+  t = refine_guess(in, a, b, plen, goal, r, t);
   for (it = 0; it < 100; it++) {
     double g, f, next;
     if (t - lo <= hi - t)
@@ -685,15 +746,50 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
       shi = g + goal;
     }
     next = f > 0 ? t - g / f : lo + (hi - lo) / 2;
-    if (!(next > lo && next < hi)) {
+    if (!(f > 0 && next > lo && next < hi)) {   /* a Newton step only */
       next = lo + (hi - lo) / 2;
     } else if (newton_certified(&eb, (b - a) / 2, next - t, tol)) {
       return next;
+    } else {
+      double e = second_order_step(&eb, (b - a) / 2, -g / f, f,
+                                   speed_slope(&in->h, t, f), tol);
+      if (e != 0 && t + e > lo && t + e < hi) return t + e;
     }
     if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) break;
     t = next;
   }
   return t;
+}
+
+/* time's common case, as integrate() takes it: the first pieces' orders
+** straight from the branch points (arclen_cut_orders), then their rules in
+** increasing t up to the piece that holds the goal.  Returns 0, with
+** nothing done, when those orders are not to be had (a piece to cut, a
+** real or far root): the caller then takes the stack. */
+static int time_first_pieces(integrator *in, double goal, double *t) {
+  double c[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES], cum = 0;
+  int n[ARCLEN_CUT_PIECES], i;
+  for (i = 0; i <= in->nmin; i++) {
+    hh[i] = (first_to(in, i) - first_from(in, i)) / 2;
+    c[i] = first_from(in, i) + hh[i];
+  }
+  if (!arclen_cut_orders(&in->br, in->nmin + 1, c, hh, in->lgoal, NMAX, n))
+    return 0;
+  prepare_bounds(in);                   /* for sub_integral's cut bounds */
+  for (i = 0; i <= in->nmin; i++) {
+    const arclen_gauss_rule *r = rule_at_least(n[i]);
+    double piece = apply_rule(&in->h, r, c[i], hh[i]);
+    in->evals += r->n;
+    in->pieces++;
+    if (cum + piece >= goal) {
+      if (i == in->nmin && goal >= cum + piece) return 1;   /* t = 1 */
+      *t = solve_in_piece(in, first_from(in, i), first_to(in, i), piece,
+                          goal - cum, in->rtol * in->lest, r);
+      return 1;
+    }
+    cum += piece;
+  }
+  return 1;                            /* s >= L: t = 1 */
 }
 
 int arclen_time_gauss(const double *c, int dim, double s,
@@ -708,15 +804,19 @@ int arclen_time_gauss(const double *c, int dim, double s,
   if (e) return e;
   if (isnan(s)) return ARCLEN_EINVAL;
   if (s <= 0) { *t = 0; return ARCLEN_OK; }
-  if (!start(&in, c, dim, 0, 1, o->rtol * 0.25)) {
+  if (!start(&in, c, dim, 0, 1, o->rtol * 0.25, footcut(o->rtol * 0.25))) {
     *t = 1;              /* a point: every s > 0 is past its end */
     return ARCLEN_OK;
   }
   in.want_err = info != NULL;
-  prepare_bounds(&in);
-  push_initial(&in);
   goal = ldexp(s, -in.h.exp);
   *t = 1;
+  if (!in.want_err && time_first_pieces(&in, goal, t)) {
+    fill_info(info, &in, in.h.exp);
+    return ARCLEN_OK;
+  }
+  prepare_bounds(&in);
+  push_initial(&in);
   while (next_piece(&in, &pa, &pb, &piece, &r)) {
     if (cum + piece >= goal) {
       if (in.top == 0 && goal >= cum + piece) break;   /* s >= L: t = 1 */
