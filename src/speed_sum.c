@@ -20,7 +20,9 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-#if defined(__GNUC__) && defined(__x86_64__)
+/* -DARCLEN_NO_AVX builds without the AVX kernel (to measure the SSE2
+** one on a machine that has AVX). */
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(ARCLEN_NO_AVX)
 #include <immintrin.h>
 #define HAVE_AVX_KERNEL 1
 #endif
