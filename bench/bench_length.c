@@ -12,12 +12,10 @@
 ** (speed_sum.c: two or four square roots per instruction), so that the
 ** ratio to it is what the error control costs beside the rule.
 */
-#include <math.h>
 #include <stdio.h>
 
 #include "arclen.h"
 #include "bench_util.h"
-#include "gauss_tables.h"
 #include "speed_sum.h"
 
 #define NCURVES 3000
@@ -34,30 +32,11 @@ static double gl24(const double *c, double arg) {
   return arclen_length_gl(c, 2, 24);
 }
 
-/* The same rule as a plain loop, one square root at a time on the
-** unscaled hodograph: what a library without packed square roots runs
-** (the peers, and the floor in ../shared/notes/anchors.md). */
 static double plain24(const double *c, double arg) {
-  const arclen_gauss_rule *r = &arclen_gauss_rules[23];
-  double ax[3], ay[3], s = 0;
-  int i;
   (void)arg;
-  ax[0] = 3 * (c[2] - c[0]);
-  ay[0] = 3 * (c[3] - c[1]);
-  ax[1] = 6 * (c[4] - 2 * c[2] + c[0]);
-  ay[1] = 6 * (c[5] - 2 * c[3] + c[1]);
-  ax[2] = 3 * (c[6] - 3 * c[4] + 3 * c[2] - c[0]);
-  ay[2] = 3 * (c[7] - 3 * c[5] + 3 * c[3] - c[1]);
-  for (i = 0; i < r->half; i++) {
-    double t0 = 0.5 - 0.5 * r->x[i], t1 = 0.5 + 0.5 * r->x[i];
-    double x0 = (ax[2] * t0 + ax[1]) * t0 + ax[0];
-    double y0 = (ay[2] * t0 + ay[1]) * t0 + ay[0];
-    double x1 = (ax[2] * t1 + ax[1]) * t1 + ax[0];
-    double y1 = (ay[2] * t1 + ay[1]) * t1 + ay[0];
-    s += r->w[i] * (sqrt(x0 * x0 + y0 * y0) + sqrt(x1 * x1 + y1 * y1));
-  }
-  return 0.5 * s;
+  return bench_plain24(c);
 }
+
 static double len(const double *c, double rtol) { return arclen_length(c, rtol); }
 static double half_time(const double *c, double rtol) {
   return arclen_time(c, halves[(c - curves) / 8], rtol);

@@ -35,6 +35,7 @@ static volatile double sink;
 
 typedef double (*length_fn)(const double *c);
 
+static double plain24(const double *c) { return bench_plain24(c); }
 static double gl24(const double *c) { return arclen_length_gl(c, 2, 24); }
 static double gauss12(const double *c) { return arclen_length(c, 1e-12); }
 static double gauss15(const double *c) { return arclen_length(c, 1e-15); }
@@ -127,7 +128,10 @@ int main(int argc, char **argv) {
         fprintf(stderr, "peers: random curve %d is not bench_util.h's\n", i + 1);
         return 1;
       }
-  report("fixed 24-point Gauss-Legendre (C)", gl24);
+  /* first: run.sh's ratios are to it (one square root at a time, as the
+  ** peers run it); then the same rule in arclen's packed loop */
+  report("fixed 24-point Gauss-Legendre, plain loop (C)", plain24);
+  report("fixed 24-point Gauss-Legendre, arclen_length_gl (C)", gl24);
   report("arclen gauss, tol 1e-12 (C)", gauss12);
   report("arclen gauss, tol 1e-15 (C)", gauss15);
   report("arclen elliptic (C)", elliptic);

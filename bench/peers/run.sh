@@ -8,7 +8,8 @@
 #     families of spec/data/curves2d.tsv with their references.
 # Each peer prints: name, median ns per random curve, max relative error
 # on the random set and on the adversarial set.  The table adds the ratio
-# to the fixed 24-point Gauss-Legendre rule measured in the same run.
+# to the fixed 24-point Gauss-Legendre rule, as a plain loop (one square
+# root at a time), measured in the same run.
 # Peers that cannot be built or run are skipped with a message.
 cd "$(dirname "$0")/../.." || exit 2
 OUT=build/peers
@@ -84,7 +85,7 @@ for line in io.lines(arg[1]) do
 end
 local base = rows[1] and rows[1][1]:match("24%-point") and rows[1][2]
 if not base then print("no GL24 baseline measured"); os.exit(1) end
-print(("| method (%s random curves, %s adversarial) | ns per curve (median) | ratio to GL24 | max rel. error, random | max rel. error, adversarial |")
+print(("| method (%s random curves, %s adversarial) | ns per curve (median) | ratio to the plain 24-point loop | max rel. error, random | max rel. error, adversarial |")
   :format(arg[2], arg[3]))
 print("|---|---|---|---|---|")
 local function e(x) return x == math.huge and "inf (NaN)" or ("%.1e"):format(x) end
