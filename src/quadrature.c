@@ -534,7 +534,7 @@ static int length_fast(const double *c, double rtol, double *len) {
   lkl = 0.5 * rough_log2(br.lead2 * (16 / (3.14159265358979323846 *
                                            3.14159265358979323846))) +
         LOG2_ERR;
-  lgoal = rough_log2(2 * rtol * lest * 1) - lkl - LOG2_ERR;
+  lgoal = rough_log2(2 * rtol * lest) - lkl - LOG2_ERR;   /* width 1 */
   if (!arclen_cut_orders(&br, nmin + 1, mid, hh, lgoal, NMAX, n)) return 0;
   for (i = 0; i <= nmin; i++)
     sum += apply_rule(&h, rule_at_least(n[i]), mid[i], hh[i]);
