@@ -221,7 +221,7 @@ static int l_length(lua_State *L) {
   arclen_info info;
   int next, dim = check_curve_args(L, 0, c, &next), code;
   arclenL_checkopts(L, next, &lo);
-  code = lo.method->length(c, dim, &lo.o, &len, &info);
+  code = lo.method->length(c, dim, &lo.o, &len, lo.info ? &info : NULL);
   return push_result(L, code, len, next, &lo, &info);
 }
 
@@ -241,7 +241,7 @@ static int l_time(lua_State *L) {
   if (lo.method->time == NULL)
     return luaL_argerror(L, next + 1, lua_pushfstring(L,
         "method '%s' has no time (inverse)", lo.method->name));
-  code = lo.method->time(c, dim, s, &lo.o, &t, &info);
+  code = lo.method->time(c, dim, s, &lo.o, &t, lo.info ? &info : NULL);
   return push_result(L, code, t, next + 1, &lo, &info);
 }
 
