@@ -12,18 +12,20 @@ enum {
   ARCLEN_KERNEL_BEST,      /* the widest this machine runs */
   ARCLEN_KERNEL_SCALAR,    /* one square root at a time */
   ARCLEN_KERNEL_SSE2,      /* a pair per packed square root */
-  ARCLEN_KERNEL_AVX        /* two pairs per packed square root */
+  ARCLEN_KERNEL_AVX,       /* two pairs per packed square root */
+  ARCLEN_KERNEL_AVX512     /* four pairs per packed square root */
 };
 
 /* s + sum over i in [i0, half) of w[i] (f(c - hh x[i]) + f(c + hh x[i])),
-** f the speed on h (arclen_hodo_speed), added in increasing i with each
-** pair's two speeds summed first, as the scalar loop writes it. */
+** f the speed on h (arclen_hodo_speed): each pair's two speeds added
+** first, pair i into sum (i - i0) mod 4 (s starts the first), and the
+** sums added up as (s0 + s1) + (s2 + s3). */
 double arclen_speed_pairs(const arclen_hodo *h, const double *x,
                           const double *w, int i0, int half, double c,
                           double hh, double s);
 
-/* The name of the kernel arclen_speed_pairs runs here: "avx", "sse2" or
-** "scalar". */
+/* The name of the kernel arclen_speed_pairs runs here: "avx512", "avx",
+** "sse2" or "scalar". */
 const char *arclen_speed_kernel(void);
 
 /* The same by a given kernel (for the checks that they agree); a kernel
