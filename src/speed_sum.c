@@ -21,8 +21,9 @@
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
-/* -DARCLEN_NO_AVX builds without the AVX and AVX-512 kernels (to measure
-** the SSE2 one on a machine that has them). */
+/* -DARCLEN_NO_AVX builds without the AVX and AVX-512 kernels, and
+** -DARCLEN_NO_AVX512 without the latter (to measure the narrower ones on a
+** machine that has the wider). */
 #if defined(__GNUC__) && defined(__x86_64__) && !defined(ARCLEN_NO_AVX)
 #include <immintrin.h>
 #define HAVE_AVX_KERNEL 1
@@ -148,25 +149,22 @@ static double pairs_sse2(const arclen_hodo *h, const double *x,
       _mm256_add_pd(_mm256_mul_pd(_mm256_add_pd(_mm256_mul_pd(a2, t), a1),  \
                                   t), a0))
 
+/* The coefficients of the hodograph, each broadcast to all lanes. */
+typedef struct coef4 { __m256d x2, x1, x0, y2, y1, y0, z2, z1, z0; } coef4;
+
 /* Pairs i and i + 1 in one register -- lanes c - hh x_i, c - hh x_i+1,
 ** c + hh x_i, c + hh x_i+1 -- so that adding its halves gives both pairs'
 ** sums at once. */
 __attribute__((target("avx"), always_inline))
-static inline __m128d two_pairs_avx(const arclen_hodo *h, __m256d cc,
+static inline __m128d two_pairs_avx(const coef4 *k, __m256d cc,
                                     __m256d lanes, const double *x,
                                     const double *w, int i, int dim3) {
   __m256d xx = _mm256_broadcast_pd((const __m128d *)(x + i));
   __m256d t = _mm256_add_pd(cc, _mm256_mul_pd(lanes, xx));
-  __m256d q = _mm256_add_pd(
-      SQUARE4(_mm256_set1_pd(h->a2[0]), _mm256_set1_pd(h->a1[0]),
-              _mm256_set1_pd(h->a0[0]), t),
-      SQUARE4(_mm256_set1_pd(h->a2[1]), _mm256_set1_pd(h->a1[1]),
-              _mm256_set1_pd(h->a0[1]), t));
+  __m256d q = _mm256_add_pd(SQUARE4(k->x2, k->x1, k->x0, t),
+                            SQUARE4(k->y2, k->y1, k->y0, t));
   __m256d f;
-  if (dim3)
-    q = _mm256_add_pd(q, SQUARE4(_mm256_set1_pd(h->a2[2]),
-                                 _mm256_set1_pd(h->a1[2]),
-                                 _mm256_set1_pd(h->a0[2]), t));
+  if (dim3) q = _mm256_add_pd(q, SQUARE4(k->z2, k->z1, k->z0, t));
   f = _mm256_sqrt_pd(q);
   return _mm_mul_pd(_mm_loadu_pd(w + i),
                     _mm_add_pd(_mm256_castpd256_pd128(f),
@@ -181,10 +179,20 @@ static inline double pairs_avx_dim(const arclen_hodo *h, const double *x,
   const __m256d cc = _mm256_set1_pd(c);
   const __m256d lanes = _mm256_set_pd(hh, hh, -hh, -hh);
   __m128d s01 = _mm_set_pd(0, s), s23 = _mm_setzero_pd();
+  coef4 k;
   double acc[4];
+  k.x2 = _mm256_set1_pd(h->a2[0]);
+  k.x1 = _mm256_set1_pd(h->a1[0]);
+  k.x0 = _mm256_set1_pd(h->a0[0]);
+  k.y2 = _mm256_set1_pd(h->a2[1]);
+  k.y1 = _mm256_set1_pd(h->a1[1]);
+  k.y0 = _mm256_set1_pd(h->a0[1]);
+  k.z2 = _mm256_set1_pd(h->a2[2]);
+  k.z1 = _mm256_set1_pd(h->a1[2]);
+  k.z0 = _mm256_set1_pd(h->a0[2]);
   for (; i + 3 < half; i += 4) {
-    s01 = _mm_add_pd(s01, two_pairs_avx(h, cc, lanes, x, w, i, dim3));
-    s23 = _mm_add_pd(s23, two_pairs_avx(h, cc, lanes, x, w, i + 2, dim3));
+    s01 = _mm_add_pd(s01, two_pairs_avx(&k, cc, lanes, x, w, i, dim3));
+    s23 = _mm_add_pd(s23, two_pairs_avx(&k, cc, lanes, x, w, i + 2, dim3));
   }
   _mm_storeu_pd(acc, s01);
   _mm_storeu_pd(acc + 2, s23);
@@ -249,7 +257,11 @@ static int have_avx(void) {
   return __builtin_cpu_supports("avx");
 }
 static int have_avx512(void) {
+#if defined(ARCLEN_NO_AVX512)
+  return 0;
+#else
   return __builtin_cpu_supports("avx512f");
+#endif
 }
 #endif
 
