@@ -83,20 +83,12 @@ void arclen_split(const double *c, int dim, double t, double *left,
   if (right) memcpy(right, r, 4 * dim * sizeof(double));
 }
 
-/* Power form of z'(t) from the control-point differences (which are exact
-** or correctly rounded wherever the curve sits): Henkel Eqn 4 differentiated,
-** A0 = 3(P1-P0), A1 = 6((P2-P1)-(P1-P0)), A2 = 3((P3-P2)-2(P2-P1)+(P1-P0)). */
+/* The power form of z'(t), every coordinate (arclen_power_form). */
 void arclen_hodograph(const double *c, int dim, double a2[3], double a1[3],
                       double a0[3]) {
   int k;
-  for (k = 0; k < dim; k++) {
-    double d0 = c[dim + k] - c[k];
-    double d1 = c[2 * dim + k] - c[dim + k];
-    double d2 = c[3 * dim + k] - c[2 * dim + k];
-    a0[k] = 3 * d0;
-    a1[k] = 6 * (d1 - d0);
-    a2[k] = 3 * ((d2 - d1) - (d1 - d0));
-  }
+  for (k = 0; k < dim; k++)
+    arclen_power_form(c, dim, k, &a0[k], &a1[k], &a2[k]);
 }
 
 /* Coordinates beyond this may overflow in differences (P3 - P0 can exceed

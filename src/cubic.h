@@ -21,20 +21,35 @@ typedef struct arclen_hodo {
 
 void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h);
 
-/* Coordinate k of the power form, as arclen_hodograph: the largest
-** magnitude so far into *big, and the coefficients' sum into *sum (inf or
-** NaN if any of them overflowed, which the maximum would not show). */
+/* Coordinate k of z'(t) = a2 t^2 + a1 t + a0 from the control-point
+** differences (exact or correctly rounded wherever the curve sits): Henkel
+** Eqn 4 differentiated, A0 = 3(P1-P0), A1 = 6((P2-P1)-(P1-P0)),
+** A2 = 3((P3-P2)-2(P2-P1)+(P1-P0)). */
+#if defined(__GNUC__)
+__attribute__((always_inline))
+#endif
+static inline void arclen_power_form(const double *c, int dim, int k,
+                                     double *a0, double *a1, double *a2) {
+  double d0 = c[dim + k] - c[k];
+  double d1 = c[2 * dim + k] - c[dim + k];
+  double d2 = c[3 * dim + k] - c[2 * dim + k];
+  *a0 = 3 * d0;
+  *a1 = 6 * (d1 - d0);
+  *a2 = 3 * ((d2 - d1) - (d1 - d0));
+}
+
+/* Coordinate k of the power form into h: the largest magnitude so far
+** into *big, and the coefficients' sum into *sum (inf or NaN if any of
+** them overflowed, which the maximum would not show). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline void arclen_hodo_coord(const double *c, int dim, int k,
                                      arclen_hodo *h, double *big,
                                      double *sum) {
-  double d0 = c[dim + k] - c[k];
-  double d1 = c[2 * dim + k] - c[dim + k];
-  double d2 = c[3 * dim + k] - c[2 * dim + k];
-  double a0 = 3 * d0, a1 = 6 * (d1 - d0), a2 = 3 * ((d2 - d1) - (d1 - d0));
-  double m = fabs(a0) > fabs(a1) ? fabs(a0) : fabs(a1);
+  double a0, a1, a2, m;
+  arclen_power_form(c, dim, k, &a0, &a1, &a2);
+  m = fabs(a0) > fabs(a1) ? fabs(a0) : fabs(a1);
   m = m > fabs(a2) ? m : fabs(a2);
   *big = m > *big ? m : *big;
   *sum += (a0 + a1) + a2;

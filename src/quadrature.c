@@ -39,9 +39,9 @@
 ** 0.05-0.06 for 1e-12 and 0.07 for 1e-15, so the share is linear in the
 ** bits, between 0.02 and 0.1.  (With one square root per point, 0.1 had
 ** been best at 1e-12: the dearer the points, the more a cut saves.)  A
-** second piece costs about as much as 30 packed evaluations (its bounds,
-** the estimates below the reference order, a chord, a rule: make
-** bench-icount), so few long pieces beat many short ones; a share of 0.2,
+** second piece costs ~40 ns (its bounds, the estimates below the
+** reference order, a chord, a rule), as much as some 80 packed
+** evaluations, so few long pieces beat many short ones; a share of 0.2,
 ** GRADE 4, NMAX 48 took 10% more time than 0.05 with GRADE 8, NMAX 128. */
 static double footcut(double rtol) {
   double f = -0.0015 * arclen_rough_log2(rtol) - 0.005;
@@ -225,6 +225,45 @@ static double first_to(const integrator *in, int i) {
   return i < in->nmin ? in->mins[i] : in->t1;
 }
 
+/* Inline where the default method's common path takes them. */
+#if defined(__GNUC__)
+#define HOT_INLINE __attribute__((always_inline)) inline
+#else
+#define HOT_INLINE inline
+#endif
+
+/* The feet of br's branch points over (t0, t1) less than cut above it,
+** ascending into mins (at most two: a pair each); returns their number. */
+static HOT_INLINE int feet_of(const arclen_branch *br, double t0, double t1,
+                              double cut, double *mins) {
+  int i, j, n = 0;
+  for (i = 0; i < br->n; i += 2) {
+    double foot = br->re[i];
+    if (foot > t0 && foot < t1 && br->im[i] < cut) {
+      for (j = n; j > 0 && mins[j - 1] > foot; j--)
+        mins[j] = mins[j - 1];             /* insertion: keep ascending */
+      mins[j] = foot;
+      n++;
+    }
+  }
+  return n;
+}
+
+/* log2(lead 4/pi), rounded up, from the lead's square: its square root
+** goes into the log, a square root fewer. */
+static HOT_INLINE double lead_log2(double lead2) {
+  return 0.5 * rough_log2(lead2 * (16 / (3.14159265358979323846 *
+                                         3.14159265358979323846))) +
+         LOG2_ERR;
+}
+
+/* log2 of the pieces' common target, 2 rtol lest / (width lead 4/pi),
+** from below; iw = 1/width, lkl = lead_log2(). */
+static HOT_INLINE double goal_log2(double rtol, double lest, double iw,
+                                   double lkl) {
+  return rough_log2(2 * rtol * lest * iw) - lkl - LOG2_ERR;
+}
+
 /* Set up: the cuts are the feet of the branch points near [t0, t1] (the
 ** real part of each conjugate pair, and each real root): as a branch point
 ** nears the axis the speed dips to a minimum (a near-cusp) right below it,
@@ -235,8 +274,8 @@ static double first_to(const integrator *in, int i) {
 ** when there is nothing to integrate (a point, or a zero speed). */
 static int start(integrator *in, const double *c, int dim, double t0,
                  double t1, double rtol, double share) {
-  int i, j;
-  double iw, cut;
+  int i;
+  double iw;
   /* h, br and cc are filled below; the stack is filled by push() before
   ** pop reads it */
   in->lest = in->logk = in->lgoal = in->err = 0;
@@ -255,16 +294,7 @@ static int start(integrator *in, const double *c, int dim, double t0,
   arclen_branch_points(&in->h, &in->br);
   in->rtol = rtol;
   in->width = t1 - t0;
-  cut = share * in->width;
-  for (i = 0; i < in->br.n; i += 2) {
-    double foot = in->br.re[i];
-    if (foot > t0 && foot < t1 && in->br.im[i] < cut) {
-      for (j = in->nmin; j > 0 && in->mins[j - 1] > foot; j--)
-        in->mins[j] = in->mins[j - 1];     /* insertion: keep ascending */
-      in->mins[j] = foot;
-      in->nmin++;
-    }
-  }
+  in->nmin = feet_of(&in->br, t0, t1, share * in->width, in->mins);
   in->t0 = t0;
   in->t1 = t1;
   for (i = 0; i <= in->nmin; i++)
@@ -275,14 +305,10 @@ static int start(integrator *in, const double *c, int dim, double t0,
     in->lest = 0.5 * apply_rule(&in->h, rule_at_least(8), t0 + in->width / 2,
                                 in->width / 2);
   if (!(in->lest > 0)) return 0;
-  /* the lead's square root and 1/width (1 or 1/2) go into the logs: a
-  ** square root and a division fewer */
-  in->lkl = 0.5 * rough_log2(in->br.lead2 * (16 / (3.14159265358979323846 *
-                                                   3.14159265358979323846))) +
-            LOG2_ERR;
+  /* 1/width (1 or 1/2) goes into the log: a division fewer */
+  in->lkl = lead_log2(in->br.lead2);
   iw = in->width == 1 ? 1 : in->width == 2 ? 0.5 : 1 / in->width;
-  in->lgoal = rough_log2(2 * in->rtol * in->lest * iw) - in->lkl -
-              LOG2_ERR;                           /* a lower bound */
+  in->lgoal = goal_log2(in->rtol, in->lest, iw, in->lkl);
   return 1;
 }
 
@@ -409,6 +435,19 @@ static double integrate_cut(integrator *in, const span *s, double sum) {
   return sum;
 }
 
+/* The first pieces' middles c and half-widths hh, and their orders n
+** straight from the branch points (arclen_cut_orders): 1, or 0 when those
+** are not to be had (a real or far root, a piece to cut). */
+static int first_orders(const integrator *in, double *c, double *hh,
+                        int *n) {
+  int i;
+  for (i = 0; i <= in->nmin; i++) {
+    hh[i] = (first_to(in, i) - first_from(in, i)) / 2;
+    c[i] = first_from(in, i) + hh[i];
+  }
+  return arclen_cut_orders(&in->br, in->nmin + 1, c, hh, in->lgoal, NMAX, n);
+}
+
 /* The whole integral.  The first pieces (at most three, between the feet)
 ** take their bounds and orders together, so that their chains of square
 ** roots and divisions run side by side; then the rules.  Most curves get
@@ -423,11 +462,7 @@ static double integrate(integrator *in) {
   if (!in->want_err) {
     double c[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES];
     int n[ARCLEN_CUT_PIECES];
-    for (i = 0; i <= in->nmin; i++) {
-      hh[i] = (first_to(in, i) - first_from(in, i)) / 2;
-      c[i] = first_from(in, i) + hh[i];
-    }
-    if (arclen_cut_orders(&in->br, in->nmin + 1, c, hh, in->lgoal, NMAX, n)) {
+    if (first_orders(in, c, hh, n)) {
       for (i = 0; i <= in->nmin; i++) {
         in->evals += n[i];
         in->pieces++;
@@ -457,9 +492,6 @@ static int check_args(const double *c, int dim, double rtol, double t0,
   return ARCLEN_OK;
 }
 
-/* x in the integrator's scaled units and local variable as a length of
-** the curve: x unit 2^exp, with unit's exponent folded into exp so that
-** neither product over- or underflows on the way. */
 /* x 2^e, as ldexp(x, e) but for the common e without a call: 2^e is then
 ** a normal number, and the one product rounds as ldexp does (also into
 ** subnormals). */
@@ -473,6 +505,9 @@ static double times_pow2(double x, int e) {
   return ldexp(x, e);
 }
 
+/* x in the integrator's scaled units and local variable as a length of
+** the curve: x unit 2^exp, with unit's exponent folded into exp so that
+** neither product over- or underflows on the way. */
 static double in_curve_units(const integrator *in, double x) {
   int k;
   double m;
@@ -511,19 +546,12 @@ static int length_fast(const double *c, double rtol, double *len) {
   arclen_branch br;
   double mid[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES];
   double mins[ARCLEN_CUT_PIECES - 1];
-  double lest = 0, lkl, lgoal, sum = 0, cut = footcut(rtol);
-  int n[ARCLEN_CUT_PIECES], nmin = 0, i, j;
+  double lest = 0, lgoal, sum = 0;
+  int n[ARCLEN_CUT_PIECES], nmin, i;
   if (!arclen_hodo_quick(c, 2, &h)) return 0;
   arclen_branch_points(&h, &br);
   if (br.n != 4) return 0;
-  for (i = 0; i < 4; i += 2) {
-    double foot = br.re[i];
-    if (foot > 0 && foot < 1 && br.im[i] < cut) {
-      for (j = nmin; j > 0 && mins[j - 1] > foot; j--) mins[j] = mins[j - 1];
-      mins[j] = foot;
-      nmin++;
-    }
-  }
+  nmin = feet_of(&br, 0, 1, footcut(rtol), mins);
   for (i = 0; i <= nmin; i++) {
     double a = i ? mins[i - 1] : 0, b = i < nmin ? mins[i] : 1;
     lest += arclen_hodo_chord(&h, a, b);
@@ -531,10 +559,7 @@ static int length_fast(const double *c, double rtol, double *len) {
     mid[i] = a + hh[i];
   }
   if (!(lest > 0)) return 0;
-  lkl = 0.5 * rough_log2(br.lead2 * (16 / (3.14159265358979323846 *
-                                           3.14159265358979323846))) +
-        LOG2_ERR;
-  lgoal = rough_log2(2 * rtol * lest) - lkl - LOG2_ERR;   /* width 1 */
+  lgoal = goal_log2(rtol, lest, 1, lead_log2(br.lead2));   /* width 1 */
   if (!arclen_cut_orders(&br, nmin + 1, mid, hh, lgoal, NMAX, n)) return 0;
   for (i = 0; i <= nmin; i++)
     sum += apply_rule(&h, rule_at_least(n[i]), mid[i], hh[i]);
@@ -556,9 +581,9 @@ static double length_core(const double *c, int dim, double t0, double t1,
                           double rtol, arclen_info *info) {
   integrator in;
   double a = t0 < t1 ? t0 : t1, b = t0 < t1 ? t1 : t0, sum = 0;
+  double budget = truncation_budget(rtol);
   if (a == b) return 0;
-  if (start(&in, c, dim, a, b, truncation_budget(rtol),
-            footcut(truncation_budget(rtol)))) {
+  if (start(&in, c, dim, a, b, budget, footcut(budget))) {
     in.want_err = info != NULL;
     sum = integrate(&in);
   }
@@ -611,17 +636,6 @@ static void speed_slopes(const arclen_hodo *h, double t, double f,
   }
   *f1 = p / f;
   *f2 = (q - *f1 * *f1) / f;
-}
-
-/* The speed's slope at t, where it is f > 0: (z' . z'')/|z'|. */
-static double speed_slope(const arclen_hodo *h, double t, double f) {
-  double s = 0;
-  int k;
-  for (k = 0; k < h->dim; k++) {
-    double v = (h->a2[k] * t + h->a1[k]) * t + h->a0[k];
-    s += v * (2 * h->a2[k] * t + h->a1[k]);
-  }
-  return s / f;
 }
 
 /* The step to the root of the Taylor polynomial of second order, from the
@@ -772,8 +786,9 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
     } else if (newton_certified(&eb, (b - a) / 2, next - t, tol)) {
       return next;
     } else {
-      double e = second_order_step(&eb, (b - a) / 2, -g / f, f,
-                                   speed_slope(&in->h, t, f), tol);
+      double f1, f2, e;
+      speed_slopes(&in->h, t, f, &f1, &f2);
+      e = second_order_step(&eb, (b - a) / 2, -g / f, f, f1, tol);
       if (e != 0 && t + e > lo && t + e < hi) return t + e;
     }
     if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) break;
@@ -798,12 +813,7 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
 static int time_first_pieces(integrator *in, double goal, double *t) {
   double c[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES], cum = 0;
   int n[ARCLEN_CUT_PIECES], i;
-  for (i = 0; i <= in->nmin; i++) {
-    hh[i] = (first_to(in, i) - first_from(in, i)) / 2;
-    c[i] = first_from(in, i) + hh[i];
-  }
-  if (!arclen_cut_orders(&in->br, in->nmin + 1, c, hh, in->lgoal, NMAX, n))
-    return 0;
+  if (!first_orders(in, c, hh, n)) return 0;
   prepare_bounds(in);                   /* for sub_integral's cut bounds */
   for (i = 0; i <= in->nmin; i++) {
     const arclen_gauss_rule *r = rule_at_least(n[i]);
