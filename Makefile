@@ -63,7 +63,7 @@ $(MODULE): $(CORE_OBJ) $(BIND_OBJ)
 
 # The test command builds the module for every Lua on the machine (5.4 and,
 # where installed, 5.1, 5.2, 5.3 -- also LuaTeX's texlua -- and LuaJIT).
-test: deps
+test:
 	$(MAKE) LUA=5.4
 	@for v in 5.1 5.2 5.3 jit; do \
 	  if [ -f /usr/include/lua$$v/lua.h ] || [ $$v = jit -a -f /usr/include/luajit-2.1/lua.h ]; then \
@@ -73,7 +73,7 @@ test: deps
 deps:
 	@sh tools/deps.sh base
 
-demo: deps $(MODULE)
+demo: $(MODULE)
 	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) lua/arclen/cli.lua henkel
 
 bench: $(BUILD)/libarclen.a
@@ -106,11 +106,11 @@ clean:
 # ---- lenfit (issue 5): Walter & Fournier's Table 1, paper vs default ----
 .PHONY: fit-stats fit-plots
 fit-stats: $(MODULE)
-	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua' $(LUA_BIN) lua/arclen/fitstats.lua
+	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua' $(LUA_BIN) lua/arclen/repro/fitstats.lua
 
 fit-plots: $(MODULE)
 	@mkdir -p $(BUILD)/plots
-	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua' $(LUA_BIN) lua/arclen/plot.lua all $(BUILD)/plots
+	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua' $(LUA_BIN) lua/arclen/repro/plot.lua all $(BUILD)/plots
 
 # The README's accuracy table: worst relative error per reference family.
 .PHONY: accuracy

@@ -783,9 +783,9 @@ end)
 
 -- ---- pictures ---------------------------------------------------------------
 
-describe("arclen.conicplot", function()
+describe("arclen.repro.conicplot", function()
   it("draws Figure 3 and the bound against the level from the module's numbers", function()
-    local cp = require "arclen.conicplot"
+    local cp = require "arclen.repro.conicplot"
     local data = cp.lambda_data(40)
     for _, s in ipairs(SCHEMES) do
       assert.are.equal(40, #data[s])

@@ -5,7 +5,7 @@
 -- gauss_legendre.tsv (mpmath, 40 digits) by tools/ref_lenfit.py.
 local arclen = require "arclen"
 local helpers = require "helpers"
-local fitstats = require "arclen.fitstats"
+local fitstats = require "arclen.repro.fitstats"
 
 local EPS = 2 ^ -52
 
@@ -435,9 +435,9 @@ describe("bad input", function()
   end)
 end)
 
-describe("pictures (arclen.svg, arclen.plot)", function()
-  local svg = require "arclen.svg"
-  local plot = require "arclen.plot"
+describe("pictures (arclen.repro.svgplot, arclen.plot)", function()
+  local svg = require "arclen.repro.svgplot"
+  local plot = require "arclen.repro.plot"
 
   it("svg.histogram bins every value once, linear or log", function()
     local values = {}

@@ -4,7 +4,7 @@
 -- column reproduced digit for digit.
 local arclen = require("arclen")
 local H = require("helpers")
-local henkel = require("arclen.henkel")
+local henkel = require("arclen.repro.henkel")
 
 local have_elliptic = false
 for _, m in ipairs(arclen.methods()) do

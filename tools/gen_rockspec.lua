@@ -9,7 +9,7 @@ local function ls(cmd)
   return out
 end
 local csrc = ls("ls src/*.c")
-local lmods = ls("ls lua/arclen/*.lua")
+local lmods = ls("find lua/arclen -name '*.lua'")
 local lines = {
   'package = "arclen"',
   'version = "scm-1"',

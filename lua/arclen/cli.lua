@@ -243,7 +243,7 @@ end
 local commands = {}
 
 function commands.henkel()
-  io.write(require("arclen.henkel").report())
+  io.write(require("arclen.repro.henkel").report())
 end
 
 function commands.length(opts, args)

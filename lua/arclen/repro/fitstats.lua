@@ -4,7 +4,7 @@
 -- (Eqn 9 on t = 0, 0.05, ..., 0.95), non-monotone fits and integrand
 -- evaluations, for the paper's method and the default.
 --
---   local fs = require "arclen.fitstats"
+--   local fs = require "arclen.repro.fitstats"
 --   local curves = fs.random_set(3000, 1)       -- the paper's random set
 --   local row = fs.stats(curves, {method = "paper", n = 10}, {truth = "simpson"})
 --   print(row.max, row.avgmax, row.avgavg, row.nonmono, row.evals)
@@ -195,6 +195,6 @@ function M.main(args)
   end
 end
 
-if ... ~= "arclen.fitstats" then M.main(arg) end
+if ... ~= "arclen.repro.fitstats" then M.main(arg) end
 
 return M

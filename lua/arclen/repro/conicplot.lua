@@ -1,11 +1,11 @@
 -- arclen.conicplot -- pictures of Floater's conic schemes:
 --   lambda(w) of the five schemes on 0 < w < 4 (the paper's Figure 3), and
 --   the error bound of Theorem 1 against the subdivision level r.
--- The numbers come from the module; the drawing from arclen.svg.
---   local cp = require "arclen.conicplot"
+-- The numbers come from the module; the drawing from arclen.repro.svgplot.
+--   local cp = require "arclen.repro.conicplot"
 --   cp.write_lambda("lambda.svg"); cp.write_levels("levels.svg")
 local arclen = require "arclen"
-local svg = require "arclen.svg"
+local svg = require "arclen.repro.svgplot"
 
 local M = {}
 

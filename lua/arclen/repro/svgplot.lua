@@ -1,10 +1,10 @@
--- arclen.svg -- a small pure-Lua SVG plotting library (no dependencies).
+-- arclen.repro.svgplot -- a small pure-Lua SVG plotting library (no dependencies).
 --
 -- A figure has one pair of axes (linear or log10 on each), ticks with
 -- labels, a title, axis labels, a legend, and any number of items drawn in
 -- data coordinates, clipped to the plot area:
 --
---   local svg = require "arclen.svg"
+--   local svg = require "arclen.repro.svgplot"
 --   local fig = svg.figure{title = "s(t)", xlabel = "t", ylabel = "s/L",
 --                          xrange = {0, 1}, yrange = {0, 1}}
 --   fig:line({{0, 0}, {0.5, 0.4}, {1, 1}}, {label = "fit", color = "#d62728"})

@@ -1,5 +1,5 @@
 -- arclen.plot -- pictures of the length-versus-t fits (Walter & Fournier
--- 1996), drawn with arclen.svg:
+-- 1996), drawn with arclen.repro.svgplot:
 --   plot.fit(c [, opts])        the true s(t)/s(1) against the fits, with the
 --                               span boundaries and the "inflexion points"
 --                               (the paper's Figures 2, 3 and 9)
@@ -15,7 +15,7 @@
 --   lua5.4 lua/arclen/plot.lua fit x0 y0 x1 y1 x2 y2 x3 y3 [out.svg]
 --   lua5.4 lua/arclen/plot.lua all [dir]     every figure into dir (.)
 local arclen = require "arclen"
-local svg = require "arclen.svg"
+local svg = require "arclen.repro.svgplot"
 
 -- math.log has no base argument in Lua 5.1 and LuaJIT; 5.4 has no log10.
 local log10 = math.log10 or function(x) return math.log(x, 10) end
@@ -215,7 +215,7 @@ end
 -- Writes every figure into dir; returns the list of paths.
 function M.all(dir)
   dir = dir or "."
-  local fs = require "arclen.fitstats"
+  local fs = require "arclen.repro.fitstats"
   local written = {}
   local function out(name, text)
     written[#written + 1] = svg.write(dir .. "/" .. name, text)
@@ -283,6 +283,6 @@ local function main(args)
   end
 end
 
-if ... ~= "arclen.plot" then main(arg) end
+if ... ~= "arclen.repro.plot" then main(arg) end
 
 return M

@@ -9,8 +9,8 @@
 -- (spec/data/henkel_published.tsv, parsed from the paper by
 -- tools/henkel_published.py) with its own error.
 --
---   require("arclen.henkel").report()  -> the text of the six tables
---   require("arclen.henkel").rows()    -> the same as data
+--   require("arclen.repro.henkel").report()  -> the text of the six tables
+--   require("arclen.repro.henkel").rows()    -> the same as data
 local arclen = require("arclen")
 
 local M = {}
