@@ -32,33 +32,42 @@ endif
 
 BUILD = build
 OUT = $(BUILD)/$(LUA)
-CORE_SRC = $(filter-out src/lua_%.c,$(wildcard src/*.c))
-BIND_SRC = $(wildcard src/lua_*.c)
+# src/<area>/*.c is the core (no Lua); src/lua/ is the binding.  See
+# doc/architecture.md for the areas and the one-way order between them.
+AREAS = curve roots gauss elliptic metapost fit conic baseline methods
+CORE_SRC = $(foreach a,$(AREAS),$(wildcard src/$(a)/*.c))
+BIND_SRC = $(wildcard src/lua/*.c)
 CORE_OBJ = $(patsubst src/%.c,$(BUILD)/core/%.o,$(CORE_SRC))
 BIND_OBJ = $(patsubst src/%.c,$(OUT)/%.o,$(BIND_SRC))
-HEADERS = $(wildcard src/*.h)
-MODULE = $(OUT)/arclen.so
+HEADERS = $(wildcard src/*.h src/*/*.h)
+# The C part is the module arclen.core; require "arclen" is lua/arclen/init.lua.
+MODULE = $(OUT)/arclen/core.so
 LIBDIR = $(PREFIX)/lib/lua/$(LUA_ABI)
 SHAREDIR = $(PREFIX)/share/lua/$(LUA_ABI)
 
-.PHONY: all lib test deps demo bench bench-icount bench-explore bench-latency install uninstall clean
+.PHONY: all lib check-layers test deps demo bench bench-icount bench-explore bench-latency install uninstall clean
 
 all: $(MODULE)
 
 lib: $(BUILD)/libarclen.a
 
+# The areas depend one way and no two object files on each other (nm).
+check-layers: $(CORE_OBJ)
+	python3 tools/check_layers.py $(BUILD)/core
+
 $(BUILD)/core/%.o: src/%.c $(HEADERS)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(CORE_FLAGS) -c $< -o $@
+	$(CC) $(CFLAGS) $(CORE_FLAGS) -Isrc -c $< -o $@
 
 $(OUT)/%.o: src/%.c $(HEADERS)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(CORE_FLAGS) -I$(LUA_INC) -c $< -o $@
+	$(CC) $(CFLAGS) $(CORE_FLAGS) -Isrc -I$(LUA_INC) -c $< -o $@
 
 $(BUILD)/libarclen.a: $(CORE_OBJ)
 	ar rcs $@ $^
 
 $(MODULE): $(CORE_OBJ) $(BIND_OBJ)
+	@mkdir -p $(dir $@)
 	$(CC) -shared -o $@ $^ -lm
 
 # The test command builds the module for every Lua on the machine (5.4 and,
@@ -89,14 +98,16 @@ bench-latency: $(BUILD)/libarclen.a
 	$(MAKE) -C bench latency
 
 install: $(MODULE)
-	mkdir -p $(DESTDIR)$(LIBDIR) $(DESTDIR)$(SHAREDIR)/arclen $(DESTDIR)$(PREFIX)/bin
-	cp $(MODULE) $(DESTDIR)$(LIBDIR)/arclen.so
+	mkdir -p $(DESTDIR)$(LIBDIR)/arclen $(DESTDIR)$(SHAREDIR)/arclen/repro $(DESTDIR)$(PREFIX)/bin
+	cp $(MODULE) $(DESTDIR)$(LIBDIR)/arclen/core.so
 	cp lua/arclen/*.lua $(DESTDIR)$(SHAREDIR)/arclen/
+	cp lua/arclen/repro/*.lua $(DESTDIR)$(SHAREDIR)/arclen/repro/
 	sed '1s|.*|#!/usr/bin/env $(LUA_BIN)|' bin/arclen > $(DESTDIR)$(PREFIX)/bin/arclen
 	chmod 755 $(DESTDIR)$(PREFIX)/bin/arclen
 
 uninstall:
-	rm -f $(DESTDIR)$(LIBDIR)/arclen.so $(DESTDIR)$(PREFIX)/bin/arclen
+	rm -f $(DESTDIR)$(LIBDIR)/arclen/core.so $(DESTDIR)$(PREFIX)/bin/arclen
+	-rmdir $(DESTDIR)$(LIBDIR)/arclen
 	rm -rf $(DESTDIR)$(SHAREDIR)/arclen
 
 clean:
@@ -106,11 +117,11 @@ clean:
 # ---- lenfit (issue 5): Walter & Fournier's Table 1, paper vs default ----
 .PHONY: fit-stats fit-plots
 fit-stats: $(MODULE)
-	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua' $(LUA_BIN) lua/arclen/repro/fitstats.lua
+	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) lua/arclen/repro/fitstats.lua
 
 fit-plots: $(MODULE)
 	@mkdir -p $(BUILD)/plots
-	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua' $(LUA_BIN) lua/arclen/repro/plot.lua all $(BUILD)/plots
+	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) lua/arclen/repro/plot.lua all $(BUILD)/plots
 
 # The README's accuracy table: worst relative error per reference family.
 .PHONY: accuracy

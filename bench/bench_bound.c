@@ -10,9 +10,9 @@
 
 #include "arclen.h"
 #include "bench_util.h"
-#include "cubic.h"
-#include "gauss_bound.h"
-#include "gauss_tables.h"
+#include "curve/cubic.h"
+#include "gauss/bound.h"
+#include "gauss/gauss_tables.h"
 
 #define NCURVES 3000
 #define MAXRATIOS (NCURVES * 128)

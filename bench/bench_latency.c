@@ -14,8 +14,8 @@
 
 #include "arclen.h"
 #include "bench_util.h"
-#include "cubic.h"
-#include "gauss_bound.h"
+#include "curve/cubic.h"
+#include "gauss/bound.h"
 
 #define NCURVES 3000
 #define ROUNDS 3

@@ -16,7 +16,7 @@
 
 #include "arclen.h"
 #include "bench_util.h"
-#include "speed_sum.h"
+#include "gauss/speed_sum.h"
 
 #define NCURVES 3000
 #define REPS 64

@@ -11,7 +11,7 @@
 #include <stdlib.h>
 #include <time.h>
 
-#include "gauss_tables.h"
+#include "gauss/gauss_tables.h"
 
 /* xorshift64* (Vigna): a fixed seed gives the same set on every machine. */
 static inline double bench_uniform(uint64_t *s) {

@@ -33,8 +33,8 @@
 
 #include "arclen.h"
 #include "bench_util.h"
-#include "cubic.h"
-#include "gauss_tables.h"
+#include "curve/cubic.h"
+#include "gauss/gauss_tables.h"
 
 #define NCURVES 3000
 #define SLOPE 0.2        /* A; the linear map's slope is 0.5 */

@@ -28,8 +28,8 @@ if ARCLEN_BUILD then
   end)
 end
 -- LuaTeX searches with kpathsea before package.cpath, and could find another
--- arclen.so first: load the one of this build by its file name.
-local open = package.loadlib(build .. "/arclen.so", "luaopen_arclen")
+-- arclen first: load the core of this build by its file name.
+local open = package.loadlib(build .. "/arclen/core.so", "luaopen_arclen")
 if open then package.loaded.arclen = open("arclen") end
 local arclen = require("arclen")
 

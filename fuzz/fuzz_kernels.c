@@ -5,8 +5,8 @@
 ** that no result depends on the machine.
 */
 #include "fuzz_input.h"
-#include "gauss_tables.h"
-#include "speed_sum.h"
+#include "gauss/gauss_tables.h"
+#include "gauss/speed_sum.h"
 
 static int same(double a, double b) {
   return memcmp(&a, &b, sizeof a) == 0 || (a != a && b != b);

@@ -1,6 +1,6 @@
 #!/bin/sh
 # tools/check-valgrind.sh -- the whole spec suite under valgrind memcheck
-# with the normal build (build/5.4/arclen.so, built here if missing).
+# with the normal build (build/5.4/arclen/core.so, built here if missing).
 # Errors (invalid reads/writes, uses of uninitialised values) and definite
 # or indirect leaks make valgrind exit 1; "still reachable" blocks (what
 # the interpreter and busted hold at exit) are not errors.  No suppression

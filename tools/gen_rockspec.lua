@@ -8,7 +8,8 @@ local function ls(cmd)
   table.sort(out)
   return out
 end
-local csrc = ls("ls src/*.c")
+-- The areas of the core and the binding: every .c under src/.
+local csrc = ls("find src -name '*.c'")
 local lmods = ls("find lua/arclen -name '*.lua'")
 local lines = {
   'package = "arclen"',
@@ -25,7 +26,7 @@ local lines = {
   'build = {',
   '  type = "builtin",',
   '  modules = {',
-  '    arclen = {',
+  '    ["arclen.core"] = {',
   '      sources = {',
 }
 for _, f in ipairs(csrc) do lines[#lines + 1] = ('        "%s",'):format(f) end
@@ -35,7 +36,7 @@ lines[#lines + 1] = '      libraries = { "m" },'
 lines[#lines + 1] = '      incdirs = { "src" },'
 lines[#lines + 1] = '    },'
 for _, f in ipairs(lmods) do
-  local mod = f:match("^lua/(.*)%.lua$"):gsub("/", ".")
+  local mod = f:match("^lua/(.*)%.lua$"):gsub("/", "."):gsub("%.init$", "")
   lines[#lines + 1] = ('    ["%s"] = "%s",'):format(mod, f)
 end
 lines[#lines + 1] = '  },'

@@ -54,6 +54,12 @@ smoke() {   # smoke LUA BIN: load the module and check a few values
   count "smoke under $2"
 }
 
+# The core's areas depend one way, with no cycle between object files.
+if command -v python3 >/dev/null && command -v nm >/dev/null; then
+  echo "== the areas' dependencies (tools/check_layers.py over build/core)"
+  python3 tools/check_layers.py build/core 2>&1 | tee "$OUT"
+  count "check_layers"
+fi
 for v in 5.1 5.2 5.3 jit; do
   case $v in jit) bin=luajit ;; *) bin=lua$v ;; esac
   command -v "$bin" >/dev/null || continue
@@ -61,7 +67,7 @@ for v in 5.1 5.2 5.3 jit; do
 done
 for t in texlua:5.3:5.3 texluajit:jit:5.1; do   # binary:build:module ABI
   bin=${t%%:*}; rest=${t#*:}; v=${rest%%:*}; abi=${rest#*:}
-  command -v "$bin" >/dev/null && [ -f "build/$v/arclen.so" ] || continue
+  command -v "$bin" >/dev/null && [ -f "build/$v/arclen/core.so" ] || continue
   ( texlua_env "$abi"
     if [ -z "$SMOKE" ] && [ -f "/usr/share/lua/$abi/busted/runner.lua" ]; then
       suite "$v" "$bin"; else smoke "$v" "$bin"; fi
@@ -71,7 +77,7 @@ for t in texlua:5.3:5.3 texluajit:jit:5.1; do   # binary:build:module ABI
 done
 rm -f "$OUT.totals"
 # The same example inside a LuaTeX document (the PDF goes to build/).
-if command -v luatex >/dev/null && [ -f build/5.3/arclen.so ]; then
+if command -v luatex >/dev/null && [ -f build/5.3/arclen/core.so ]; then
   echo "== luatex --shell-escape examples/mplib_path.tex (build/5.3)"
   rm -f build/mplib_path.pdf
   luatex --shell-escape --interaction=nonstopmode --halt-on-error \
@@ -92,7 +98,7 @@ if command -v luarocks >/dev/null; then
   echo "== luarocks make rockspec/arclen-scm-1.rockspec (into build/rocktree)"
   if luarocks --lua-version 5.4 make rockspec/arclen-scm-1.rockspec \
        --tree build/rocktree >build/luarocks.log 2>&1; then
-    rm -f src/*.o
+    find src -name "*.o" -delete
     echo "== specs under lua5.4 (the luarocks-installed module)"
     lua5.4 /usr/bin/busted --cpath="build/rocktree/lib/lua/5.4/?.so" \
       --lpath="build/rocktree/share/lua/5.4/?.lua;spec/?.lua" \

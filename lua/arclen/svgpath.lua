@@ -10,7 +10,7 @@
 -- scheme) at a Hausdorff distance of at most arc_tol * max(rx, ry, chord/2).
 -- Errors are raised as {pos = byte position, msg = text} tables; the caller
 -- turns them into "bad argument" messages.
-local arclen = require("arclen")
+local arclen = require("arclen.core")
 
 local M = {}
 

@@ -1,5 +1,5 @@
 /*
-** gauss_bound.h -- an a priori bound on the error of Gauss-Legendre
+** bound.h -- an a priori bound on the error of Gauss-Legendre
 ** quadrature of the speed over one piece, read off the speed's branch
 ** points (gauss_bound.c), and the order it asks for.
 */
@@ -9,7 +9,7 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "cubic.h"
+#include "curve/cubic.h"
 
 /* log2(x) within ARCLEN_LOG2_ERR, for choosing orders (callers add the
 ** margin): log2(m 2^e) = e + log2(1 + t), t = m - 1 in [0, 1), and

@@ -33,12 +33,6 @@ double arclen_ell_product(double a1, double b1, double a2, double b2,
 int arclen_ell_length3d(const double a2[3], const double a1[3],
                         const double a0[3], double y, double x,
                         const char **branch, long *calls, double *len);
-/* The roots s1, s2 of |a2 t^2 + a1 t + a0|^2 (3D, a2 != 0) in the upper
-** half plane, with |a2|^2 |t - s1|^2 |t - s2|^2 = that quartic; close
-** roots are set in a frame about their cluster (elliptic3d.c).  Also the
-** 3D branch points of the default method (branch.c). */
-int arclen_ell_roots3d(const double a2[3], const double a1[3],
-                       const double a0[3], double re[2], double im[2]);
 /* int_y^x |t - s| dt, s = a + ib (one factor; a series when s is far). */
 double arclen_ell_single(double a, double b, double y, double x);
 /* int_v^w sqrt(u^2 + b^2) du and int_v^w u sqrt(u^2 + b^2) du. */

@@ -10,8 +10,8 @@
 #include <math.h>
 
 #include "arclen.h"
-#include "cubic.h"
-#include "elliptic.h"
+#include "curve/cubic.h"
+#include "roots/roots3d.h"
 
 /* A computed imaginary part below this relative size is rounding noise:
 ** the root is real (a cusp).  In 2D the roots come from a quadratic formula
@@ -138,7 +138,7 @@ static double complex near_cusp(const arclen_hodo *h, double complex z) {
 }
 
 /* Representatives of two roots of Q this close (relative) are a cluster:
-** as in elliptic3d.c (CLOSE_REL), where the roots are then recomputed. */
+** as in roots/roots3d.c (CLOSE_REL), where the roots are then recomputed. */
 #define CLUSTER_REL 0.05
 
 /* Not inlined: its frame and saved registers would be set up on the 2D
@@ -191,10 +191,10 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
   }
   if (deg == 4 && nr == 2 &&
       cabs(rep[0] - rep[1]) <= CLUSTER_REL * fmax(1, cabs(rep[0])) &&
-      arclen_ell_roots3d(h->a2, h->a1, h->a0, re, im) == ARCLEN_OK) {
+      arclen_roots3d(h->a2, h->a1, h->a0, re, im) == ARCLEN_OK) {
     /* close roots (a stop: a quadruple root, found to eps^(1/4) from Q's
     ** coefficients; a near double pair): the elliptic method's, set in a
-    ** frame about their cluster (elliptic3d.c) */
+    ** frame about their cluster (roots/roots3d.c) */
     add_pair(b, re[0] + I * im[0], REAL_ROOT_RTOL3);
     add_pair(b, re[1] + I * im[1], REAL_ROOT_RTOL3);
     return;

@@ -1,12 +1,12 @@
 /*
-** lua_arclen.c -- the Lua binding's shared argument checking and the core
+** module.c -- the Lua binding's shared argument checking and the core
 ** functions: length, time, point, derivative, split, subcurve, critical.
 ** Every misuse raises "bad argument #n to 'fn' (...)", as lauxlib does.
 */
 #include <math.h>
 #include <string.h>
 
-#include "lua_arclen.h"
+#include "lua/binding.h"
 
 /* ---- argument checking ------------------------------------------------ */
 
@@ -359,17 +359,43 @@ void arclen_open_core(lua_State *L) {
   lua_setfield(L, -2, "_VERSION");
 }
 
-int luaopen_arclen(lua_State *L);
+/* The C part of the module: require "arclen.core".  `require "arclen"`
+** is lua/arclen/init.lua, which adds the Lua parts (arclen.path) to it. */
+int luaopen_arclen_core(lua_State *L);
 
-int luaopen_arclen(lua_State *L) {
+int luaopen_arclen_core(lua_State *L) {
   lua_newtable(L);
   arclen_open_core(L);
   arclen_open_conic(L);
   arclen_open_henkel(L);
   arclen_open_elliptic(L);
   arclen_open_fit(L);
-  arclen_open_path(L);
   arclen_open_batch(L);
   /* new areas: one line each, above this line */
+  return 1;
+}
+
+/* The entry point for package.loadlib(".../arclen/core.so", "luaopen_arclen")
+** (LuaTeX documents): the core, registered as "arclen.core", then the whole
+** module by require "arclen.init" when the Lua parts are on package.path;
+** without them, the core alone. */
+int luaopen_arclen(lua_State *L);
+
+int luaopen_arclen(lua_State *L) {
+  luaopen_arclen_core(L);
+  lua_getglobal(L, "package");
+  if (lua_istable(L, -1)) {
+    lua_getfield(L, -1, "loaded");
+    if (lua_istable(L, -1)) {
+      lua_pushvalue(L, -3);
+      lua_setfield(L, -2, "arclen.core");
+    }
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  lua_getglobal(L, "require");
+  lua_pushliteral(L, "arclen.init");
+  if (lua_pcall(L, 1, 1, 0) == 0 && lua_istable(L, -1)) return 1;
+  lua_pop(L, 1);
   return 1;
 }

@@ -1,11 +1,11 @@
 /*
-** lua_conic.c -- the Lua binding of Floater's conic approximation:
+** conic.c -- the Lua binding of Floater's conic approximation:
 ** conic, ellipse_arc, svg_arc, fullcircle, conic_length, conic_scheme.
 */
 #include <math.h>
 #include <string.h>
 
-#include "lua_arclen.h"
+#include "lua/binding.h"
 
 #define PI 3.14159265358979323846
 

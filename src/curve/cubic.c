@@ -6,7 +6,7 @@
 #include <string.h>
 
 #include "arclen.h"
-#include "cubic.h"
+#include "curve/cubic.h"
 
 int arclen_check_curve(const double *c, int dim) {
   double z = 0;

@@ -16,7 +16,7 @@
 */
 #include <math.h>
 
-#include "speed_sum.h"
+#include "gauss/speed_sum.h"
 
 #if defined(__SSE2__)
 #include <emmintrin.h>

@@ -1,12 +1,12 @@
 /*
-** lua_arclen.h -- what the binding files share: argument checking in the
+** binding.h -- what the binding files share: argument checking in the
 ** style of lauxlib (errors name the argument), and each area's opener.
 ** Internal to the module; C users include arclen.h only.
 */
 #ifndef LUA_ARCLEN_H
 #define LUA_ARCLEN_H
 
-#include "compat.h"
+#include "lua/compat.h"
 #include "arclen.h"
 
 /* A curve argument: a table of 8 (2D) or 12 (3D) numbers, or of 4 points
@@ -41,13 +41,12 @@ void arclenL_pushinfo(lua_State *L, const arclen_info *info);
 int arclenL_argcode(lua_State *L, int arg, int code);
 
 /* Each area registers its functions into the module table at the top of
-** the stack (lua_arclen.c calls them from luaopen_arclen). */
+** the stack (module.c calls them from luaopen_arclen_core). */
 void arclen_open_core(lua_State *L);
 void arclen_open_conic(lua_State *L);
 void arclen_open_henkel(lua_State *L);
 void arclen_open_elliptic(lua_State *L);
 void arclen_open_fit(lua_State *L);
-void arclen_open_path(lua_State *L);
 void arclen_open_batch(lua_State *L);
 /* new areas: one line each, above this line */
 

@@ -1,12 +1,12 @@
 /*
-** lua_elliptic.c -- the Lua binding of Carlson's R-functions
+** elliptic.c -- the Lua binding of Carlson's R-functions
 ** (arclen.carlson.rf/rd/rc/rj/rg) and the polynomial root solvers
 ** (arclen.quadratic/cubic/quartic, arclen.quartic_factor).
 ** Domain errors name the argument: "bad argument #2 to 'rf' (...)".
 */
 #include <math.h>
 
-#include "lua_arclen.h"
+#include "lua/binding.h"
 
 static const char *const XYZP[] = {"x", "y", "z", "p"};
 

@@ -1,5 +1,5 @@
 /*
-** lua_henkel.c -- the Lua binding of what is MetaPost-specific: the table
+** henkel.c -- the Lua binding of what is MetaPost-specific: the table
 ** arclen.metapost with arclength and arctime of one cubic and of MetaPost
 ** paths (open or cyclic, several segments).  Where mpost reports
 ** "Arithmetic overflow" (a leg of 16384 or more) these return nil and
@@ -8,7 +8,7 @@
 */
 #include <string.h>
 
-#include "lua_arclen.h"
+#include "lua/binding.h"
 
 #define MAX_SEGMENTS 10000000   /* keeps the scratch allocation sane */
 

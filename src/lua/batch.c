@@ -1,5 +1,5 @@
 /*
-** lua_batch.c -- arclen.lengths(coords [, opts]) and arclen.lengths3: the
+** batch.c -- arclen.lengths(coords [, opts]) and arclen.lengths3: the
 ** length of every cubic in a flat array of numbers (8 per curve in 2D, 12
 ** in 3D) in one call, returned as an array.  The curves are read in
 ** chunks into a C buffer and measured by arclen_lengths (batch.c), so a
@@ -9,7 +9,7 @@
 */
 #include <math.h>
 
-#include "lua_arclen.h"
+#include "lua/binding.h"
 
 #define CHUNK 256      /* curves per buffer: 24 KB of stack in 3D */
 

@@ -1,5 +1,5 @@
 /*
-** gauss_bound.c -- how many Gauss-Legendre points a piece needs, from the
+** bound.c -- how many Gauss-Legendre points a piece needs, from the
 ** branch points of the speed.
 **
 ** On a piece t = c + hh u, u in [-1, 1], write F(w) = f(c + hh J(w)) with
@@ -37,9 +37,9 @@
 #include <stdint.h>
 #include <string.h>
 
-#include "gauss_bound.h"
-#include "ellipse_table.h"
-#include "gauss_tables.h"
+#include "gauss/bound.h"
+#include "gauss/ellipse_table.h"
+#include "gauss/gauss_tables.h"
 
 /* For the helpers on the path to the first evaluation: one call each
 ** would cost more than its body. */

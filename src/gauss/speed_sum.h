@@ -5,7 +5,7 @@
 #ifndef ARCLEN_SPEED_SUM_H
 #define ARCLEN_SPEED_SUM_H
 
-#include "cubic.h"
+#include "curve/cubic.h"
 
 /* The ways to run the loop; each gives the same sum to the bit. */
 enum {

@@ -1,12 +1,10 @@
 /*
-** elliptic3d.c -- the elliptic length of a space cubic.  |z'(t)|^2 is a
-** sum of three squares, not |complex quadratic|^2, so the quartic
-** Q = c4 t^4 + ... + c0 (Henkel Eqn 8 with a z term) is split into two
-** real quadratics by the quartic solver (roots.c); each factor's root is
-** then polished by complex Newton on Q(s) = sum_k z'_k(s)^2 evaluated from
-** the hodograph itself: near a cusp every z'_k(s) is small, so this form
-** keeps the root's imaginary part b to full accuracy where the expanded
-** coefficients c_i would give only sqrt(eps) (shared/notes/elliptic.md).
+** roots3d.c -- the branch points of a space cubic's speed: the roots of
+** |z'(t)|^2 = |a2 t^2 + a1 t + a0|^2 (a real quartic) in the upper half
+** plane, split into two quadratics by the quartic solver (roots.c) and
+** polished by complex Newton on the hodograph's own form of the quartic.
+** The elliptic method (elliptic3d.c) and the default method's branch points
+** (gauss/branch.c) both take them from here.
 **
 ** Roots close together are where Newton on Q fails: each of two roots a
 ** distance d apart is placed only to eps/d, and an error in their centre
@@ -29,7 +27,7 @@
 #include <math.h>
 
 #include "arclen.h"
-#include "elliptic.h"
+#include "roots/roots3d.h"
 
 #define POLISH_CAP 80   /* linear phase inside a close pair, then quadratic */
 #define FACTOR_CAP 60   /* contraction <= 1/16 per step (PAIR_OFF below) */
@@ -76,10 +74,6 @@ static double complex polish(const double a2[3], const double a1[3],
 
 static double dot3(const double *u, const double *v) {
   return u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
-}
-
-static double maxabs3(const double *u) {
-  return fmax(fabs(u[0]), fmax(fabs(u[1]), fabs(u[2])));
 }
 
 /* The two roots of Q = |a2 t^2 + a1 t + a0|^2 in the upper half plane
@@ -165,8 +159,8 @@ static int is_pair(double complex s1, double complex s2, double unit) {
          fmin(cimag(s1), cimag(s2)) > PAIR_OFF * d;
 }
 
-int arclen_ell_roots3d(const double a2[3], const double a1[3],
-                       const double a0[3], double re[2], double im[2]) {
+int arclen_roots3d(const double a2[3], const double a1[3],
+                     const double a0[3], double re[2], double im[2]) {
   double complex s1, s2;
   int e = roots(a2, a1, a0, 1, &s1, &s2);
   if (e != ARCLEN_OK) return e;
@@ -194,43 +188,5 @@ int arclen_ell_roots3d(const double a2[3], const double a1[3],
   }
   re[0] = creal(s1); im[0] = cimag(s1);
   re[1] = creal(s2); im[1] = cimag(s2);
-  return ARCLEN_OK;
-}
-
-int arclen_ell_length3d(const double a2[3], const double a1[3],
-                        const double a0[3], double y, double x,
-                        const char **branch, long *calls, double *len) {
-  double n2, n1, m2 = maxabs3(a2), m1 = maxabs3(a1), m0 = maxabs3(a0);
-  double re[2], im[2];
-  int e;
-  /* A term below 2^-56 of the larger lower ones changes the length by less
-  ** than a rounding (int |z'| >= max(|A1|, |A0|)/2 on the range, which
-  ** has length <= 2), and its square would underflow: dropped.  (A
-  ** sub-range's own hodograph keeps residues like 1e-160 of the others
-  ** that the whole curve's rounding made 0; kept, they gave 5% errors.) */
-  if (m2 <= 0x1p-56 * fmax(m1, m0)) {
-    /* z' = A1 t + A0: |A1| |t - s| with s = a + ib, a = -A1.A0/|A1|^2
-    ** and b = |A1 x A0|/|A1|^2 (the cross product, free of cancellation) */
-    double cx, cy, cz, a, b;
-    if (m1 <= 0x1p-56 * m0) {
-      *branch = "line";
-      *len = sqrt(dot3(a0, a0)) * (x - y);
-      return ARCLEN_OK;
-    }
-    n1 = sqrt(dot3(a1, a1));
-    cx = a1[1] * a0[2] - a1[2] * a0[1];
-    cy = a1[2] * a0[0] - a1[0] * a0[2];
-    cz = a1[0] * a0[1] - a1[1] * a0[0];
-    a = -dot3(a1, a0) / (n1 * n1);
-    b = sqrt(cx * cx + cy * cy + cz * cz) / (n1 * n1);
-    *branch = "quadratic";
-    *len = n1 * arclen_ell_single(a, b, y, x);
-    return ARCLEN_OK;
-  }
-  n2 = sqrt(dot3(a2, a2));
-  e = arclen_ell_roots3d(a2, a1, a0, re, im);
-  if (e != ARCLEN_OK) return e;
-  *len = n2 * arclen_ell_product(re[0], im[0], re[1], im[1],
-                                 y, x, branch, calls);
   return ARCLEN_OK;
 }

@@ -1,5 +1,5 @@
 /*
-** lua_fit.c -- the Lua binding of the length-versus-t fits (lenfit.c):
+** fit.c -- the Lua binding of the length-versus-t fits (lenfit.c):
 **   arclen.fit(c [, {method = "hermite"|"paper", n = , tol = , monotone = }])
 **   fit:length(t)  fit:value(t)  fit:time(s)  fit:spans()  fit:monotone()
 **   fit:errors([{truth = "simpson"|"exact", inverse = , npts = }])
@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <string.h>
 
-#include "lua_arclen.h"
+#include "lua/binding.h"
 
 #define FIT_MT "arclen.fit"
 

@@ -24,10 +24,10 @@
 #include <string.h>
 
 #include "arclen.h"
-#include "cubic.h"
-#include "gauss_bound.h"
-#include "gauss_tables.h"
-#include "speed_sum.h"
+#include "curve/cubic.h"
+#include "gauss/bound.h"
+#include "gauss/gauss_tables.h"
+#include "gauss/speed_sum.h"
 
 /* The range is cut at the foot of a branch point nearer to it than
 ** footcut(rtol) times its width; a piece that no order up to NMAX meets is

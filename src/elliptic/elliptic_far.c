@@ -13,7 +13,7 @@
 #include <math.h>
 
 #include "arclen.h"
-#include "elliptic.h"
+#include "elliptic/elliptic.h"
 
 /* Terms needed for ratio q = reach/R: q^n < 2^-56 (tail below rounding). */
 static int terms_for(double q) {
