@@ -1,9 +1,17 @@
--- spec/readme_spec.lua -- every ```lua block of README.md runs against the
--- fresh build, and every `print(...) --> value` line prints that value
--- (numbers compared as numbers, so 10 and 10.0 agree across Lua versions).
--- The examples cannot rot.
-local function blocks()
-  local f = assert(io.open("README.md"))
+-- spec/readme_spec.lua -- every ```lua block of README.md and of doc/*.md
+-- runs against the fresh build, and every `print(...) --> value` line
+-- prints that value (numbers compared as numbers, so 10 and 10.0 agree
+-- across Lua versions).  The examples cannot rot.
+local DOCS = {"README.md", "doc/api.md", "doc/method.md", "doc/accuracy.md",
+              "doc/benchmarks.md", "doc/papers.md", "doc/reproductions.md",
+              "doc/testing.md", "doc/architecture.md"}
+for _, extra in ipairs({"doc/svg.md", "doc/luatex.md"}) do
+  local f = io.open(extra)
+  if f then f:close(); DOCS[#DOCS + 1] = extra end
+end
+
+local function blocks(file)
+  local f = assert(io.open(file))
   local text = f:read("*a")
   f:close()
   local out, n = {}, 0
@@ -12,7 +20,7 @@ local function blocks()
   while true do
     local s, e = text:find("```lua\n", pos, true)
     if not s then break end
-    local close = assert(text:find("\n```", e, true), "README.md: unclosed ```lua block")
+    local close = assert(text:find("\n```", e, true), file .. ": unclosed ```lua block")
     local first_line = select(2, text:sub(1, e):gsub("\n", "")) + 1
     out[#out + 1] = {code = text:sub(e + 1, close), line = first_line}
     pos = close + 4
@@ -73,11 +81,14 @@ local function run(code, name)
   return printed
 end
 
-describe("README.md", function()
-  local list = blocks()
-  it("has Lua examples", function() assert.is_true(#list >= 3) end)
+for _, file in ipairs(DOCS) do
+describe(file, function()
+  local list = blocks(file)
+  if file == "README.md" or file == "doc/api.md" then
+    it("has Lua examples", function() assert.is_true(#list >= 2) end)
+  end
   for _, b in ipairs(list) do
-    local name = "README.md:" .. b.line
+    local name = file .. ":" .. b.line
     it("runs the ```lua block at line " .. b.line .. " and prints what it says", function()
       local printed = run(b.code, name)
       local bad = {}
@@ -97,3 +108,4 @@ describe("README.md", function()
     end)
   end
 end)
+end
