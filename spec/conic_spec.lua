@@ -159,7 +159,7 @@ end
 -- ---- the schemes ------------------------------------------------------
 
 describe("conic schemes (Props 3, 4, 5, 8, 9)", function()
-  -- the paper's formulas as printed (corrected per notes/conic.md)
+  -- the paper's formulas as printed (corrected as doc/papers.md reads them)
   local printed = {
     quadratic = function() return 2 / 3 end,
     g2 = function(w) return 2 / 3 * w * (sqrt(w * w + 3) - w) end,
@@ -455,7 +455,7 @@ describe("circle anchors", function()
     local kappa = 4 / 3 * (sqrt(2) - 1)        -- (4/3) tan(90 deg / 4)
     assert.is_true(abs(c[4] - kappa) <= 2e-16 and abs(c[5] - kappa) <= 2e-16)
     assert.are.equal(0.5522847498, tonumber(("%.10f"):format(c[4])))
-    -- radial error: always outside, max 2.7253e-4 (the issue's anchor)
+    -- radial error: always outside, max 2.7253e-4 (the classic kappa handle's)
     local lo, hi = math.huge, -math.huge
     for k = 0, 2000 do
       local x, y = cubic_eval(c, k / 2000)
@@ -482,8 +482,8 @@ describe("circle anchors", function()
     end
   end)
   it("fullcircle matches real mpost's control points (spec/data/conic_fullcircle_mpost.tsv)", function()
-    local f = io.open("spec/data/conic_fullcircle_mpost.tsv")
-    if not f then pending("mpost reference not generated (needs mpost)") return end
+    -- committed data (tools/ref_conic.py with real mpost): missing is a failure
+    local f = assert(io.open("spec/data/conic_fullcircle_mpost.tsv"))
     f:close()
     -- mpost builds pencircle's points in its 28-bit "fraction" type even
     -- in double mode: every value it prints is a multiple of 2^-28 (checked
@@ -842,7 +842,7 @@ describe("conic_length fuzz reproducers (chord <= length <= polygon)", function(
   end)
 end)
 
--- ---- the ends of the double range (issue 8, fuzz/fuzz_conic) ---------------
+-- ---- the ends of the double range (found by fuzz/fuzz_conic) ---------------
 
 describe("conic_length at the ends of the double range", function()
   -- References: tools/ref_conic.py extreme (quadrature on panels clustered

@@ -60,9 +60,10 @@ int arclenL_checkcurve(lua_State *L, int arg, double *c) {
   if (n != 8 && n != 12)
     return luaL_argerror(L, arg, lua_pushfstring(L,
         "curve must have 8 (2D) or 12 (3D) numbers, got %d", (int)n));
-  /* all n on the stack (the first is there; callers check the curve
-  ** first, so LUA_MINSTACK's 20 slots hold them), read in place, popped at
-  ** once: a pop per number was a quarter of the API calls */
+  /* all n on the stack, read in place and popped at once (a pop per
+  ** number was a quarter of the API calls); the room is asked for, since
+  ** a caller may already hold values of its own */
+  luaL_checkstack(L, (int)n, "curve coordinates");
   for (i = 1; i < (int)n; i++) lua_rawgeti(L, arg, i + 1);
   for (i = 0; i < (int)n; i++) {
     int idx = i - (int)n;
