@@ -6,7 +6,6 @@
 #   make demo            Henkel's six arcs by every method
 #   make bench           speed ratios within one run
 #   make bench-icount    instructions per call under callgrind (valgrind)
-#   make bench-explore   where the median curve could save points
 #   make bench-latency   each set-up step's time as a dependent chain
 #   make install PREFIX=/usr/local
 
@@ -45,7 +44,7 @@ MODULE = $(OUT)/arclen/core.so
 LIBDIR = $(PREFIX)/lib/lua/$(LUA_ABI)
 SHAREDIR = $(PREFIX)/share/lua/$(LUA_ABI)
 
-.PHONY: all lib check-layers test deps demo bench bench-icount bench-explore bench-latency install uninstall clean
+.PHONY: all lib check-layers test deps demo bench bench-icount bench-latency install uninstall clean
 
 all: $(MODULE)
 
@@ -91,9 +90,6 @@ bench: $(BUILD)/libarclen.a
 bench-icount: $(BUILD)/libarclen.a
 	$(MAKE) -C bench icount
 
-bench-explore: $(BUILD)/libarclen.a
-	$(MAKE) -C bench explore
-
 bench-latency: $(BUILD)/libarclen.a
 	$(MAKE) -C bench latency
 
@@ -114,7 +110,7 @@ clean:
 	rm -rf $(BUILD)
 	$(MAKE) -C bench clean
 
-# ---- lenfit (issue 5): Walter & Fournier's Table 1, paper vs default ----
+# ---- the fit: Walter & Fournier's Table 1, paper vs default ----------
 .PHONY: fit-stats fit-plots
 fit-stats: $(MODULE)
 	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) lua/arclen/repro/fitstats.lua
@@ -128,7 +124,7 @@ fit-plots: $(MODULE)
 accuracy: $(MODULE)
 	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua;spec/?.lua' $(LUA_BIN) bench/accuracy.lua
 
-# ---- reliability and peers (issue 8) ----------------------------------
+# ---- reliability and peers ---------------------------------------------
 #   make fuzz [FUZZ_SECONDS=15]   every libFuzzer harness in fuzz/ (clang)
 #   make sanitize                 the spec suite on an ASan+UBSan build
 #   make valgrind                 the spec suite under valgrind memcheck

@@ -1,4 +1,4 @@
--- spec/fit_spec.lua -- the length-versus-t fits (issue 5): Walter &
+-- spec/fit_spec.lua -- the length-versus-t fits: Walter &
 -- Fournier's method reproduced, the default Hermite fit's bounds, the
 -- inverse, monotonicity, and bad input.  References: spec/data/
 -- lenfit_published.tsv (parsed from the seed), lenfit_worst.tsv and
@@ -92,7 +92,7 @@ describe("method 'paper' on the paper's worst curve", function()
 end)
 
 describe("method 'paper' on the random set (3000 curves, ran1 seed 1)", function()
-  -- Independent random sets land in these ranges (../shared/notes/lenfit.md);
+  -- Independent random sets land in these ranges (doc/papers.md);
   -- the published row is 0.087392 / 0.019202 / 0.007405.
   local r10 = fitstats.stats(RANDOM, {method = "paper", n = 10}, {truth = "simpson"})
   local r3 = fitstats.stats(RANDOM, {method = "paper", n = 3}, {truth = "simpson"})

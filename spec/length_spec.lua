@@ -1,5 +1,5 @@
 -- The default method ("gauss") against the 40-digit references of
--- tools/ref_lengths.py.  The bounds are the issue's contract: relative
+-- tools/ref_lengths.py.  The bounds are the method's guarantee: relative
 -- error <= rtol at rtol = 1e-12, <= 1e-14 at "full precision" rtol = 1e-15.
 local arclen = require("arclen")
 local H = require("helpers")

@@ -8,7 +8,7 @@ local helpers = require "helpers"
 local HEAD2 = "id family param x0 y0 x1 y1 x2 y2 x3 y3 L25 L50 L75 L T25 T50 T75"
 local HEAD3 = "id family param x0 y0 z0 x1 y1 z1 x2 y2 z2 x3 y3 z3 L25 L50 L75 L T25 T50 T75"
 
--- Minimum rows per family (issue 2 item 6, issue 3 item 3).
+-- Minimum rows per family: each family must stay large enough to mean something.
 local MIN2 = {henkel = 6, random = 1000, nearcusp = 120, cusp = 20, collinear = 20,
               coincident = 15, point = 3, scale = 60, offset = 30, nearquad = 90}
 local MIN3 = {random3d = 300, nearcusp3d = 40, collinear3d = 10, planar3d = 20,

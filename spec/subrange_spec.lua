@@ -2,8 +2,8 @@
 -- (mpmath and decimal at 85+ digits): the length of [t0, t1] must keep its
 -- own relative precision however small it is against the whole curve's --
 -- the speed there is a small difference of large terms, so a method has to
--- form it about the sub-range (issue 2's bounds: tol at 1e-12, 1e-14 at
--- 1e-15; issue 3's for the elliptic method: 1e-13).
+-- form it about the sub-range (the default method's bounds: tol at
+-- 1e-12, 1e-14 at 1e-15; the elliptic method's: 1e-13).
 local arclen = require("arclen")
 local H = require("helpers")
 

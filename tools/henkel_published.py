@@ -2,8 +2,7 @@
 """Henkel's published section 6 (the six tables) as data.
 
 Parses the seed text of H. Henkel, "Calculating the Cubic Bezier Arc Length by
-Elliptic Integrals" (2014), /work/shared/seeds/003_396dde2ae5cacae2.txt (or the
-path given as argument): for each of the six examples the control points of
+Elliptic Integrals" (2014), whose text is the argument: for each of the six examples the control points of
 its `arc = {{x,y},...}` line and every row of its table (Eqn, method, arc
 length or failure text, steps), in his order.  Nothing is typed by hand: a
 change in the seed changes the data.  Writes spec/data/henkel_published.tsv:
@@ -13,13 +12,12 @@ change in the seed changes the data.  Writes spec/data/henkel_published.tsv:
 value is Henkel's text ("18.355664405651", or "invalid arguments", "$R_D$
 hangs"); steps is empty where his table has none.
 
-Usage: /usr/bin/python3 tools/henkel_published.py [seed.txt]
+Usage: /usr/bin/python3 tools/henkel_published.py HENKEL.txt
 """
 import os
 import re
 import sys
 
-SEED = "/work/shared/seeds/003_396dde2ae5cacae2.txt"
 NUMBER = re.compile(r"-?\d+(?:\.\d+)?")
 
 
@@ -48,7 +46,9 @@ def parse(text):
 
 
 def main():
-    seed = sys.argv[1] if len(sys.argv) > 1 else SEED
+    if len(sys.argv) != 2:
+        sys.exit("usage: tools/henkel_published.py HENKEL.txt (the paper's text)")
+    seed = sys.argv[1]
     with open(seed, encoding="utf-8") as f:
         arcs = parse(f.read())
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))

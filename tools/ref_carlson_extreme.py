@@ -160,7 +160,7 @@ def cases(rng):
         out.append(("rc", [e, o[0]]))
         out.append(("rc", [o[0], e]))
         out.append(("rc", [o[0], -e]))
-    out.append(("rj", [1.0, 2.0, 3.0, 2.0 ** 500]))      # the cases
+    out.append(("rj", [1.0, 2.0, 3.0, 2.0 ** 500]))      # a large p
     out.append(("rj", [1.0, 2.0, 3.0, 1e300]))
     return out
 

@@ -14,7 +14,7 @@ Writes
       singularities (wide_length); `ref_conic.py extreme` alone: ~12 min.
 
 Independent of the C code: the schemes are the paper's formulas as printed
-(with the corrections of shared/notes/conic.md), at 30 digits.
+(with the corrections of doc/papers.md), at 30 digits.
 Run: nice /usr/bin/python3 tools/ref_conic.py   (about a minute or two)
 """
 import os
@@ -392,7 +392,7 @@ def write_lengths():
                         name, sc, r, s(spline_length(p, w, sc, r)), s(L)))
 
 
-# Conics at the ends of the double range (issue 8: fuzz/fuzz_conic's open
+# Conics at the ends of the double range (fuzz/fuzz_conic's open
 # classes), with the length by wide_length.  "overflow" rows have a length
 # beyond DBL_MAX: conic_length must refuse them.
 EXTREME_CASES = [

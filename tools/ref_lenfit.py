@@ -14,7 +14,7 @@
    mpmath Gauss-Legendre lengths) and its max and mean error on the
    paper's grid t = 0, ..., 0.95 against that truth.
 
-Usage: /usr/bin/python3 tools/ref_lenfit.py [seed.txt]
+Usage: /usr/bin/python3 tools/ref_lenfit.py WALTER_FOURNIER.txt (the paper's text)
 """
 import os
 import re
@@ -23,7 +23,6 @@ import sys
 import mpmath as mp
 
 mp.mp.dps = 40
-SEED = "/work/shared/seeds/000_f2a383b4c29ab487.txt"
 OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "spec", "data")
 GL_NS = [1, 2, 3, 4, 10, 24, 64]
 
@@ -144,7 +143,9 @@ def write(name, header, rows):
 
 
 def main():
-    seed = sys.argv[1] if len(sys.argv) > 1 else SEED
+    if len(sys.argv) != 2:
+        sys.exit("usage: tools/ref_lenfit.py WALTER_FOURNIER.txt (the paper's text)")
+    seed = sys.argv[1]
     with open(seed) as f:
         text = f.read()
     pub = published(text)

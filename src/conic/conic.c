@@ -8,7 +8,7 @@
 ** a scheme is a function lambda(w).  A spline of level r approximates the
 ** 2^r pieces of the subdivision scheme (eq. 4), which all share the weight
 ** w_r.  Theorem 1 with Prop 13's closed form bounds the Hausdorff distance.
-** Corrections to the paper's text: /work/shared/notes/conic.md.
+** Corrections to the paper's text: doc/papers.md, "Floater: conics".
 */
 #include <float.h>
 #include <math.h>

@@ -138,7 +138,7 @@ static double boundary_point(double D, double phi, double p0, double p2,
 ** non-decreasing functional cubics with the same ends: d0 = V1 - y0 >= 0,
 ** d2 = y3 - V2 >= 0, d1 = D - d0 - d2 >= -sqrt(d0 d2) (a Bernstein
 ** quadratic's non-negativity), a convex set in (d0, d2).  Clamping V1, V2
-** instead costs much more accuracy (../shared/notes/lenfit.md). */
+** instead costs much more accuracy (doc/papers.md, "Walter & Fournier"). */
 static void project_monotone(arclen_fit_span *sp) {
   const double golden = 0.6180339887498949;   /* (sqrt(5) - 1) / 2 */
   const double half_pi = 1.5707963267948966;
