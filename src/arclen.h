@@ -64,7 +64,7 @@ typedef int (*arclen_time_fn)(const double *c, int dim, double s,
                               const arclen_opts *o, double *t,
                               arclen_info *info);
 
-/* ---- methods.c: methods by name ------------------------------------ */
+/* ---- methods/: methods by name --------------------------------------- */
 typedef struct arclen_method {
   const char *name;
   arclen_length_fn length;
@@ -73,7 +73,7 @@ typedef struct arclen_method {
 const arclen_method *arclen_find_method(const char *name);
 const arclen_method *arclen_method_list(void);   /* ends with name NULL */
 
-/* ---- cubic.c: geometry of one cubic -------------------------------- */
+/* ---- curve/: the geometry of one cubic ------------------------------- */
 int arclen_check_curve(const double *c, int dim);        /* 0 or EINVAL */
 void arclen_point(const double *c, int dim, double t, double *p);
 void arclen_derivative(const double *c, int dim, double t, double *d);
@@ -88,7 +88,7 @@ void arclen_hodograph(const double *c, int dim, double a2[3], double a1[3],
 ** critical points: minima, maxima, cusps), ascending; returns the count. */
 int arclen_critical_points(const double *c, int dim, double roots[3]);
 
-/* ---- quadrature.c: the default method ("gauss") -------------------- */
+/* ---- gauss/: the default method ("gauss") ---------------------------- */
 double arclen_length(const double c[8], double rtol);
 double arclen_length_range(const double c[8], double t0, double t1,
                            double rtol);
@@ -104,7 +104,7 @@ int arclen_time_gauss(const double *c, int dim, double s,
 /* A fixed n-point Gauss-Legendre rule on [0,1] (n = 24: the speed floor). */
 double arclen_length_gl(const double *c, int dim, int n);
 
-/* ---- carlson.c: Carlson's symmetric elliptic integrals -------------- */
+/* ---- elliptic/: Carlson's symmetric elliptic integrals ---------------- */
 /* Carlson (1995) duplication.  Arguments >= 0 unless stated; NaN on a
 ** domain error (negative argument, a non-finite one, or an infinite
 ** integral: two zeros in R_F, x = y = 0 or z = 0 in R_D, y = 0 in R_C,
@@ -116,7 +116,7 @@ double arclen_rc(double x, double y);
 double arclen_rj(double x, double y, double z, double p);
 double arclen_rg(double x, double y, double z);
 
-/* ---- batch.c: many curves at once ---------------------------------- */
+/* ---- gauss/: many curves at once ------------------------------------- */
 /* out[i] = the length of cubic i of n, whose 4 dim numbers start at
 ** c + 4 dim i, by method m with options o.  Stops at the first failure:
 ** returns its code, sets *failed (may be NULL; -1 on success) to its index
@@ -124,7 +124,7 @@ double arclen_rg(double x, double y, double z);
 int arclen_lengths(const double *c, long n, int dim, const arclen_method *m,
                    const arclen_opts *o, double *out, long *failed);
 
-/* ---- roots.c: real-coefficient polynomial roots --------------------- */
+/* ---- roots/: real-coefficient polynomial roots ----------------------- */
 /* All roots of a real quadratic, cubic, quartic (highest coefficient
 ** first); complex roots come as conjugate pairs (re, +-im).  Returns the
 ** number of roots (fewer when leading coefficients are 0).  Any finite
@@ -145,7 +145,7 @@ int arclen_quartic(double a4, double a3, double a2, double a1, double a0,
 int arclen_quartic_factor(double a4, double a3, double a2, double a1,
                           double a0, double q[4]);
 
-/* ---- elliptic.c: exact length by Carlson's [1,1,1,1] ---------------- */
+/* ---- elliptic/: exact length by Carlson's [1,1,1,1] ------------------ */
 /* Method "elliptic": the exact length integral by Carlson's [1,1,1,1]
 ** (2D: complex hodograph roots; 3D: the quartic split by roots.c), with
 ** closed forms for cusps, collinear curves and points and series for far
@@ -153,7 +153,7 @@ int arclen_quartic_factor(double a4, double a3, double a2, double a1,
 int arclen_length_elliptic(const double *c, int dim, const arclen_opts *o,
                            double *len, arclen_info *info);
 
-/* ---- gravesen.c, metapost.c, baseline.c: Henkel's other rows -------- */
+/* ---- baseline/, metapost/: Henkel's other rows ----------------------- */
 /* Gravesen (1997) adaptive subdivision: on de Casteljau halves the length
 ** estimate (2 chord + (n-1) polygon)/(n+1), n = 3; info->pieces counts
 ** subdivisions (Henkel's "Steps").  2D and 3D. */
@@ -201,12 +201,14 @@ int arclen_length_trapezoid_factored(const double *c, int dim,
                                      const arclen_opts *o, double *len,
                                      arclen_info *info);
 
-/* ---- lenfit.c: length-versus-t fits --------------------------------- */
-/* legendre.c: the n-point Gauss-Legendre rule on [0, 1], computed by
+/* ---- curve/: Gauss-Legendre rules of any order ----------------------- */
+/* The n-point Gauss-Legendre rule on [0, 1], computed by
 ** Newton's method on P_n (no tables): nodes x ascending, weights w
 ** summing to 1.  n in [1, ARCLEN_GL_MAXN]; returns 0 or ARCLEN_EDOMAIN. */
 #define ARCLEN_GL_MAXN 64
 int arclen_gauss_legendre(int n, double *x, double *w);
+
+/* ---- fit/: length-versus-t fits --------------------------------------- */
 
 /* A fit of s(t)/s(1) by cubic functional Bezier spans: span i covers
 ** [t0, t1] with x-controls t0, t0+h/3, t0+2h/3, t1 (so no root finding
@@ -225,6 +227,8 @@ typedef struct arclen_fit_span {
   double t0, t1;   /* parameter range */
   double y[4];     /* Bezier ordinates of s/s(1) */
 } arclen_fit_span;
+/* A fit.  Read dim .. span; the fields from itotal on are the fit's
+** working state (the curve in internal units), used by fit/ only. */
 typedef struct arclen_fit {
   int dim, method, n;
   int ncrit;             /* speed's critical points in (0,1) */
@@ -248,7 +252,7 @@ int arclen_fit_build(const double *c, int dim, const arclen_fit_opts *o,
                      arclen_fit *f, arclen_fit_span *spans, int cap);
 /* The speed of cs at t (times 2^scale_exp: curve units). */
 double arclen_fit_speed(const arclen_fit *f, double t);
-/* lenfit_eval.c: O(1) evaluation.  t is clamped to [0, 1]; s to
+/* O(1) evaluation.  t is clamped to [0, 1]; s to
 ** [0, total]. */
 double arclen_fit_value(const arclen_fit *f, double t);   /* ~ s(t)/s(1) */
 double arclen_fit_slope(const arclen_fit *f, double t);   /* d/dt of it */
@@ -258,7 +262,7 @@ double arclen_fit_invert(const arclen_fit *f, double v);  /* of value */
 /* 1 when every span is non-decreasing (exact Bernstein test). */
 int arclen_fit_monotone(const arclen_fit *f);
 int arclen_fit_span_monotone(const arclen_fit_span *sp);
-/* lenfit_error.c: the paper's error measurement (Eqn 9).
+/* The paper's error measurement (Eqn 9).
 ** Truth: Numerical Recipes' qsimp at fractional accuracy 1e-4 (as the
 ** paper), or the accurate length (arclen_length_gauss, rtol 1e-13).
 ** Grid: npts = 0 is the paper's t = 0, 0.05, ..., 0.95 (its loop
@@ -266,12 +270,10 @@ int arclen_fit_span_monotone(const arclen_fit_span *sp);
 ** inverse = 1 measures |s_true(t_fit(u))/s(1) - u| at the grid's u
 ** instead.  Fills max, mean and the grid point of the max. */
 enum { ARCLEN_TRUTH_SIMPSON = 0, ARCLEN_TRUTH_EXACT = 1 };
-double arclen_length_qsimp(const arclen_fit *f, double t0, double t1,
-                           double eps, long *evals);
 int arclen_fit_error(const arclen_fit *f, int truth, int inverse, int npts,
                      double *max, double *mean, double *argmax);
 
-/* ---- conic.c: cubic approximation of conics ------------------------- */
+/* ---- conic/: cubic approximation of conics --------------------------- */
 /* Floater (1996).  A conic is the rational quadratic Bezier curve with
 ** control points p[6] = x0 y0 x1 y1 x2 y2 and weight w > 0 (eq. 1):
 ** ellipse w < 1, parabola w = 1, hyperbola w > 1; any finite w > 0 (w ->
@@ -295,9 +297,6 @@ void arclen_conic_AB(double w, double delta, double *A, double *B);
 void arclen_conic_scheme_AB(int scheme, double w, double *A, double *B);
 double arclen_conic_gnorm(double A, double B);       /* Prop 13 */
 double arclen_conic_weight(double w, int level);     /* w_r of eq. (4) */
-/* Legs p1 - p0, p2 - p1 and chord p2 - p0 (v = ax ay cx cy kx ky), each one
-** rounding; returns 1 when they had to be halved to stay finite, else 0. */
-int arclen_conic_legs(const double p[6], double v[6]);
 /* 1 when p0 = p1, p1 = p2 or the three are collinear (to rounding). */
 int arclen_conic_degenerate(const double p[6]);
 /* ARCLEN_OK, EINVAL (non-finite point) or EDOMAIN (bad w, degenerate). */
@@ -318,13 +317,13 @@ int arclen_conic_level(const double p[6], double w, int scheme, double tol,
 int arclen_conic_cubics(const double p[6], double w, int scheme, int level,
                         double *out, double *bound);
 void arclen_conic_point(const double p[6], double w, double t, double pt[2]);
-/* conic_length.c: the exact length of the whole arc (R_F, R_D; parabola
+/* The exact length of the whole arc (R_F, R_D; parabola
 ** in closed form).  info (may be NULL): branch ellipse/parabola/hyperbola,
 ** calls = R-function calls.  0, EINVAL, EDOMAIN or EOVERFLOW (the length
 ** exceeds DBL_MAX: only when the control polygon does). */
 int arclen_conic_length(const double p[6], double w, double *len,
                         arclen_info *info);
-/* conic_arc.c: other descriptions reduced to (p0, p1, p2; w). */
+/* Other descriptions reduced to (p0, p1, p2; w). */
 int arclen_conic_normal_weight(double w0, double w1, double w2, double *w);
 /* Elliptic arc: centre, semi-axes, rotation phi, parametric angles theta
 ** .. theta + dtheta (radians, |dtheta| <= 2 pi) -> n <= 4 conics of at

@@ -15,6 +15,7 @@
 #include <string.h>
 
 #include "arclen.h"
+#include "conic/conic.h"
 
 static const char *const scheme_names[ARCLEN_CONIC_NSCHEMES] = {
   "quadratic", "g2", "midpoint", "c2", "g4"

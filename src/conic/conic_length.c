@@ -24,6 +24,7 @@
 #include <math.h>
 
 #include "arclen.h"
+#include "conic/conic.h"
 
 #define PI 3.14159265358979323846
 #define QUARTER_PI 0.78539816339744830962

@@ -32,7 +32,9 @@ static void trapzd(const arclen_fit *f, double a, double b, int j, double *s,
   }
 }
 
-double arclen_length_qsimp(const arclen_fit *f, double t0, double t1,
+/* The paper's "true" length: Numerical Recipes' qsimp (Simpson by
+** trapezoid refinement) at fractional accuracy eps, in internal units. */
+static double length_qsimp(const arclen_fit *f, double t0, double t1,
                            double eps, long *evals) {
   double st = 0.0, s = 0.0, ost = 0.0, os = 0.0;
   long dummy = 0;
@@ -56,7 +58,7 @@ static double truth(const arclen_fit *f, int kind, double t) {
   arclen_opts o;
   double len = NAN;
   if (kind == ARCLEN_TRUTH_SIMPSON)
-    return ldexp(arclen_length_qsimp(f, 0.0, t, PAPER_EPS, NULL),
+    return ldexp(length_qsimp(f, 0.0, t, PAPER_EPS, NULL),
                  -f->scale_exp);
   arclen_opts_init(&o);
   o.rtol = EXACT_RTOL;
