@@ -16,21 +16,11 @@
 #include <stddef.h>
 
 #include "arclen.h"
+#include "curve/numeric.h"
 
 #define MAX_STEPS 1000000000L   /* 10^9: a few seconds; keeps loops bounded */
 
 typedef struct cpx { double re, im; } cpx;
-
-typedef struct ksum {           /* Neumaier's compensated sum */
-  double s, c;
-} ksum;
-
-static void add(ksum *g, double x) {
-  double t = g->s + x;
-  if (fabs(g->s) >= fabs(x)) g->c += (g->s - t) + x;
-  else g->c += (x - t) + g->s;
-  g->s = t;
-}
 
 /* The leg vectors d_k = P_{k+1} - P_k (d[3k + i]) divided by 2^e, e
 ** returned, that puts the largest component in [0.5, 1): sums of squares
@@ -106,7 +96,7 @@ int arclen_length_polyline(const double *c, int dim, const arclen_opts *o,
                            double *len, arclen_info *info) {
   double a1[3], a2[3], a3[3], t0, t1, ta;
   long n, i;
-  ksum sum = {0.0, 0.0};
+  arclen_sum sum = {0.0, 0.0};
   int rc = setup(dim, o, &n, &t0, &t1, 1), k, scale;
   if (rc != ARCLEN_OK) { *len = NAN; return rc; }
   scale = power_basis(c, dim, a1, a2, a3);
@@ -119,7 +109,7 @@ int arclen_length_polyline(const double *c, int dim, const arclen_opts *o,
                        a3[k] * (3.0 * ta * ta + 3.0 * ta * h + h * h));
       s += dz * dz;
     }
-    add(&sum, sqrt(s));
+    arclen_sum_add(&sum, sqrt(s));
     ta = tb;
   }
   fill_info(info, n, n, "polyline");
@@ -132,12 +122,12 @@ typedef double (*speed_fn)(const void *data, double t);
 
 static double trapezoid(speed_fn f, const void *data, double t0, double t1,
                         long n) {
-  ksum sum = {0.0, 0.0};
+  arclen_sum sum = {0.0, 0.0};
   double ta = t0, fa = f(data, t0);
   long i;
   for (i = 1; i <= n; i++) {
     double tb = node(t0, t1, i, n), fb = f(data, tb);
-    add(&sum, (tb - ta) * (fa + fb) / 2.0);
+    arclen_sum_add(&sum, (tb - ta) * (fa + fb) / 2.0);
     ta = tb;
     fa = fb;
   }

@@ -35,6 +35,7 @@
 #include <stddef.h>
 
 #include "arclen.h"
+#include "curve/numeric.h"
 
 #define MAX_LEVEL 60        /* pieces of width 2^-60: far below any budget */
 #define MAX_SPLITS 20000000L  /* cap on subdivisions (rtol 1e-15 needs ~1e5) */
@@ -59,17 +60,6 @@ typedef struct piece {
   double e, lp, lc;         /* estimate, polygon and chord, times 2^-k */
   double lmin, lmax;        /* shortest and longest leg (unscaled) */
 } piece;
-
-typedef struct gsum {       /* Neumaier's compensated sum */
-  double s, c;
-} gsum;
-
-static void add(gsum *g, double x) {
-  double t = g->s + x;
-  if (fabs(g->s) >= fabs(x)) g->c += (g->s - t) + x;
-  else g->c += (x - t) + g->s;
-  g->s = t;
-}
 
 static double norm(const double *v, int dim) {
   double s = 0.0;
@@ -122,7 +112,7 @@ static int gravesen(const double *c, int dim, const arclen_opts *o,
   double sub[12], quarter[12], lref, rtol = o ? o->rtol : 1e-12;
   double t0 = o ? o->t0 : 0.0, t1 = o ? o->t1 : 1.0, sign = 1.0;
   const double *q = c;
-  gsum total = {0.0, 0.0}, err = {0.0, 0.0};
+  arclen_sum total = {0.0, 0.0}, err = {0.0, 0.0};
   long splits = 0;
   double big = 0.0;
   int sp = 0, depth = 0, i, capped = 0, ex = 0, pre = 0;
@@ -172,8 +162,8 @@ static int gravesen(const double *c, int dim, const arclen_opts *o,
     tol = rtol / 2.0 * fmax(s, ldexp(lref, -p.k));
     rig = ((l.lp - l.lc) + (r.lp - r.lc)) / 2.0;
     if (rig <= tol) {                         /* guaranteed */
-      add(&total, s);
-      add(&err, rig);
+      arclen_sum_add(&total, s);
+      arclen_sum_add(&err, rig);
       continue;
     }
     if (!richardson) {
@@ -195,8 +185,8 @@ static int gravesen(const double *c, int dim, const arclen_opts *o,
         if (ok && d12 / RHO_MINUS_1 <= tol / 2.0 && (d01 <= NOISE * s ||
             ((RHO_MINUS_1 + 1.0) * d12 <= d01 &&
              d01 <= MAX_RATIO * fmax(d12, NOISE * s)))) {
-          add(&total, s2);
-          add(&err, d12 / RHO_MINUS_1);
+          arclen_sum_add(&total, s2);
+          arclen_sum_add(&err, d12 / RHO_MINUS_1);
           continue;
         }
       }
@@ -228,15 +218,15 @@ static int gravesen(const double *c, int dim, const arclen_opts *o,
       d21 = fabs(r2 - r1);
       if (ok && d32 <= tol && (d21 <= NOISE * s ||
           (2.0 * d32 <= d21 && d21 <= MAX_RATIO * fmax(d32, NOISE * s)))) {
-        add(&total, r3);
-        add(&err, fabs(r3 - r2));
+        arclen_sum_add(&total, r3);
+        arclen_sum_add(&err, fabs(r3 - r2));
         continue;
       }
     }
     if (l.k >= MAX_LEVEL || splits >= MAX_SPLITS) {   /* give up here */
       capped = 1;
-      add(&total, s);
-      add(&err, rig);
+      arclen_sum_add(&total, s);
+      arclen_sum_add(&err, rig);
       continue;
     }
     stack[sp++] = r;

@@ -7,8 +7,8 @@
 #include <math.h>
 
 #include "arclen.h"
+#include "curve/numeric.h"
 
-#define PI 3.14159265358979323846
 
 /* A rational quadratic with weights (w0, w1, w2) is the standard form with
 ** w = w1 / sqrt(w0 w2) (Farin's reparametrisation t -> t/(t + c(1-t))).
@@ -54,9 +54,9 @@ int arclen_ellipse_conics(double cx, double cy, double rx, double ry,
   if (!(rx > 0) || !(ry > 0)) return ARCLEN_EDOMAIN;
   /* a few ulps of slack so that a full turn computed as 2 pi + rounding
   ** is still four quarters */
-  if (fabs(dtheta) > 2 * PI * (1 + 8 * DBL_EPSILON)) return ARCLEN_ERANGE;
+  if (fabs(dtheta) > 2 * ARCLEN_PI * (1 + 8 * DBL_EPSILON)) return ARCLEN_ERANGE;
   if (dtheta == 0) return 0;
-  n = (int)ceil(fabs(dtheta) / (PI / 2) * (1 - 8 * DBL_EPSILON));
+  n = (int)ceil(fabs(dtheta) / (ARCLEN_PI / 2) * (1 - 8 * DBL_EPSILON));
   if (n < 1) n = 1;
   if (n > 4) n = 4;
   e[0] = cx; e[1] = cy; e[2] = rx; e[3] = ry; e[4] = phi;
@@ -100,7 +100,7 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
   if (x1 == x2 && y1 == y2) return ARCLEN_SVGARC_NONE;      /* F.6.2 */
   rx = fabs(rx); ry = fabs(ry);                              /* F.6.6 step 1 */
   if (rx == 0 || ry == 0) return ARCLEN_SVGARC_LINE;         /* F.6.2 */
-  phi = fmod(phi_deg, 360.0) * (PI / 180);
+  phi = fmod(phi_deg, 360.0) * (ARCLEN_PI / 180);
   cp = cos(phi); sp = sin(phi);
   dx = x1 / 2 - x2 / 2; dy = y1 / 2 - y2 / 2;    /* x1 - x2 may overflow */
   x1p = cp * dx + sp * dy;                                   /* F.6.5.1 */
@@ -136,8 +136,8 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
   vx = -u - coef * (v / h); vy = -v + coef * (u / h);
   t1 = vec_angle(1, 0, ux, uy);
   dt = vec_angle(ux, uy, vx, vy);
-  if (!sweep && dt > 0) dt -= 2 * PI;
-  else if (sweep && dt < 0) dt += 2 * PI;
+  if (!sweep && dt > 0) dt -= 2 * ARCLEN_PI;
+  else if (sweep && dt < 0) dt += 2 * ARCLEN_PI;
   c[2] = rx; c[3] = ry; c[4] = phi; c[5] = t1; c[6] = dt;
   return ARCLEN_SVGARC_ARC;
 }

@@ -25,8 +25,8 @@
 
 #include "arclen.h"
 #include "conic/conic.h"
+#include "curve/numeric.h"
 
-#define PI 3.14159265358979323846
 #define QUARTER_PI 0.78539816339744830962
 
 /* int_0^psi sqrt(1 - m sin^2) between amplitudes x0 < x1 (both in

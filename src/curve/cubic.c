@@ -7,6 +7,7 @@
 
 #include "arclen.h"
 #include "curve/cubic.h"
+#include "curve/numeric.h"
 
 int arclen_check_curve(const double *c, int dim) {
   double z = 0;
@@ -163,27 +164,19 @@ void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h) {
 
 /* ---- the hodograph about a sub-range, to full relative accuracy ------- */
 
-/* Double-double numbers hi + lo (Dekker 1971; TwoSum and TwoProduct as in
-** Ogita, Rump & Oishi 2005, the product by C99's exactly rounded fma). */
-typedef struct dd { double hi, lo; } dd;
-
-static dd two_sum(double a, double b) {
-  double s = a + b, bb = s - a;
-  dd r;
-  r.hi = s;
-  r.lo = (a - (s - bb)) + (b - bb);
-  return r;
-}
+/* Double-double arithmetic (numeric.h; TwoProduct as in Ogita, Rump &
+** Oishi 2005, by C99's exactly rounded fma). */
+typedef arclen_dd dd;
 
 static dd dd_add(dd x, dd y) {
-  dd s = two_sum(x.hi, y.hi);
-  return two_sum(s.hi, s.lo + (x.lo + y.lo));
+  dd s = arclen_two_sum(x.hi, y.hi);
+  return arclen_two_sum(s.hi, s.lo + (x.lo + y.lo));
 }
 
 static dd dd_mul(dd x, dd y) {
   double p = x.hi * y.hi;
   double e = fma(x.hi, y.hi, -p) + (x.hi * y.lo + x.lo * y.hi);
-  return two_sum(p, e);
+  return arclen_two_sum(p, e);
 }
 
 static dd dd_of(double x) {
@@ -210,15 +203,15 @@ static dd dd_sub(dd x, dd y) {
 void arclen_hodo_local(const double *c, int dim, double t0, double t1,
                        arclen_hodo *h) {
   double small[12], hw = (t1 - t0) / 2;
-  dd tc = two_sum(t0, hw), two = dd_of(2), three = dd_of(3), six = dd_of(6);
+  dd tc = arclen_two_sum(t0, hw), two = dd_of(2), three = dd_of(3), six = dd_of(6);
   int k, pre64;
   memset(h, 0, sizeof *h);
   h->dim = dim;
   c = tame(c, dim, small, &pre64);
   for (k = 0; k < dim; k++) {
-    dd d0 = two_sum(c[dim + k], -c[k]);
-    dd d1 = two_sum(c[2 * dim + k], -c[dim + k]);
-    dd d2 = two_sum(c[3 * dim + k], -c[2 * dim + k]);
+    dd d0 = arclen_two_sum(c[dim + k], -c[k]);
+    dd d1 = arclen_two_sum(c[2 * dim + k], -c[dim + k]);
+    dd d2 = arclen_two_sum(c[3 * dim + k], -c[2 * dim + k]);
     dd e1 = dd_sub(d1, d0), e2 = dd_sub(d2, d1);
     dd a0 = dd_mul(three, d0), a1 = dd_mul(six, e1);
     dd a2 = dd_mul(three, dd_sub(e2, e1)), v, dv;

@@ -7,6 +7,7 @@
 #include <math.h>
 
 #include "arclen.h"
+#include "curve/numeric.h"
 
 #define NEWTON_CAP 100   /* quadratic convergence needs < 10 from the guess */
 
@@ -26,12 +27,11 @@ static double legendre_p(int n, double x, double *dp) {
 }
 
 int arclen_gauss_legendre(int n, double *x, double *w) {
-  const double pi = 3.14159265358979323846;
   int i, half = (n + 1) / 2;
   if (n < 1 || n > ARCLEN_GL_MAXN) return ARCLEN_EDOMAIN;
   for (i = 0; i < half; i++) {
     /* i-th largest root of P_n; guess from A&S 22.16.6 (Tricomi). */
-    double r = cos(pi * (i + 0.75) / (n + 0.5)), dp = 0.0, dx;
+    double r = cos(ARCLEN_PI * (i + 0.75) / (n + 0.5)), dp = 0.0, dx;
     int it;
     for (it = 0; it < NEWTON_CAP; it++) {
       double p = legendre_p(n, r, &dp);

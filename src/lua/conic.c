@@ -6,8 +6,8 @@
 #include <string.h>
 
 #include "lua/binding.h"
+#include "curve/numeric.h"
 
-#define PI 3.14159265358979323846
 
 /* What opts asks for: the scheme and either a level or a tolerance. */
 typedef struct conic_opts {
