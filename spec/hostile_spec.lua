@@ -68,6 +68,7 @@ local VALID = {
   ["subcurve"] = {arclen.subcurve, {C2, 0.2, 0.7}},
   ["critical"] = {arclen.critical, {C2}},
   ["methods"] = {arclen.methods, {}},
+  ["method"] = {arclen.method, {"gauss"}},
   ["lengths"] = {arclen.lengths, {{0, 0, 1, 0, 2, 0, 3, 0, 0, 0, 10, 0, 10, 10, 0, 0}}},
   ["lengths3"] = {arclen.lengths3, {C3}},
   ["conic"] = {arclen.conic, {{1, 0}, {1, 1}, {0, 1}, 0.7}},

@@ -52,19 +52,21 @@ end
 
 -- ---- options ----------------------------------------------------------------
 
-local METHODS, HAS_TIME = nil, {}
+local HAS_TIME = {}   -- method name -> has it a time (inverse)?
 
--- Does the method exist, and has it a time (inverse)?  Asked of the module
--- once per method name.
+-- Does the method exist?  The registry also says whether it has a time.
 local function method_known(name)
-  if not METHODS then
-    METHODS = {}
-    for _, m in ipairs(arclen.methods()) do METHODS[m] = true end
+  if HAS_TIME[name] == nil then
+    local m = arclen.method(name)
+    if not m then return false end
+    HAS_TIME[name] = m.time
   end
-  if METHODS[name] and HAS_TIME[name] == nil then
-    HAS_TIME[name] = pcall(arclen.time, {0, 0, 1, 0, 2, 0, 3, 0}, 1, {method = name})
-  end
-  return METHODS[name]
+  return true
+end
+
+local TOL_RANGE = format("[%g, %g]", arclen.tol_min, arclen.tol_max)
+local function tol_ok(v)
+  return type(v) == "number" and v >= arclen.tol_min and v <= arclen.tol_max
 end
 
 -- The options table: returns {tol, method, arc_tol, cyclic} or nil, message.
@@ -76,14 +78,8 @@ local function read_opts(opts, allowed)
   end
   for k, v in pairs(opts) do
     if not allowed[k] then return nil, format("unknown option '%s'", tostring(k)) end
-    if k == "tol" then
-      if type(v) ~= "number" or not (v >= 1e-15 and v <= 0.1) then
-        return nil, "tol must be in [1e-15, 0.1]"
-      end
-    elseif k == "arc_tol" then
-      if type(v) ~= "number" or not (v >= 1e-15 and v <= 0.1) then
-        return nil, "arc_tol must be in [1e-15, 0.1]"
-      end
+    if k == "tol" or k == "arc_tol" then
+      if not tol_ok(v) then return nil, k .. " must be in " .. TOL_RANGE end
     elseif k == "method" then
       if type(v) ~= "string" then return nil, "method must be a string" end
       if not method_known(v) then return nil, format("unknown method '%s'", v) end

@@ -342,6 +342,22 @@ static int l_methods(lua_State *L) {
   return 1;
 }
 
+/* arclen.method(name) -> {name =, time = boolean} or nil: what the
+** registry says of a method, so that callers need not probe it. */
+static int l_method(lua_State *L) {
+  const arclen_method *m = arclen_find_method(luaL_checkstring(L, 1));
+  if (m == NULL) {
+    lua_pushnil(L);
+    return 1;
+  }
+  lua_createtable(L, 0, 2);
+  lua_pushstring(L, m->name);
+  lua_setfield(L, -2, "name");
+  lua_pushboolean(L, m->time != NULL);
+  lua_setfield(L, -2, "time");
+  return 1;
+}
+
 static const luaL_Reg core_funcs[] = {
   {"length", l_length},
   {"time", l_time},
@@ -351,6 +367,7 @@ static const luaL_Reg core_funcs[] = {
   {"subcurve", l_subcurve},
   {"critical", l_critical},
   {"methods", l_methods},
+  {"method", l_method},
   {NULL, NULL}
 };
 
@@ -358,6 +375,11 @@ void arclen_open_core(lua_State *L) {
   luaL_setfuncs(L, core_funcs, 0);
   lua_pushstring(L, ARCLEN_VERSION);
   lua_setfield(L, -2, "_VERSION");
+  /* the tolerance limits, named once for the Lua layer too */
+  lua_pushnumber(L, ARCLEN_RTOL_MIN);
+  lua_setfield(L, -2, "tol_min");
+  lua_pushnumber(L, ARCLEN_RTOL_MAX);
+  lua_setfield(L, -2, "tol_max");
 }
 
 /* The C part of the module: require "arclen.core".  `require "arclen"`
