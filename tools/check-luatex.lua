@@ -101,6 +101,7 @@ local glyphs, placed = {}, {}
 local dashpath, dashspec, dashes = nil, nil, {}
 local npoints, pts = {}, {}
 local vals = {}
+local svg
 
 for _, l in ipairs(lines) do
   local w = words(l)
@@ -186,6 +187,10 @@ for _, l in ipairs(lines) do
     placed[name] = placed[name] or {}
     table.insert(placed[name], {i = tonumber(w[3]), s = tonumber(w[4]),
       w = tonumber(w[5]), h = tonumber(w[6]), d = tonumber(w[7])})
+  elseif tag == "SVGLEN" then
+    svg = {L = tonumber(w[2]), d = l:match("^SVGLEN %S+ (.*)$"), glyphs = {}}
+  elseif tag == "SVGGLYPH" then
+    table.insert(svg.glyphs, {tonumber(w[2]), tonumber(w[3]), tonumber(w[4]), tonumber(w[5]), tonumber(w[6])})
   elseif tag == "VAL" then
     vals[name] = {table.unpack(w, 3)}
   end
@@ -238,6 +243,7 @@ end
 -- baseline along the tangent there; the alignment's ends where it says.
 local ALIGN = {wave = {"wave", "centre", 0}, circle = {"circle", "fit", 0},
   start = {"s", "start", 10}, centre = {"s45", "centre", 0},
+  plainmp = {"plainmp", "start", 5},
   ["end"] = {"s90", "end", 10}, fit = {"s135", "fit", 0}}
 for name, a in pairs(ALIGN) do
   local G, Q, P = glyphs[name] or {}, placed[name] or {}, paths[a[1]]
@@ -285,6 +291,22 @@ for name, a in pairs(ALIGN) do
   end
 end
 
+-- Plain LuaTeX, Lua alone: the length digit for digit, each glyph 3bp
+-- above the path at its length, along the tangent.
+if svg then
+  local p = apath.svg(svg.d)
+  check("plain LuaTeX: the SVG path's length, digit for digit", p:length() == svg.L,
+    ("%.17g"):format(svg.L))
+  local worst = 0
+  for _, g in ipairs(svg.glyphs) do
+    local x, y = p:point(g[1])
+    local tx, ty = p:tangent(g[1])
+    worst = max(worst, abs(g[2] - (x - 3 * ty)), abs(g[3] - (y + 3 * tx)), abs(g[4] - tx), abs(g[5] - ty))
+  end
+  check(("plain LuaTeX: %d glyphs at their lengths, on the tangent"):format(#svg.glyphs),
+    #svg.glyphs > 0 and worst == 0, ("worst %.2g"):format(worst))
+end
+
 -- The bad-input document's documented values (VAL name v...).
 local VALS = {
   point_length = {"0"},                  -- a one-point path is 0 long
@@ -294,7 +316,7 @@ local VALS = {
   beyond_neg = {"0"},                    -- ... and 0 below 0
   empty_text = {"0"},                    -- an empty text: an empty picture
   pair_length = {"0"},                   -- a pair is a one-point path
-  scaled_length = {"3.14159"},           -- scaled: rounded to 2^-16
+  scaled_length = {"6.28313"},           -- scaled: rounded to 2^-16 (below)
 }
 for name, want in pairs(VALS) do
   local got = vals[name]

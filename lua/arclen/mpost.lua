@@ -107,7 +107,7 @@ end
 -- The times at two lengths, as a pair for MetaPost's subpath; lengths
 -- clamp to [0, L] as arclen's p:sub does (and MetaPost's arctime on an
 -- open path), so s1 <= s0 gives a one-point subpath.
-function ops.times(p, sys, s0, s1)
+function ops.subpath(p, sys, s0, s1)
   need_number(s0, "s0"); need_number(s1, "s1")
   local L = p:length()
   local a = s0 < 0 and 0 or (s0 > L and L or s0)
@@ -192,9 +192,10 @@ local function units_of(box)
     for n in node.traverse(head) do
       local t = n.id
       if t == GLYPH or t == HLIST or t == VLIST or t == RULE then
-        local w = n.width or 0
+        local w, sh = n.width or 0, (t == HLIST or t == VLIST) and n.shift or 0
+        -- a box's shift (\lower, \raise) moves it in its textext box too
         units[#units + 1] = {node = node.copy(n), x = x, w = w,
-          h = n.height or 0, d = n.depth or 0}
+          h = (n.height or 0) - sh, d = (n.depth or 0) + sh}
         x = x + w
       elseif t == KERN then
         x = x + n.kern
@@ -296,11 +297,12 @@ end
 -- ---- the entry point ------------------------------------------------------
 
 -- A placeholder of the type each operation returns, after an error.
-local DUMMY = {length = "0", time = "0", times = "(0,0)", points = "(0,0)",
+local DUMMY = {length = "0", time = "0", subpath = "(0,0)", points = "(0,0)",
   dashed = "nullpicture", followtext = "nullpicture"}
 
 local function errcode(op, msg)
-  msg = tostring(msg):gsub("^[^\n]-:%d+: ", ""):gsub("[\r\n]+", " "):gsub('"', "'")
+  msg = tostring(msg):gsub("^[^\n]-:%d+: ", ""):gsub("^bad argument #%d+ to '[^']*' %((.*)%)$", "%1")
+  msg = msg:gsub("[\r\n]+", " "):gsub('"', "'")
   return format('begingroup errmessage "arclen_%s: %s"; %s endgroup', op, msg,
     DUMMY[op] or "0")
 end
