@@ -32,7 +32,7 @@ local function warn(msg)
     io.stderr:write("arclen warning: ", msg, "\n")
   end
 end
-M.warn = warn
+M.warn = warn     -- replaceable (the specs silence it)
 
 -- x as MetaPost reads it: %.17g in double (and binary, decimal), whose
 -- scanners take exponents; rounded to 2^-16 and fixed-point under scaled.
@@ -44,7 +44,7 @@ local function num(x, sys)
     fail(format("%.10g is beyond numbersystem scaled's range (|x| < 4096); "
       .. "use \\mplibnumbersystem{double}", x))
   end
-  return format("%.10f", v)
+  return format("%.16f", v)        -- 2^-16 has 16 decimals: exact
 end
 M.num = num
 
@@ -287,7 +287,7 @@ function ops.followtext(p, sys, offset, align, text)
     end
   end
   if dropped > 0 then
-    warn(format("arclen_followtext: %d of %d glyphs fall beyond the ends of the "
+    M.warn(format("arclen_followtext: %d of %d glyphs fall beyond the ends of the "
       .. "path (text %.2fbp, path %.2fbp) and are left out", dropped, #units, W, L))
   end
   s[#s + 1] = ")"
@@ -316,7 +316,7 @@ function M.run(op, sys, method, tol, knots, ...)
     if not f then fail("unknown operation " .. tostring(op)) end
     if sys == "scaled" and not warned_scaled then
       warned_scaled = true
-      warn("MetaPost runs with numbersystem scaled: arclen's results are "
+      M.warn("MetaPost runs with numbersystem scaled: arclen's results are "
         .. "rounded to 2^-16 (1.5e-5) and must stay below 4096; for full "
         .. "precision use \\mplibnumbersystem{double}")
     end
