@@ -18,28 +18,34 @@ return function(root, build)
   local cpath = build .. "/?.so"
   package.path = lpath .. ";" .. package.path
   package.cpath = cpath .. ";" .. package.cpath
-  -- LuaTeX's require asks kpathsea before package.path/cpath and could find
-  -- an installed arclen first: search this copy's paths ahead of it.
-  local searchers = package.searchers or package.loaders
-  local key = "arclen.luatex searcher " .. lpath .. ";" .. cpath
-  if not package.loaded[key] then
-    package.loaded[key] = true
-    table.insert(searchers, 2, function(name)
-      if name ~= "arclen" and name:sub(1, 7) ~= "arclen." then return nil end
-      local file = package.searchpath(name, lpath)
-      if file then return assert(loadfile(file)), file end
-      file = package.searchpath(name, cpath)
-      if not file then return "\n\tno arclen file for '" .. name .. "' under " .. root end
-      -- luaopen_arclen_core for arclen/core.so; the one-file build (and the
-      -- loadlib route) exports luaopen_arclen
-      local open, err = package.loadlib(file, "luaopen_" .. name:gsub("%.", "_"))
-      if not open then open = package.loadlib(file, "luaopen_arclen") end
-      if not open then
-        error(("arclen: cannot load %s (%s); LuaTeX loads binary modules only "
-          .. "with --shell-escape"):format(file, tostring(err or "loading refused")), 0)
-      end
-      return open, file
-    end)
+  -- arclen and arclen.* come from this copy only: LuaTeX asks kpathsea
+  -- first, and LuaLaTeX's lualibs tries ./?.so before package.path, either
+  -- of which could find another arclen.  package.preload is asked before
+  -- any search, by every require: answer there, through its __index.
+  local function loader(name)
+    if name ~= "arclen" and name:sub(1, 7) ~= "arclen." then return nil end
+    local file = package.searchpath(name, lpath)
+    if file then return assert(loadfile(file)) end
+    file = package.searchpath(name, cpath)
+    if not file then return nil end
+    -- luaopen_arclen_core for arclen/core.so; the one-file build (and the
+    -- loadlib route) exports luaopen_arclen
+    local open, err = package.loadlib(file, "luaopen_" .. name:gsub("%.", "_"))
+    if not open then open = package.loadlib(file, "luaopen_arclen") end
+    if not open then
+      error(("arclen: cannot load %s (%s); LuaTeX loads binary modules only "
+        .. "with --shell-escape"):format(file, tostring(err or "loading refused")), 0)
+    end
+    return open
   end
+  local mt = getmetatable(package.preload) or {}
+  local prev = mt.__index
+  mt.__index = function(t, name)
+    local f = loader(name)
+    if f then return f end
+    if type(prev) == "function" then return prev(t, name) end
+    if type(prev) == "table" then return prev[name] end
+  end
+  setmetatable(package.preload, mt)
   return require("arclen")
 end
