@@ -146,7 +146,7 @@ for _, l in ipairs(lines) do repeat
     -- turns of a cycle); a different wrapping rule would be off by ~L
     local turns = P.ref.cyclic and abs(floor(s / L)) + 1 or 1
     check(("%s: MetaPost's arctime %s follows the same convention"):format(name, w[3]),
-      abs(me) <= turns * (n * 2 ^ -17 + 1 / 4096) * 4, ("arctime %.17g, its distance error %.3g"):format(mpT, me))
+      abs(me) <= turns * (n * 2 ^ -17 + 1 / 4096), ("arctime %.17g, its distance error %.3g"):format(mpT, me))
   elseif tag == "POINT" then
     local s, x, y, dx, dy = tonumber(w[3]), tonumber(w[4]), tonumber(w[5]), tonumber(w[6]), tonumber(w[7])
     local L = P.ref:length()
