@@ -11,6 +11,9 @@ local arclen = setup(".", build)
 local apath = require("arclen.path")
 
 local TOL = 1e-12              -- the documents' tolerance (arclen_tol 0)
+-- Where two sides evaluate a point differently (MetaPost's point t of p
+-- against arclen's, luamplib's box transform), the bound adds rounding: a
+-- few ulps (16 EPS, 64 EPS through a transform) of the coordinates' size.
 local EPS = 2 ^ -52
 local abs, sqrt, max, floor = math.abs, math.sqrt, math.max, math.floor
 local atan2 = math.atan2 or math.atan
