@@ -148,3 +148,13 @@ bench-peers: $(BUILD)/libarclen.a
 
 bench-scale: $(MODULE)
 	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_scale.lua
+
+# ---- LuaTeX and MetaPost documents -------------------------------------
+#   make luatex   the example documents in real LuaLaTeX and LuaTeX runs
+#                 (mp/arclen.mp, lua/arclen/mpost.lua; build/luatex/),
+#                 checked against arclen and MetaPost's arclength/arctime
+.PHONY: luatex
+luatex:
+	$(MAKE) LUA=5.3
+	sh tools/check-luatex.sh
+

@@ -5,6 +5,7 @@
 # against the fresh build in build/<version> (never an installed arclen);
 # the LuaTeX example (examples/mplib_path.lua) under texlua and texluajit
 # and inside a document (luatex --shell-escape examples/mplib_path.tex);
+# the LuaLaTeX/LuaTeX documents of tools/check-luatex.sh (make luatex);
 # the suite on the luarocks-installed module.  The last line adds them up
 # as "N passed, N failed".
 #   SMOKE=1 tools/run-tests.sh   only a smoke run (spec/smoke.lua) under
@@ -90,6 +91,14 @@ if command -v luatex >/dev/null && [ -f build/5.3/arclen/core.so ]; then
     FAILED=$((FAILED + 1))
   fi
   count "examples/mplib_path.tex under luatex"
+fi
+# The LuaTeX documents with MetaPost (make luatex: tools/check-luatex.sh).
+if command -v lualatex >/dev/null && { [ -f build/5.3/arclen.so ] || [ -f build/5.3/arclen/core.so ]; }; then
+  echo "== tools/check-luatex.sh (build/5.3)"
+  sh tools/check-luatex.sh >"$OUT.tex" 2>&1
+  tee "$OUT" <"$OUT.tex"
+  rm -f "$OUT.tex"
+  count "tools/check-luatex.sh"
 fi
 suite 5.4 lua5.4
 # The rockspec builds and installs offline, and the installed module passes.
