@@ -60,6 +60,8 @@ if command -v python3 >/dev/null && command -v nm >/dev/null; then
   echo "== the areas' dependencies (tools/check_layers.py over build/core)"
   python3 tools/check_layers.py build/core 2>&1 | tee "$OUT"
   count "check_layers"
+else
+  echo "== the areas' dependencies: skipped (needs python3 and nm; sh tools/deps.sh matrix)"
 fi
 for v in 5.1 5.2 5.3 jit; do
   case $v in jit) bin=luajit ;; *) bin=lua$v ;; esac
@@ -107,10 +109,12 @@ if command -v luarocks >/dev/null; then
   echo "== luarocks make rockspec/arclen-scm-1.rockspec (into build/rocktree)"
   if luarocks --lua-version 5.4 make rockspec/arclen-scm-1.rockspec \
        --tree build/rocktree >build/luarocks.log 2>&1; then
+    # luarocks builds in the work tree: its objects and arclen/core.so go
     find src -name "*.o" -delete
+    rm -rf arclen
     echo "== specs under lua5.4 (the luarocks-installed module)"
     lua5.4 /usr/bin/busted --cpath="build/rocktree/lib/lua/5.4/?.so" \
-      --lpath="build/rocktree/share/lua/5.4/?.lua;spec/?.lua" \
+      --lpath="build/rocktree/share/lua/5.4/?.lua;build/rocktree/share/lua/5.4/?/init.lua;spec/?.lua" \
       -o spec/summary_output.lua spec 2>&1 | tee "$OUT"
     count "busted on the luarocks install"
   else
