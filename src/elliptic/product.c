@@ -55,7 +55,7 @@ static double closed_cusp(double a1, double a2, double b2, double y,
   return -cusp_piece(a1, a2, b2, y, a1) + cusp_piece(a1, a2, b2, a1, x);
 }
 
-/* r - w and r + w for r = hypot(w, b) >= |w|: the one that would cancel
+/* r - w and r + w for r = ell_hypot(w, b) >= |w|: the one that would cancel
 ** is b^2 / (the other) (shared/notes/elliptic.md). */
 static void diffsum(double r, double w, double b, double *minus,
                     double *plus) {
@@ -94,8 +94,8 @@ static double carlson_1111(double a1, double b1, double a2, double b2,
                            double y, double x, long *calls) {
   double l = x - y;
   double u1 = x - a1, v1 = y - a1, u2 = x - a2, v2 = y - a2;
-  double xi1 = hypot(u1, b1), eta1 = hypot(v1, b1);
-  double xi2 = hypot(u2, b2), eta2 = hypot(v2, b2);
+  double xi1 = ell_hypot(u1, b1), eta1 = ell_hypot(v1, b1);
+  double xi2 = ell_hypot(u2, b2), eta2 = ell_hypot(v2, b2);
   double xi1p = u1 / xi1, eta1p = v1 / eta1;
   double bb = xi1p * xi2 - eta1p * eta2;
   double ee = u1 * xi1 * xi2 - v1 * eta1 * eta2;
@@ -106,16 +106,16 @@ static double carlson_1111(double a1, double b1, double a2, double b2,
   double d11 = 4 * b1 * b1, d22 = 4 * b2 * b2;
   double da = a1 - a2, da2 = da * da, bs = b1 * b1 + b2 * b2;
   double d12 = 2 * (da2 + bs);
-  double rm = hypot(da, b1 - b2), rp = hypot(da, b1 + b2);
+  double rm = ell_hypot(da, b1 - b2), rp = ell_hypot(da, b1 + b2);
   double del = 2 * rm * rp, dp = (rp + rm) * (rp + rm);
   double dm = 16 * (b1 * b1) * (b2 * b2) / dp;
   double lm2 = m2 + dm, lp2 = m2 + dp;
-  double rf = arclen_rf(m2, lm2, lp2), rdm = arclen_rd(m2, lp2, lm2);
+  double rf, rdm, rj;
   /* 3 psi0^2 - 4 delta12 with psi0 = -2 da */
   double w = 4 * da2 - 8 * bs;
   double kf = 2 * (b1 * b1) * (da2 + 4 * (b2 * b2) / 3) + dm * (da2 - 2 * bs) / 6;
   double gr = del / (2 * uu) + (d12 * th1 - d11 * th2) / (4 * xi1 * eta1 * uu);
-  double rg2 = 2 * del * (dm * rdm / 3 + sqrt(m2 / lm2 / lp2));
+  double rg2;
   double a1111 = xi1 * xi2 - eta1 * eta2;
   double s = (xi1 * eta1 * th2 + xi2 * eta2 * th1) / (l * l);
   double lam0 = d11, om2 = m2 + lam0;
@@ -126,9 +126,13 @@ static double carlson_1111(double a1, double b1, double a2, double b2,
   double v02 = mu0 * mu0 * (s * s + lam0 * uu * uu);
   double b02 = (s * s / (uu * uu) + lam0) * om2 * om2;
   double a02 = b02 + lam0 * (dp - lam0) * (lam0 - dm);
-  double h0 = d11 * psi0 * (arclen_rj(m2, lm2, lp2, om2) / 3
-                            + arclen_rc(a02, b02) / 2)
-              - x0 * arclen_rc(t0 * t0, v02);
+  double h0;
+  /* R_F, R_D(M^2, Lp^2, Lm^2), R_J(M^2, Lm^2, Lp^2, Omega^2) by one
+  ** duplication of (M^2, Lp^2, Lm^2) (R_F and R_J are symmetric in x, y, z) */
+  arclen_rfdj(m2, lp2, lm2, om2, &rf, &rdm, &rj);
+  rg2 = 2 * del * (dm * rdm / 3 + sqrt(m2 / lm2 / lp2));
+  h0 = d11 * psi0 * (rj / 3 + arclen_rc(a02, b02) / 2)
+       - x0 * arclen_rc(t0 * t0, v02);
   *calls += 5;
   return (d22 - d11) * psi0 * h0 / 8 + w * (rg2 - gr - bb) / 24
          - psi0 * a1111 / 12 + ee / 3 + kf * rf;
@@ -139,7 +143,7 @@ double arclen_ell_product(double a1, double b1, double a2, double b2,
                           double y, double x, const char **branch,
                           long *calls) {
   double m = (x + y) / 2, h = (x - y) / 2, l = x - y;
-  double r1 = hypot(a1 - m, b1), r2 = hypot(a2 - m, b2);
+  double r1 = ell_hypot(a1 - m, b1), r2 = ell_hypot(a2 - m, b2);
   double reach1 = fmax(fabs(x - a1), fabs(y - a1));
   double reach2 = fmax(fabs(x - a2), fabs(y - a2));
   /* both roots far: the integrand is analytic well beyond [y, x] */
@@ -150,11 +154,11 @@ double arclen_ell_product(double a1, double b1, double a2, double b2,
   if (b1 <= CUSP_B * l) b1 = 0;
   if (b2 <= CUSP_B * l) b2 = 0;
   /* one root far from the other root's reach: series in the far factor */
-  if (fmax(b1, reach1) <= ELL_RHO * hypot(a2 - a1, b2)) {
+  if (fmax(b1, reach1) <= ELL_RHO * ell_hypot(a2 - a1, b2)) {
     *branch = "series-far";
     return arclen_ell_series_one(a1, b1, a2, b2, y, x);
   }
-  if (fmax(b2, reach2) <= ELL_RHO * hypot(a1 - a2, b1)) {
+  if (fmax(b2, reach2) <= ELL_RHO * ell_hypot(a1 - a2, b1)) {
     *branch = "series-far";
     return arclen_ell_series_one(a2, b2, a1, b1, y, x);
   }
