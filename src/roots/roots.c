@@ -974,6 +974,72 @@ static void factor_refine(const double *p, const poly *P, double *q) {
   for (j = 0; j < 4; j++) q[j] = w[j];
 }
 
+/* The largest relative residual of the coefficient equations that hold
+** the linear coefficients, (x^2 + q0 x + q1)(x^2 + q2 x + q3) against the
+** monic m: q0 + q2 = m0, q1 + q3 + q0 q2 = m1, q0 q3 + q2 q1 = m2, each
+** relative to its terms; HUGE_VAL where a product leaves the range. */
+static double linear_resid(const double *q, const double *m) {
+  double r[3], w[3], worst = 0;
+  int k;
+  r[0] = q[0] + q[2] - m[0];
+  w[0] = fabs(q[0]) + fabs(q[2]) + fabs(m[0]);
+  r[1] = q[1] + q[3] + q[0] * q[2] - m[1];
+  w[1] = fabs(q[1]) + fabs(q[3]) + fabs(q[0] * q[2]) + fabs(m[1]);
+  r[2] = q[0] * q[3] + q[2] * q[1] - m[2];
+  w[2] = fabs(q[0] * q[3]) + fabs(q[2] * q[1]) + fabs(m[2]);
+  for (k = 0; k < 3; k++) {
+    if (!isfinite(r[k]) || !isfinite(w[k])) return HUGE_VAL;
+    if (w[k] > 0) worst = fmax(worst, fabs(r[k]) / w[k]);
+  }
+  return worst;
+}
+
+/* A linear coefficient can be far below its factor's roots (a conjugate
+** pair 3e-11 +- 2.7e74 i beside the real root -1.2e159: its real part is
+** 1e-85 of its size, which the roots, and so pair_factor, give as 0), and
+** then the sum of the roots (the x^3 equation) cannot hold it.  It is
+** well set by the other equations, which Algorithm 1010 also solves for
+** the smaller coefficients: q2 = (m1 - q1 - q3)/q0 from the x^2 equation
+** or (m2 - q0 q3)/q1 from the x equation (and likewise q0).  Where the
+** equations miss by more than rounding (FACTOR_GOOD), a candidate that
+** makes them hold to rounding (linear_resid) is taken. */
+static void linear_from_equations(const double *p, double *q) {
+  double m[3], w[4], best;
+  int j, k;
+  poly P;
+  poly_init(&P, p, 4);
+  for (k = 0; k < 3; k++) {
+    m[k] = p[3 - k] / p[4];
+    if (!isfinite(m[k])) return;
+  }
+  for (j = 0; j < 4; j += 2) {
+    int o = 2 - j;                /* the other factor's linear coefficient */
+    double cand[2];
+    cand[0] = q[o] != 0 ? (m[1] - q[1] - q[3]) / q[o] : HUGE_VAL;
+    cand[1] = q[o + 1] != 0 ? (m[2] - q[o] * q[j + 1]) / q[o + 1] : HUGE_VAL;
+    best = linear_resid(q, m);
+    if (!(best > FACTOR_GOOD)) continue;    /* the equations hold already */
+    for (k = 0; k < 2; k++) {
+      double r, b0;
+      int i;
+      if (!isfinite(cand[k])) continue;
+      for (i = 0; i < 4; i++) w[i] = q[i];
+      w[j] = cand[k];
+      r = linear_resid(w, m);
+      /* and the factor's roots must still solve p (factor_bwd_dd): the
+      ** equations can be as blind to a wrong coefficient (-1.2e-237 (x^4
+      ** + x^3) + 66 x^2 + 65 x + 3.3e-316 took a factor root 9e-8 off,
+      ** where a subnormal root left the old factor's test unable to say:
+      ** fuzz/fuzz_roots) */
+      b0 = factor_bwd_dd(&P, q[j], q[j + 1]);
+      if (r <= FACTOR_GOOD && b0 < HUGE_VAL && /* (HUGE_VAL: cannot tell) */
+          factor_bwd_dd(&P, cand[k], q[j + 1]) <= fmax(FACTOR_GOOD, b0)) {
+        best = r; q[j] = cand[k];
+      }
+    }
+  }
+}
+
 int arclen_quartic_factor(double a4, double a3, double a2, double a1,
                           double a0, double q[4]) {
   double p[5], re[4], im[4];
@@ -1045,5 +1111,6 @@ int arclen_quartic_factor(double a4, double a3, double a2, double a1,
   }
   factor_polish(&P, q);
   factor_refine(p, &P, q);
+  linear_from_equations(p, q);
   return ARCLEN_OK;
 }
