@@ -1,8 +1,8 @@
 -- method = "elliptic" (src/elliptic.c) against the 40-digit references of
 -- tools/ref_lengths.py (spec/data/curves2d.tsv, curves3d.tsv) and of
--- tools/ref_hard.py (spec/data/hard2d.tsv: reversals near a line at 1e-2 ..
--- 1e-12, coincident pairs and triples and such points moved apart by 1e-4 ..
--- 1e-15, near-cusps to 1e-15).  Bounds (issue 23): every curve <= 1e-14
+-- tools/ref_hard.py (spec/data/hard2d.tsv, hard3d.tsv: reversals near a line
+-- at 1e-2 .. 1e-12, coincident pairs and triples and such points moved apart
+-- by 1e-4 .. 1e-15, near-cusps to 1e-15).  Bounds (issue 23): every curve <= 1e-14
 -- relative, Henkel's six arcs <= 5e-15.  Why 1e-14 holds: every branch now
 -- sums terms within ~6x the result (Carlson's [1,1,1,1] with R_D traded for
 -- R_G, src/elliptic/product.c), each from a handful of roundings and
@@ -32,6 +32,7 @@ describe("elliptic", function()
   check_file("curves2d.tsv")
   check_file("curves3d.tsv")   -- 3D: quartic split, roots polished
   check_file("hard2d.tsv")     -- reversals, coincident points, near-cusps
+  check_file("hard3d.tsv")     -- the same in space (|z'|^2 split by roots.c)
 
   -- Where the digits went before (issue 23): near a fold the hodograph root
   -- is within b1 << 1 of the range, the arguments M^2, Lm^2 of R_F and R_D

@@ -17,7 +17,12 @@ Where the times cannot be verified at 110 digits (a stop exactly at a
 quarter of the length), the row keeps its lengths (range_length, both
 integrators to 1e-30) and gives its times as "-".
 
-Run: nice /usr/bin/python3 tools/ref_hard.py     -> spec/data/hard2d.tsv
+3D (hard3d.tsv): the same three families in space (reversal3d,
+coincident3d, nearcusp3d), fewer of each: the quartic |z'|^2 is split by
+the quartic solver there, so the roots are not the 2D ones.
+
+Run: nice /usr/bin/python3 tools/ref_hard.py [2d|3d|all]
+     -> spec/data/hard2d.tsv, spec/data/hard3d.tsv
 """
 import os
 import random
@@ -77,6 +82,43 @@ def hard2d():
     return rows
 
 
+DIRS3 = [(1, 0, 0), (0, 0, 1), (1, 1, 1), (0.5, -0.75, 1.25), (3, 4, 12)]
+
+
+def hard3d():
+    rows = []
+
+    def add(family, param, c):
+        n = sum(1 for r in rows if r[1] == family) + 1
+        rows.append(("%s-%d" % (family, n), family, param, curves.fl(c)))
+
+    r = random.Random(2311)
+    for j, lams in enumerate(REV_LAMS[:5]):
+        o = tuple(r.randint(-8, 8) / 4 for _ in range(3))
+        base = curves.on_line(o, DIRS3[j % len(DIRS3)], lams)
+        s = r.random()
+        for e in EPS_REV[::2]:
+            add("reversal3d", repr(e), curves.perturb(base, 3, e, random.Random(s)))
+
+    r = random.Random(2312)
+    for rep in range(2):
+        for kind, c in curves.coincident(r, 3):
+            add("coincident3d", kind, c)
+            moved = [int(g.split("=")[1][1]) for g in kind.split(",")]
+            s = r.random()
+            for e in EPS_COIN[rep::4]:
+                add("coincident3d", "%s,%r" % (kind, e),
+                    curves.perturb(c, 3, e, random.Random(s), which=moved))
+
+    r = random.Random(2313)
+    for p, q in [(1, 2), (1, 4), (3, 10), (7, 8)]:
+        c = curves.cusp_base(r, p, q, 3)
+        s = r.random()
+        for e in EPS_CUSP[::2]:
+            add("nearcusp3d", repr(e), curves.perturb(c, 3, e, random.Random(s)))
+    return rows
+
+
 def reference(coords, dim):
     try:
         return PLAIN_REFERENCE(coords, dim)
@@ -90,9 +132,15 @@ PLAIN_REFERENCE = ref_lengths.reference
 
 
 def main():
+    which = sys.argv[1] if len(sys.argv) > 1 else "all"
     os.makedirs(ref_lengths.DATA, exist_ok=True)
     ref_lengths.reference = reference      # write() looks it up by name
-    ref_lengths.write(os.path.join(ref_lengths.DATA, "hard2d.tsv"), hard2d(), 2)
+    if which in ("2d", "all"):
+        ref_lengths.write(os.path.join(ref_lengths.DATA, "hard2d.tsv"),
+                          hard2d(), 2)
+    if which in ("3d", "all"):
+        ref_lengths.write(os.path.join(ref_lengths.DATA, "hard3d.tsv"),
+                          hard3d(), 3)
 
 
 if __name__ == "__main__":
