@@ -433,6 +433,51 @@ static double rj_pv(double x, double y, double z, double p) {
   return v / (z + q);
 }
 
+/* The same reduction for arguments spread beyond 2^1000, unscaled: a
+** common power of 4 cannot hold them all (the tiniest flushed to 0, so
+** rj(5.2e-202, 5.5e273, 8.1e189, -7.9e-207) was NaN), while each R-function
+** of the reduction narrows its own arguments (compress).  Every product is
+** formed with ratios near 1, so none overflows or underflows where the
+** terms are finite: z - r = (z - x) ((z - y)/(z + q)), r = (x + q)
+** (z/(z + q)) + y ((z - x)/(z + q)) (z ((x + q)/(z + q)) went subnormal:
+** 1.8e-13 off), xy + rq as mantissas and exponents. */
+static double rj_pv_wide(double x, double y, double z, double p) {
+  double t, q, r, v, zq;
+  if (x > y) { t = x; x = y; y = t; }
+  if (y > z) { t = y; y = z; z = t; }
+  if (x > y) { t = x; x = y; y = t; }
+  q = -p;
+  zq = z + q;
+  /* z + q beyond DBL_MAX: R_J(v) = R_J(v/4)/8 (homogeneity), once */
+  if (!(zq < HUGE_VAL)) return rj_pv_wide(x / 4, y / 4, z / 4, p / 4) / 8;
+  t = (z - x) * ((z - y) / zq);
+  r = (x + q) * (z / zq) + y * ((z - x) / zq);
+  v = -(t / zq) * rj_pos(x, y, z, r) - 3 * (arclen_rf(x, y, z) / zq);
+  if (x > 0) {
+    /* 3 sqrt(xyz/w) R_C(w, rq), w = xy + rq: xy and rq can each pass the
+    ** double range, so they are kept as mantissa and exponent (frexp);
+    ** with B the larger and S the smaller, w = B (1 + S/B), R_C(w, rq) =
+    ** R_C(1, rq/w) / sqrt(w) and the term is 3 sqrt(xyz) R_C(1, rq/w) / w. */
+    int ex, ey, er, eq, ez, exy, erq, eb, ew;
+    double fxy = frexp(x, &ex) * frexp(y, &ey), frq = frexp(r, &er) * frexp(q, &eq);
+    double fz = frexp(z, &ez), fb, ratio, fw, c, num;
+    exy = ex + ey; erq = er + eq;
+    if (exy + log2(fxy) >= erq + log2(frq)) {
+      fb = fxy; eb = exy; ratio = ldexp(frq / fxy, erq - exy);
+    } else {
+      fb = frq; eb = erq; ratio = ldexp(fxy / frq, exy - erq);
+    }
+    fw = fb * (1 + ratio); ew = eb;               /* w = fw 2^ew */
+    c = rc_pos(1, ldexp(frq / fw, erq - ew));     /* rq / w <= 1 */
+    if (ez % 2 != 0) { fz *= 2; ez--; }           /* sqrt(z) = sqrt(fz) 2^(ez/2) */
+    if (exy % 2 != 0) { fxy *= 2; exy--; }
+    num = 3 * sqrt(fz) * sqrt(fxy) * c / fw;
+    num /= frexp(zq, &eq);                        /* / (z + q) */
+    v += ldexp(num, ez / 2 + exy / 2 - ew - eq);
+  }
+  return v;
+}
+
 double arclen_rj(double x, double y, double z, double p) {
   int k;
   if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || !(p == p)
@@ -451,6 +496,7 @@ double arclen_rj(double x, double y, double z, double p) {
   ** second argument flushed to 0 by that is a domain error (NaN). */
   {
     double v[4] = {x, y, z, -p};
+    if (spread_exp(v, 4) > 1000) return rj_pv_wide(x, y, z, p);
     k = scale_exp(v, 4);
   }
   x = ldexp(x, 2 * k); y = ldexp(y, 2 * k); z = ldexp(z, 2 * k);
