@@ -1,7 +1,9 @@
 -- bench/accuracy.lua -- the README's accuracy table: for each reference
--- family (spec/data/curves2d.tsv, curves3d.tsv, 40-digit mpmath), the
--- largest relative error of each method at t = 1/4, 1/2, 3/4, 1, and the
--- median speed evaluations.  Run: make accuracy
+-- family (spec/data/curves2d.tsv, curves3d.tsv, and the hard curves of
+-- hard2d.tsv, hard3d.tsv: reversals, coincident points, near-cusps to 1e-15;
+-- 40-digit
+-- mpmath), the largest relative error of each method at t = 1/4, 1/2,
+-- 3/4, 1.  Run: make accuracy
 local arclen = require("arclen")
 package.path = "spec/?.lua;" .. package.path
 local H = require("helpers")
@@ -63,3 +65,5 @@ end
 
 report("curves2d.tsv")
 report("curves3d.tsv")
+report("hard2d.tsv")
+report("hard3d.tsv")

@@ -12,14 +12,20 @@
 #include <math.h>
 
 #include "arclen.h"
+#include "elliptic/elliptic.h"
 
-/* Stopping rules of C95: iterate until 4^-m Q < |A_m|, where
-** Q = c * max |A_0 - x_i| and c = (3r)^(-1/6) for R_F, (r/4)^(-1/6) for
-** R_D and R_J, (3r)^(-1/8) for R_C.  We take r = 2^-54 (half an ulp), so
-** the truncation error of the series stays below the rounding error. */
-#define RF_C 426.3337869596693
-#define RDJ_C 645.0795775461748
-#define RC_C 93.82364777335432
+/* Stopping rules in the manner of C95: iterate until 4^-m Q < |A_m|, where
+** Q = c * max |A_0 - x_i|, i.e. until every |X_i| < 1/c.  C95's series end
+** at degree 5 (error O(X^6), c = (3r)^(-1/6) = 426 for R_F, (r/4)^(-1/6) =
+** 645 for R_D, R_J at r = 2^-54); here they run to degree 7 (DLMF 19.36.1,
+** 19.36.2, Carlson & Johnson), the first omitted terms of degree 8 with
+** coefficients below 1 (those kept are below 0.2), so |X| < 2^-7 leaves a
+** truncation error below 2^-56 / (1 - 2^-7): about one duplication step
+** fewer (log4 of 426/128 and 645/128).  Checked against mpmath: at X =
+** 0.017 the degree-7 series err 1e-19 (R_F 1e-17), the degree-5 6e-16.
+** (R_C: closed forms.) */
+#define RF_C 128.0
+#define RDJ_C 128.0
 
 /* Every iteration divides the spread of the arguments by 4 while A_m
 ** tends to a limit of the size of the largest argument over log^2 of the
@@ -131,6 +137,13 @@ static void compress_rf(double v[3]) {
   compress(v, 3, NULL, &fourn);
 }
 
+/* R_F's series to degree 7, DLMF 19.36.1: C95 (2.2)'s 1 - E2/10 + E3/14
+** + E2^2/24 - 3 E2 E3/44, then - 5 E2^3/208 + 3 E3^2/104 + E2^2 E3/16. */
+static double series_f(double e2, double e3) {
+  return 1 - e2 / 10 + e3 / 14 + e2 * e2 / 24 - 3 * e2 * e3 / 44
+         - 5 * e2 * e2 * e2 / 208 + 3 * e3 * e3 / 104 + e2 * e2 * e3 / 16;
+}
+
 /* C95 Algorithm 1 (R_F), arguments >= 0 with at most one zero. */
 static double rf_dup(double x, double y, double z) {
   double a0 = (x + y + z) / 3, a = a0, x0 = x, y0 = y;
@@ -150,8 +163,7 @@ static double rf_dup(double x, double y, double z) {
   dz = -dx - dy;
   e2 = dx * dy - dz * dz;
   e3 = dx * dy * dz;
-  /* C95 (2.2): 1 - E2/10 + E3/14 + E2^2/24 - 3 E2 E3/44 */
-  return (1 - e2 / 10 + e3 / 14 + e2 * e2 / 24 - 3 * e2 * e3 / 44) / sqrt(a);
+  return series_f(e2, e3) / sqrt(a);
 }
 
 double arclen_rf(double x, double y, double z) {
@@ -169,11 +181,15 @@ double arclen_rf(double x, double y, double z) {
   return ldexp(rf_dup(x, y, z), k);        /* R_F(4^k v) = 2^-k R_F(v) */
 }
 
-/* The series of C95 (2.7)/(2.12) shared by R_D and R_J:
-** 1 - 3E2/14 + E3/6 + 9E2^2/88 - 3E4/22 - 9E2E3/52 + 3E5/26. */
+/* The series of C95 (2.7)/(2.12) shared by R_D and R_J,
+** 1 - 3E2/14 + E3/6 + 9E2^2/88 - 3E4/22 - 9E2E3/52 + 3E5/26, to degree 7
+** (DLMF 19.36.2): - E2^3/16 + 3E3^2/40 + 3E2E4/20 + 45E2^2E3/272
+** - 9(E3E4 + E2E5)/68. */
 static double series_dj(double e2, double e3, double e4, double e5) {
   return 1 - 3 * e2 / 14 + e3 / 6 + 9 * e2 * e2 / 88 - 3 * e4 / 22
-         - 9 * e2 * e3 / 52 + 3 * e5 / 26;
+         - 9 * e2 * e3 / 52 + 3 * e5 / 26
+         - e2 * e2 * e2 / 16 + 3 * e3 * e3 / 40 + 3 * e2 * e4 / 20
+         + 45 * e2 * e2 * e3 / 272 - 9 * (e3 * e4 + e2 * e5) / 68;
 }
 
 /* C95 Algorithm 4 (R_D); x, y >= 0, at most one zero; z > 0. */
@@ -218,23 +234,45 @@ double arclen_rd(double x, double y, double z) {
   }
 }
 
-/* C95 Algorithm 2 (R_C); x >= 0, y > 0. */
+/* R_C is elementary (C95 (2.5)-(2.6), DLMF 19.2.17-19.2.18):
+**   y > x: atan(sqrt((y - x)/x)) / sqrt(y - x),
+**   y < x: atanh(sqrt((x - y)/x)) / sqrt(x - y),
+** one atan or log1p where C95's Algorithm 2 took ~log4 of the spread
+** duplication steps with a square root each (R_J takes an R_C in every one
+** of its steps).  atanh(s) = log1p(2s/(1 - s))/2 with 1 - s = (y/x)/(1 + s),
+** free of cancellation however small y/x.  Near y = x, e = (y - x)/x is
+** small and the series of C95 (2.13) in e, R_C(1, 1 + e) =
+** sum (-e)^k/(2k + 1), is summed instead: for |e| <= 2^-8 seven terms leave
+** |e|^7/15 < 2^-59.  Each form is a few roundings of well-conditioned
+** operations (the value's relative condition in e, s and y/x is <= 1).
+** x >= 0, y > 0, both within 2^+-500 (the callers scale). */
+#define RC_SERIES 0x1p-8
+
 static double rc_dup(double x, double y) {
-  double a0 = (x + 2 * y) / 3, a = a0, y0 = y;
-  double q = RC_C * fabs(a0 - x);
-  double fourn = 1, s;
-  int m;
-  for (m = 0; m < DUP_MAX && q * fourn >= fabs(a); m++) {
-    double lam = 2 * sqrt(x) * sqrt(y) + y;
-    x = (x + lam) / 4; y = (y + lam) / 4;
-    a = (a + lam) / 4;
-    fourn /= 4;
+  double d = y - x, e, s;
+  if (x == 0) return 1.5707963267948966 / sqrt(y);         /* pi / 2 */
+  e = d / x;
+  if (fabs(e) <= RC_SERIES)
+    return (1 - e * (1.0 / 3 - e * (1.0 / 5 - e * (1.0 / 7 - e * (1.0 / 9
+            - e * (1.0 / 11 - e * (1.0 / 13))))))) / sqrt(x);
+  if (d > 0) {
+    s = sqrt(e);
+    return atan(s) / sqrt(d);
   }
-  s = (y0 - a0) * fourn / a;
-  /* C95 (2.13): 1 + 3s^2/10 + s^3/7 + 3s^4/8 + 9s^5/22 + 159s^6/208
-  ** + 9s^7/8 */
-  return (1 + s * s * (3.0 / 10 + s * (1.0 / 7 + s * (3.0 / 8 + s * (9.0 / 22
-          + s * (159.0 / 208 + s * (9.0 / 8))))))) / sqrt(a);
+  s = sqrt(-e);
+  return log1p(2 * s * (1 + s) * (x / y)) / 2 / sqrt(-d);
+}
+
+/* R_C(1, y), y > 0, the form R_J's duplication takes at every step: as
+** rc_dup with x = 1 (1 - s = y/(1 + s), so 2s/(1 - s) = 2s(1 + s)/y). */
+static double rc_one(double y) {
+  double e = y - 1, s;
+  if (fabs(e) <= RC_SERIES)
+    return 1 - e * (1.0 / 3 - e * (1.0 / 5 - e * (1.0 / 7 - e * (1.0 / 9
+           - e * (1.0 / 11 - e * (1.0 / 13))))));
+  s = sqrt(fabs(e));
+  if (e > 0) return atan(s) / s;
+  return log1p(2 * s * (1 + s) / y) / (2 * s);
 }
 
 static double rc_pos(double x, double y) {
@@ -307,7 +345,7 @@ static double rj_dup(double x, double y, double z, double p) {
     ** gives 1 + e_m = 2 sqrt(p_m)(p_m + lambda_m)/d_m without the
     ** subtraction.  Used always: it measured better for every e_m. */
     ope = 2 * sp * (p + lam) / d;
-    sum += fourn / d * rc_dup(1, ope);
+    sum += fourn / d * rc_one(ope);
     x = (x + lam) / 4; y = (y + lam) / 4; z = (z + lam) / 4;
     p = (p + lam) / 4;
     a = (a + lam) / 4;
@@ -395,6 +433,51 @@ static double rj_pv(double x, double y, double z, double p) {
   return v / (z + q);
 }
 
+/* The same reduction for arguments spread beyond 2^1000, unscaled: a
+** common power of 4 cannot hold them all (the tiniest flushed to 0, so
+** rj(5.2e-202, 5.5e273, 8.1e189, -7.9e-207) was NaN), while each R-function
+** of the reduction narrows its own arguments (compress).  Every product is
+** formed with ratios near 1, so none overflows or underflows where the
+** terms are finite: z - r = (z - x) ((z - y)/(z + q)), r = (x + q)
+** (z/(z + q)) + y ((z - x)/(z + q)) (z ((x + q)/(z + q)) went subnormal:
+** 1.8e-13 off), xy + rq as mantissas and exponents. */
+static double rj_pv_wide(double x, double y, double z, double p) {
+  double t, q, r, v, zq;
+  if (x > y) { t = x; x = y; y = t; }
+  if (y > z) { t = y; y = z; z = t; }
+  if (x > y) { t = x; x = y; y = t; }
+  q = -p;
+  zq = z + q;
+  /* z + q beyond DBL_MAX: R_J(v) = R_J(v/4)/8 (homogeneity), once */
+  if (!(zq < HUGE_VAL)) return rj_pv_wide(x / 4, y / 4, z / 4, p / 4) / 8;
+  t = (z - x) * ((z - y) / zq);
+  r = (x + q) * (z / zq) + y * ((z - x) / zq);
+  v = -(t / zq) * rj_pos(x, y, z, r) - 3 * (arclen_rf(x, y, z) / zq);
+  if (x > 0) {
+    /* 3 sqrt(xyz/w) R_C(w, rq), w = xy + rq: xy and rq can each pass the
+    ** double range, so they are kept as mantissa and exponent (frexp);
+    ** with B the larger and S the smaller, w = B (1 + S/B), R_C(w, rq) =
+    ** R_C(1, rq/w) / sqrt(w) and the term is 3 sqrt(xyz) R_C(1, rq/w) / w. */
+    int ex, ey, er, eq, ez, exy, erq, eb, ew;
+    double fxy = frexp(x, &ex) * frexp(y, &ey), frq = frexp(r, &er) * frexp(q, &eq);
+    double fz = frexp(z, &ez), fb, ratio, fw, c, num;
+    exy = ex + ey; erq = er + eq;
+    if (exy + log2(fxy) >= erq + log2(frq)) {
+      fb = fxy; eb = exy; ratio = ldexp(frq / fxy, erq - exy);
+    } else {
+      fb = frq; eb = erq; ratio = ldexp(fxy / frq, exy - erq);
+    }
+    fw = fb * (1 + ratio); ew = eb;               /* w = fw 2^ew */
+    c = rc_pos(1, ldexp(frq / fw, erq - ew));     /* rq / w <= 1 */
+    if (ez % 2 != 0) { fz *= 2; ez--; }           /* sqrt(z) = sqrt(fz) 2^(ez/2) */
+    if (exy % 2 != 0) { fxy *= 2; exy--; }
+    num = 3 * sqrt(fz) * sqrt(fxy) * c / fw;
+    num /= frexp(zq, &eq);                        /* / (z + q) */
+    v += ldexp(num, ez / 2 + exy / 2 - ew - eq);
+  }
+  return v;
+}
+
 double arclen_rj(double x, double y, double z, double p) {
   int k;
   if (!ok_arg(x) || !ok_arg(y) || !ok_arg(z) || !(p == p)
@@ -413,6 +496,7 @@ double arclen_rj(double x, double y, double z, double p) {
   ** second argument flushed to 0 by that is a domain error (NaN). */
   {
     double v[4] = {x, y, z, -p};
+    if (spread_exp(v, 4) > 1000) return rj_pv_wide(x, y, z, p);
     k = scale_exp(v, 4);
   }
   x = ldexp(x, 2 * k); y = ldexp(y, 2 * k); z = ldexp(z, 2 * k);
@@ -447,4 +531,74 @@ double arclen_rg(double x, double y, double z) {
   return ldexp((y * arclen_rf(x, z, y) +
                 (y - x) * (z - y) * arclen_rd(x, z, y) / 3 +
                 sqrt(x * z / y)) / 2, k);
+}
+
+/* R_F(x, y, z), R_D(x, y, z) and R_J(x, y, z, p) together, as Carlson's
+** [1,1,1,1] needs them (product.c): the duplication's lambda = sqrt(xy) +
+** sqrt(xz) + sqrt(yz) (C95 (2.3)) is symmetric in x, y, z, so one sequence
+** x_m, y_m, z_m serves all three, each with its own mean A_m (C95
+** Algorithms 1, 3, 4: (x + y + z)/3, (x + y + 3z)/5, (x + y + z + 2p)/5,
+** all stepped as (A + lambda)/4) and its own stopping test; the loop ends
+** when the last is met.  The square roots and the loop, 3/5 of the work
+** of the three calls apart, are shared.  Arguments outside the plain case
+** (non-moderate, p far above x, y, z, a domain edge) go to the separate
+** functions, which scale, compress and settle as they need. */
+void arclen_rfdj(double x, double y, double z, double p, double *rf,
+                 double *rd, double *rj) {
+  double v[4] = {x, y, z, p};
+  double af0 = (x + y + z) / 3, ad0 = (x + y + 3 * z) / 5;
+  double aj0 = (x + y + z + 2 * p) / 5, af = af0, ad = ad0, aj = aj0;
+  double x0 = x, y0 = y, z0 = z, p0 = p, qf, qd, qj, fourn = 1;
+  double sumd = 0, sumj = 0, dx, dy, dz, dp, e2, e3, xy, zz, xyz;
+  int m;
+  if (!ok_arg(x) || !ok_arg(y) || !(z > 0 && z < HUGE_VAL) ||
+      !(p > 0 && p < HUGE_VAL) || (x == 0) + (y == 0) > 0 || !moderate(v, 4) ||
+      p > RJ_FAR * max3(x, y, z)) {
+    *rf = arclen_rf(x, y, z);
+    *rd = arclen_rd(x, y, z);
+    *rj = arclen_rj(x, y, z, p);
+    return;
+  }
+  qf = RF_C * max3(fabs(af0 - x), fabs(af0 - y), fabs(af0 - z));
+  qd = RDJ_C * max3(fabs(ad0 - x), fabs(ad0 - y), fabs(ad0 - z));
+  qj = RDJ_C * fmax(max3(fabs(aj0 - x), fabs(aj0 - y), fabs(aj0 - z)),
+                    fabs(aj0 - p));
+  /* p <= RJ_FAR max(x, y, z): the gap p - x closes by 4 a step like the
+  ** others', so the cap is as far off as for R_F */
+  for (m = 0; m < DUP_MAX && (qf * fourn >= af || qd * fourn >= ad ||
+                              qj * fourn >= aj); m++) {
+    double sx = sqrt(x), sy = sqrt(y), sz = sqrt(z), sp = sqrt(p);
+    double lam = sx * sy + sx * sz + sy * sz;
+    double id = 1 / ((sp + sx) * (sp + sy) * (sp + sz));
+    sumd += fourn / (sz * (z + lam));
+    sumj += fourn * id * rc_one(2 * sp * (p + lam) * id);    /* as rj_dup */
+    x = (x + lam) / 4; y = (y + lam) / 4; z = (z + lam) / 4;
+    p = (p + lam) / 4;
+    af = (af + lam) / 4; ad = (ad + lam) / 4; aj = (aj + lam) / 4;
+    fourn /= 4;
+  }
+  dx = (af0 - x0) * fourn / af;                         /* R_F, as rf_dup */
+  dy = (af0 - y0) * fourn / af;
+  dz = -dx - dy;
+  e2 = dx * dy - dz * dz;
+  e3 = dx * dy * dz;
+  *rf = series_f(e2, e3) / sqrt(af);
+  dx = (ad0 - x0) * fourn / ad;                         /* R_D, as rd_dup */
+  dy = (ad0 - y0) * fourn / ad;
+  dz = -(dx + dy) / 3;
+  xy = dx * dy; zz = dz * dz;
+  *rd = fourn * series_dj(xy - 6 * zz, (3 * xy - 8 * zz) * dz,
+                          3 * (xy - zz) * zz, xy * zz * dz) / (ad * sqrt(ad))
+        + 3 * sumd;
+  dx = (aj0 - x0) * fourn / aj;                         /* R_J, as rj_dup */
+  dy = (aj0 - y0) * fourn / aj;
+  dz = (aj0 - z0) * fourn / aj;
+  dp = -(dx + dy + dz) / 2;
+  (void)p0;
+  xyz = dx * dy * dz;
+  e2 = dx * dy + dx * dz + dy * dz - 3 * dp * dp;
+  e3 = xyz + 2 * e2 * dp + 4 * dp * dp * dp;
+  *rj = fourn * series_dj(e2, e3, (2 * xyz + e2 * dp + 3 * dp * dp * dp) * dp,
+                          xyz * dp * dp) / (aj * sqrt(aj))
+        + 6 * sumj;
 }

@@ -35,7 +35,7 @@ static void gegenbauer(double c, int n, double *g) {
 
 /* F(u) = (u r + b^2 asinh(u/b))/2, the antiderivative of sqrt(u^2+b^2). */
 static double j0_anti(double u, double b) {
-  double r = hypot(u, b);
+  double r = ell_hypot(u, b);
   if (b == 0) return u * fabs(u) / 2;
   return (u * r + b * b * asinh(u / b)) / 2;
 }
@@ -48,7 +48,7 @@ static double j0_anti(double u, double b) {
 static double j0_unit(double v, double w, double b) {
   double rv, rw, dd;
   if (!(v * w > 0)) return j0_anti(w, b) - j0_anti(v, b);
-  rv = hypot(v, b); rw = hypot(w, b);
+  rv = ell_hypot(v, b); rw = ell_hypot(w, b);
   dd = (w - v) * (w + v);
   return (dd * (w * w + v * v + b * b) / (w * rw + v * rv)
           + b * b * asinh(dd / (w * rv + v * rw))) / 2;
@@ -57,7 +57,7 @@ static double j0_unit(double v, double w, double b) {
 /* (r_w^3 - r_v^3)/3 with r^2 = u^2 + b^2; the difference of cubes is
 ** formed from r_w^2 - r_v^2 = (w - v)(w + v), without cancellation. */
 static double j1_unit(double v, double w, double b) {
-  double rw = hypot(w, b), rv = hypot(v, b);
+  double rw = ell_hypot(w, b), rv = ell_hypot(v, b);
   return (w - v) * (w + v) * (rw * rw + rw * rv + rv * rv) / (rw + rv) / 3;
 }
 
@@ -88,7 +88,7 @@ double arclen_ell_j1(double v, double w, double b) {
 
 double arclen_ell_series_one(double an, double bn, double af, double bf,
                              double y, double x) {
-  double dr = af - an, di = bf, r = hypot(dr, di), c = dr / r;
+  double dr = af - an, di = bf, r = ell_hypot(dr, di), c = dr / r;
   double v = y - an, w = x - an, reach = fmax(fabs(v), fabs(w));
   double g[ELL_NMAX], k[ELL_NMAX], sum;
   double vr = v / r, wr = w / r, rv3, rw3, pv, pw, b2 = (bn / r) * (bn / r);
@@ -101,8 +101,8 @@ double arclen_ell_series_one(double an, double bn, double af, double bf,
   ** by (b/reach)^2 (i-1)/(i+2) < 1 relative to the new one. */
   k[0] = arclen_ell_j0(v, w, bn);
   if (n > 1) k[1] = arclen_ell_j1(v, w, bn) / r;
-  rv3 = pow(hypot(v, bn), 3) / r;
-  rw3 = pow(hypot(w, bn), 3) / r;
+  rv3 = pow(ell_hypot(v, bn), 3) / r;
+  rw3 = pow(ell_hypot(w, bn), 3) / r;
   pv = vr; pw = wr;                    /* (u/R)^(i-1) at i = 2 */
   for (i = 2; i < n; i++) {
     k[i] = (pw * rw3 - pv * rv3) / (i + 2) - (i - 1) * b2 * k[i - 2] / (i + 2);
@@ -116,7 +116,7 @@ double arclen_ell_series_one(double an, double bn, double af, double bf,
 double arclen_ell_series_both(double a1, double b1, double a2, double b2,
                               double y, double x) {
   double m = (x + y) / 2, h = (x - y) / 2;
-  double r1 = hypot(a1 - m, b1), r2 = hypot(a2 - m, b2);
+  double r1 = ell_hypot(a1 - m, b1), r2 = ell_hypot(a2 - m, b2);
   double g1[ELL_NMAX], g2[ELL_NMAX], q1 = h / r1, q2 = h / r2, p, sum = 0;
   int n = terms_for(fmax(q1, q2)), i, j;
   gegenbauer((a1 - m) / r1, n, g1);
@@ -141,7 +141,7 @@ double arclen_ell_series_both(double a1, double b1, double a2, double b2,
 ** 0, fuzz/fuzz_length), so the series above is integrated term by term:
 ** 2h R sum_{n even} C_n(c) (h/R)^n / (n + 1). */
 double arclen_ell_single(double a, double b, double y, double x) {
-  double m = (x + y) / 2, h = (x - y) / 2, r = hypot(a - m, b);
+  double m = (x + y) / 2, h = (x - y) / 2, r = ell_hypot(a - m, b);
   double g[ELL_NMAX], q, p = 1, sum = 0;
   int n, i;
   if (!(h <= ELL_RHO * r)) return arclen_ell_j0(y - a, x - a, b);

@@ -9,11 +9,22 @@
 ** The code is ours; the method follows that paper.
 */
 #include <float.h>
+#include <limits.h>
 #include <math.h>
 
 #include "arclen.h"
+#include "roots/roots3d.h"
 
 #define NEWTON_CAP 16     /* quadratic convergence; guards NaN/limit cycles */
+
+/* |a + ib|: sqrt(a^2 + b^2) where the larger part is within 2^+-500 (no
+** square overflows, none that matters underflows; within an ulp of
+** hypot), else hypot.  libm's hypot was a third of the quartic's time. */
+static double mag(double a, double b) {
+  double m = fmax(fabs(a), fabs(b));
+  if (m > 0x1p-500 && m < 0x1p500) return sqrt(a * a + b * b);
+  return hypot(a, b);
+}
 
 /* Roots of a2 x^2 + a1 x + a0; the one that would cancel in -a1 +- sqrt(d)
 ** comes from the product of the roots instead.  Returns the count. */
@@ -317,6 +328,14 @@ typedef struct {
   int n;
 } poly;
 
+/* Only the frexp parts (f, e), which dd_value's scaling reads: the
+** logs of poly_init cost as much as a Newton step. */
+static void poly_init_fe(poly *P, const double *p, int n) {
+  int j;
+  P->n = n;
+  for (j = 0; j <= n; j++) P->f[j] = frexp(p[j], &P->e[j]);
+}
+
 static void poly_init(poly *P, const double *p, int n) {
   int j;
   P->n = n;
@@ -377,20 +396,20 @@ static double edge_bits(const poly *P, int a, int b) {
 ** (from the double root -1 of -x^2 (x+1)^2 + 1.1e-75 x - 4e-323 to 0,
 ** where the scaled constant term underflows: an exact root of c). */
 static void polish_root(const double *c, int n, double *zr, double *zi) {
-  double best = HUGE_VAL, xr = *zr, xi = *zi, r0 = hypot(xr, xi);
+  double best = HUGE_VAL, xr = *zr, xi = *zi, r0 = mag(xr, xi);
   const double z0r = *zr, z0i = *zi;
   int it, k;
   for (it = 0; it < NEWTON_CAP; it++) {
     double pr = c[n], pi = 0, dr = 0, di = 0, t, den, ap, s = fabs(c[n]);
-    double ax = hypot(xr, xi), rel;
+    double ax = mag(xr, xi), rel;
     for (k = n - 1; k >= 0; k--) {        /* Horner for p and p' */
       t = dr * xr - di * xi + pr; di = dr * xi + di * xr + pi; dr = t;
       t = pr * xr - pi * xi + c[k]; pi = pr * xi + pi * xr; pr = t;
       s = s * ax + fabs(c[k]);
     }
-    ap = hypot(pr, pi);
+    ap = mag(pr, pi);
     rel = ap > 0 ? ap / s : 0;
-    if (!(rel < best) || hypot(xr - z0r, xi - z0i) > r0 / 4) break;
+    if (!(rel < best) || mag(xr - z0r, xi - z0i) > r0 / 4) break;
     best = rel; *zr = xr; *zi = xi;
     den = dr * dr + di * di;
     if (ap == 0 || den == 0) break;
@@ -424,13 +443,13 @@ static double factor_bwd(const double *c, int n, double u, double v) {
   double re[2], im[2], worst = 0;
   int i, k, nr = arclen_quadratic(1, u, v, re, im);
   for (i = 0; i < nr; i++) {
-    double pr = c[n], pi = 0, s = fabs(c[n]), az = hypot(re[i], im[i]), t;
+    double pr = c[n], pi = 0, s = fabs(c[n]), az = mag(re[i], im[i]), t;
     for (k = n - 1; k >= 0; k--) {
       t = pr * re[i] - pi * im[i] + c[k];
       pi = pr * im[i] + pi * re[i]; pr = t;
       s = s * az + fabs(c[k]);
     }
-    t = hypot(pr, pi);
+    t = mag(pr, pi);
     if (t > 0) worst = fmax(worst, s > 0 ? t / s : HUGE_VAL);
     if (!(t < HUGE_VAL)) return HUGE_VAL;        /* NaN or overflow */
   }
@@ -670,6 +689,203 @@ static int poly_roots(const double *p, int n, double *re, double *im) {
   return poly_roots_(p, n, re, im, 1);
 }
 
+/* ---- one Newton step with the residual in double-double ----------------
+** Polished in double, a root is placed only to the rounding of Horner's
+** sum, ~ n eps sum |p_k| |z|^k / |p'(z)|: 2e-11 in the imaginary part of
+** 1000 + i beside the root 1e8 (Algorithm 1010's case 8, whose integer
+** coefficients are exact).  With p(z) summed in double-double (compensated
+** Horner: every product and sum split into its value and exact error,
+** Ogita, Rump & Oishi 2005; Graillat, Langlois & Louvet 2009) the value's
+** own error is ~ eps^2 times the sum, so one Newton step from a root good
+** to ~sqrt(eps) lands within an ulp or two of the root of the
+** coefficients as given -- the attainable accuracy when they are exact
+** (Algorithm 1010 reaches it by Newton on its factors in the same way). */
+
+/* a b = p + *e exactly (Dekker's TwoProduct with Veltkamp's split into
+** 26-bit halves: plain arithmetic, inlined, where fma() was a library call
+** in every step; |a|, |b| < 2^995 here: dd_value's terms stay within
+** 2^+-540) */
+static double split_hi(double a) {
+  double t = 134217729.0 * a;                  /* 2^27 + 1 */
+  return t - (t - a);
+}
+
+static double two_prod(double a, double b, double *e) {
+  double p = a * b, ah = split_hi(a), al = a - ah, bh = split_hi(b), bl = b - bh;
+  *e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+  return p;
+}
+
+/* p(z) for p[0..n] scaled to c_j = p_j 2^(E j - M), M the exponent of the
+** largest term at |z| = 2^E (so the sum stays near 1), in complex
+** double-double; the value to double in *vr, *vi, the derivative (plain
+** Horner) in *dr, *di, |p''(z)| in *d2, the backward error |p(z)| / sum |p_k| |z|^k in
+** *bwd (accurate where the plain one is rounding noise).  Returns 0 if a scaled coefficient is subnormal
+** and not negligible: the scaling would round it. */
+static int dd_value(const poly *P, const double *p, int n, int E, double zr,
+                    double zi, double *vr, double *vi, double *dr, double *di,
+                    double *bwd, double *d2) {
+  double c[5], hr, lr, hi = 0, li = 0, pr = 0, pi = 0, t, sz = 0, az;
+  double qr = 0, qi = 0;
+  int j, M = INT_MIN, plain = E > -60 && E < 60;
+  if (E < -1100 || E > 1100) return 0;  /* (ilogb of a finite nonzero z) */
+  /* coefficients within 2^+-300 and |z| within 2^+-60: every term and its
+  ** rounding error are normal doubles unscaled (the common case; the
+  ** scaling below costs as much as the sum) */
+  for (j = 0; j <= n && plain; j++)
+    if (p[j] != 0 && !(fabs(p[j]) > 0x1p-300 && fabs(p[j]) < 0x1p300))
+      plain = 0;
+  if (plain) {
+    for (j = 0; j <= n; j++) c[j] = p[j];
+    E = 0; M = 0;
+  } else {
+    for (j = 0; j <= n; j++)
+      if (P->f[j] != 0 && P->e[j] + E * j > M) M = P->e[j] + E * j;
+    for (j = 0; j <= n; j++) {
+      c[j] = P->f[j] == 0 ? 0 : ldexp(P->f[j], P->e[j] + E * j - M);
+      if (c[j] != 0 && fabs(c[j]) < DBL_MIN && P->e[j] + E * j - M > -1000)
+        return 0;
+    }
+    zr = ldexp(zr, -E); zi = ldexp(zi, -E);
+  }
+  az = mag(zr, zi);
+  for (j = n; j >= 0; j--) sz = sz * az + fabs(c[j]);
+  hr = c[n]; lr = 0;
+  for (j = n - 1; j >= 0; j--) {
+    double e1, e2, e3, e4, s, a, b;
+    t = qr * zr - qi * zi + pr;           /* p''/2 and p' by plain Horner */
+    qi = qr * zi + qi * zr + pi; qr = t;
+    t = pr * zr - pi * zi + hr;
+    pi = pr * zi + pi * zr + hi; pr = t;
+    a = two_prod(hr, zr, &e1);
+    b = two_prod(-hi, zi, &e2);
+    s = two_sum(a, b, &e3);
+    s = two_sum(s, c[j], &e4);
+    t = e1 + e2 + e3 + e4 + (lr * zr - li * zi);
+    a = two_prod(hr, zi, &e1);
+    b = two_prod(hi, zr, &e2);
+    hi = two_sum(a, b, &e3);
+    li = e1 + e2 + e3 + (lr * zi + li * zr);
+    hr = s + t; lr = t - (hr - s);        /* renormalise both parts */
+    t = hi + li; li = li - (t - hi); hi = t;
+  }
+  *bwd = sz > 0 ? mag(hr, hi) / sz : 0;
+  if (plain) {
+    *dr = pr; *di = pi; *vr = hr; *vi = hi; *d2 = 2 * mag(qr, qi);
+  } else {
+    *dr = ldexp(pr, M - E); *di = ldexp(pi, M - E);   /* d/dz, z = 2^E y */
+    *vr = ldexp(hr, M); *vi = ldexp(hi, M);
+    *d2 = ldexp(2 * mag(qr, qi), M - 2 * E);                 /* |p''(z)| */
+  }
+  return isfinite(*vr + *vi + *dr + *di);
+}
+
+/* The step is taken only where Newton is in its quadratic basin: smaller
+** than 2^-20 of |z| (the double polish leaves simple roots far closer) and
+** than a quarter of the distance to every other root (a near-double pair
+** must not fall into one root: fuzz/fuzz_roots' lesson in polish_root).
+** Conjugate pairs are stepped as pairs (conj of the step), so they stay
+** exact conjugates. */
+#define DD_STEP_REL 0x1p-20
+#define DD_STEPS 4        /* quadratic convergence from 2^-20: 2 or 3 */
+
+/* A close pair with a real centre m (two near reals, or a conjugate pair
+** near the axis) is ill-placed by Newton in x: each root only to ~ eps /
+** split, and no step is allowed (a quarter of the split).  About m the
+** polynomial p(m + y), its coefficients from the double-double Taylor
+** shift (one rounding each, which moves small roots by their own relative
+** eps), holds the pair as its two smallest roots y, well separated in
+** their own scale (the centroid shift of Algorithm 1010, taken at the
+** pair): 905 and 905 + 2^-18 beside 7000 and -32 came out 905 +- 1.2e-5 i,
+** an error 4x the split.  The pair is replaced if both roots' residuals in
+** double-double then fall.  CLOSE_PAIR: the double solver leaves a
+** near-double pair split by ~ sqrt(eps) |m| ~ 2^-26 |m| at most. */
+#define CLOSE_PAIR 0x1p-8
+
+static void split_close_pair(const poly *P, const double *p, int n, int cnt,
+                             double *re, double *im) {
+  double best = HUGE_VAL, b[5], yr[4], yi[4], nr[2], ni[2], m, old = 0, neu = 0;
+  double vr, vi, dr, di, bw, d2;
+  int k, j, bk = -1, bj = -1, i, ny, s[2] = {-1, -1};
+  for (k = 0; k < cnt; k++)
+    for (j = k + 1; j < cnt; j++) {
+      double d = mag(re[j] - re[k], im[j] - im[k]);
+      int real_centre = (im[k] == 0 && im[j] == 0) ||
+                        (re[j] == re[k] && im[j] == -im[k]);
+      if (real_centre && d < best) { best = d; bk = k; bj = j; }
+    }
+  if (bk < 0) return;
+  m = (re[bk] + re[bj]) / 2;
+  if (!(best <= CLOSE_PAIR * fabs(m)) || m == 0) return;   /* (0: exact) */
+  for (i = 0; i <= n; i++) b[i] = p[i] / p[n];
+  taylor_shift(b, n, m);
+  for (i = 0; i <= n; i++) if (!isfinite(b[i])) return;
+  ny = poly_roots_(b, n, yr, yi, 0);
+  for (i = 0; i < ny; i++) {           /* the two smallest y */
+    double a = mag(yr[i], yi[i]);
+    if (s[0] < 0 || a < mag(yr[s[0]], yi[s[0]])) { s[1] = s[0]; s[0] = i; }
+    else if (s[1] < 0 || a < mag(yr[s[1]], yi[s[1]])) s[1] = i;
+  }
+  /* and they must be a pair again: two reals or exact conjugates (of a
+  ** triple cluster the two smallest may be one of each: -(x + 1)^3) */
+  if (s[1] < 0 || !((yi[s[0]] == 0 && yi[s[1]] == 0) ||
+                    (yr[s[0]] == yr[s[1]] && yi[s[0]] == -yi[s[1]])))
+    return;
+  for (i = 0; i < 2; i++) {
+    int q = i == 0 ? bk : bj, e;
+    nr[i] = m + yr[s[i]]; ni[i] = yi[s[i]];
+    if (!isfinite(nr[i] + ni[i])) return;
+    e = ilogb(fabs(m)) + 1;
+    if (!dd_value(P, p, n, e, re[q], im[q], &vr, &vi, &dr, &di, &bw, &d2)) return;
+    old = fmax(old, bw);
+    if (!dd_value(P, p, n, e, nr[i], ni[i], &vr, &vi, &dr, &di, &bw, &d2)) return;
+    neu = fmax(neu, bw);
+  }
+  if (!(neu < old)) return;
+  re[bk] = nr[0]; im[bk] = ni[0]; re[bj] = nr[1]; im[bj] = ni[1];
+}
+
+static void refine_roots(const double *p, int n, int cnt, double *re,
+                         double *im) {
+  poly P;
+  int k, j, it;
+  poly_init_fe(&P, p, n);
+  if (n >= 2) split_close_pair(&P, p, n, cnt, re, im);
+  for (k = 0; k < cnt; k++) {
+    double az = mag(re[k], im[k]), gap = HUGE_VAL, moved = 0;
+    for (j = 0; j < cnt && im[k] < 0; j++)
+      if (re[j] == re[k] && im[j] == -im[k]) break;
+    if (im[k] < 0 && j < cnt) continue;   /* stepped with its partner */
+    if (!(az > 0) || !(az < HUGE_VAL)) continue;
+    for (j = 0; j < cnt; j++)
+      if (j != k && !(re[j] == re[k] && im[j] == -im[k]))
+        gap = fmin(gap, mag(re[j] - re[k], im[j] - im[k]));
+    if (im[k] != 0) gap = fmin(gap, 2 * fabs(im[k]));   /* the pair's own split */
+    /* a step leaves ~ st^2 |p''| / (2 |p'|) (Newton's quadratic error):
+    ** another is taken only while that exceeds a quarter ulp */
+    for (it = 0; it < DD_STEPS; it++) {
+      double vr, vi, dr, di, den, sr, si, st, b, d2;
+      if (!dd_value(&P, p, n, ilogb(az) + 1, re[k], im[k], &vr, &vi, &dr, &di,
+                    &b, &d2))
+        break;
+      den = dr * dr + di * di;
+      if (!(den > 0) || !isfinite(den)) break;
+      sr = (vr * dr + vi * di) / den;
+      si = (vi * dr - vr * di) / den;
+      st = mag(sr, si);
+      if (!(moved + st <= DD_STEP_REL * az && moved + st <= gap / 4)) break;
+      moved += st;
+      for (j = 0; j < cnt; j++)
+        if (j != k && im[k] > 0 && re[j] == re[k] && im[j] == -im[k]) {
+          re[j] -= sr; im[j] += si;
+        }
+      re[k] -= sr;
+      if (im[k] != 0) im[k] -= si;
+      if (!(st * st * d2 > DBL_EPSILON / 4 * az * sqrt(den))) break;
+    }
+  }
+}
+
 static int all_finite(const double *a, int n) {
   int k;
   for (k = 0; k <= n; k++) if (!isfinite(a[k])) return 0;
@@ -681,18 +897,38 @@ int arclen_cubic(double a3, double a2, double a1, double a0, double re[3],
                  double im[3]) {
   double p[4];
   if (a3 == 0) return arclen_quadratic(a2, a1, a0, re, im);
+  int n;
   p[0] = a0; p[1] = a1; p[2] = a2; p[3] = a3;
   if (!all_finite(p, 3)) return 0;
-  return poly_roots(p, 3, re, im);
+  n = poly_roots(p, 3, re, im);
+  refine_roots(p, 3, n, re, im);
+  return n;
+}
+
+/* The quartic's roots without the double-double step (roots3d.h): for
+** callers whose coefficients are rounded sums (|z'|^2 of a hodograph),
+** where the last bit of the given coefficients' roots is no truth and the
+** step's ~300 ns buy nothing (gauss/branch.c's branch points could take
+** this; arclen_quartic keeps the step). */
+int arclen_quartic_plain(double a4, double a3, double a2, double a1,
+                         double a0, double re[4], double im[4]) {
+  double p[5];
+  if (a4 == 0) return arclen_cubic(a3, a2, a1, a0, re, im);
+  p[0] = a0; p[1] = a1; p[2] = a2; p[3] = a3; p[4] = a4;
+  if (!all_finite(p, 4)) return 0;
+  return poly_roots(p, 4, re, im);
 }
 
 int arclen_quartic(double a4, double a3, double a2, double a1, double a0,
                    double re[4], double im[4]) {
   double p[5];
   if (a4 == 0) return arclen_cubic(a3, a2, a1, a0, re, im);
+  int n;
   p[0] = a0; p[1] = a1; p[2] = a2; p[3] = a3; p[4] = a4;
   if (!all_finite(p, 4)) return 0;
-  return poly_roots(p, 4, re, im);
+  n = poly_roots(p, 4, re, im);
+  refine_roots(p, 4, n, re, im);
+  return n;
 }
 
 /* x^2 + q[0] x + q[1] with the roots (r1, +-i1) and (r2, i2): a conjugate
@@ -740,8 +976,131 @@ static void factor_polish(const poly *P, double *q) {
   q[2] = ldexp(w[2], E); q[3] = ldexp(w[3], 2 * E);
 }
 
-int arclen_quartic_factor(double a4, double a3, double a2, double a1,
-                          double a0, double q[4]) {
+/* factor_bwd for x^2 + u x + v (unscaled) on the whole p, each root's
+** residual in double-double (dd_value): HUGE_VAL where it cannot say. */
+static double factor_bwd_dd(const poly *P, const double *p, double u,
+                            double v) {
+  double re[2], im[2], worst = 0, vr, vi, dr, di, b, d2;
+  int i, nr = arclen_quadratic(1, u, v, re, im);
+  for (i = 0; i < nr; i++) {
+    double az = mag(re[i], im[i]);
+    if (!(az < HUGE_VAL)) return HUGE_VAL;
+    if (az == 0) { if (P->f[0] != 0) return HUGE_VAL; continue; }
+    if (!dd_value(P, p, 4, ilogb(az) + 1, re[i], im[i], &vr, &vi, &dr, &di, &b,
+                  &d2))
+      return HUGE_VAL;
+    worst = fmax(worst, b);
+  }
+  return worst;
+}
+
+/* The factors' roots, refined on the whole quartic (refine_roots), give
+** the factors again (pair_factor: one rounding per coefficient); a factor
+** is replaced where its roots then solve p better in double-double.  The
+** factors' own Newton (factor_newton, polish_factor) measures its residual
+** in double and stops at that rounding: 1000001 - 1.2e-10 for the
+** exact 1000001 of (x^2 - 2000 x + 1000001)(x - 1e8)(x - 11). */
+static void factor_refine(const double *p, const poly *P, double *q) {
+  double re[4], im[4], r[2], w[4], m[4], v0[4], v1[4];
+  int k = 0, j, E, changed = 0;
+  k += arclen_quadratic(1, q[0], q[1], re, im);
+  if (k != 2) return;
+  k += arclen_quadratic(1, q[2], q[3], re + 2, im + 2);
+  if (k != 4) return;
+  refine_roots(p, 4, 4, re, im);
+  for (j = 0; j < 4; j++) w[j] = q[j];
+  for (j = 0; j < 2; j++) {
+    pair_factor(re[2 * j], fabs(im[2 * j]), re[2 * j + 1], im[2 * j + 1], r);
+    if (r[0] == q[2 * j] && r[1] == q[2 * j + 1]) continue;   /* the same */
+    changed = 1;
+    if (isfinite(r[0] + r[1]) &&
+        factor_bwd_dd(P, p, r[0], r[1]) < factor_bwd_dd(P, p, q[2 * j], q[2 * j + 1])) {
+      w[2 * j] = r[0]; w[2 * j + 1] = r[1];
+    }
+  }
+  if (!changed) return;
+  /* and only if the factors still multiply out to p (in its own scale, as
+  ** factor_polish): near a double pair each root solves p to rounding while
+  ** the four together miss its coefficients by ~ the pair's split (the x^3
+  ** coefficient 3e-9 off in roots_fuzz.tsv's near-double-complex-pair) */
+  E = group_scale(P, 0, 4);
+  for (j = 1; j <= 4; j++) m[j - 1] = scaled(P, 4 - j, 4, E);
+  for (j = 0; j < 4; j++) {
+    v0[j] = ldexp(q[j], -(j % 2 + 1) * E);
+    v1[j] = ldexp(w[j], -(j % 2 + 1) * E);
+  }
+  if (!(resid_norm(v1, m) <= fmax(FACTOR_GOOD, resid_norm(v0, m)))) return;
+  for (j = 0; j < 4; j++) q[j] = w[j];
+}
+
+/* The largest relative residual of the coefficient equations that hold
+** the linear coefficients, (x^2 + q0 x + q1)(x^2 + q2 x + q3) against the
+** monic m: q0 + q2 = m0, q1 + q3 + q0 q2 = m1, q0 q3 + q2 q1 = m2, each
+** relative to its terms; HUGE_VAL where a product leaves the range. */
+static double linear_resid(const double *q, const double *m) {
+  double r[3], w[3], worst = 0;
+  int k;
+  r[0] = q[0] + q[2] - m[0];
+  w[0] = fabs(q[0]) + fabs(q[2]) + fabs(m[0]);
+  r[1] = q[1] + q[3] + q[0] * q[2] - m[1];
+  w[1] = fabs(q[1]) + fabs(q[3]) + fabs(q[0] * q[2]) + fabs(m[1]);
+  r[2] = q[0] * q[3] + q[2] * q[1] - m[2];
+  w[2] = fabs(q[0] * q[3]) + fabs(q[2] * q[1]) + fabs(m[2]);
+  for (k = 0; k < 3; k++) {
+    if (!isfinite(r[k]) || !isfinite(w[k])) return HUGE_VAL;
+    if (w[k] > 0) worst = fmax(worst, fabs(r[k]) / w[k]);
+  }
+  return worst;
+}
+
+/* A linear coefficient can be far below its factor's roots (a conjugate
+** pair 3e-11 +- 2.7e74 i beside the real root -1.2e159: its real part is
+** 1e-85 of its size, which the roots, and so pair_factor, give as 0), and
+** then the sum of the roots (the x^3 equation) cannot hold it.  It is
+** well set by the other equations, which Algorithm 1010 also solves for
+** the smaller coefficients: q2 = (m1 - q1 - q3)/q0 from the x^2 equation
+** or (m2 - q0 q3)/q1 from the x equation (and likewise q0).  Where the
+** equations miss by more than rounding (FACTOR_GOOD), a candidate that
+** makes them hold to rounding (linear_resid) is taken. */
+static void linear_from_equations(const double *p, double *q) {
+  double m[3], w[4], best;
+  int j, k;
+  poly P;
+  poly_init_fe(&P, p, 4);
+  for (k = 0; k < 3; k++) {
+    m[k] = p[3 - k] / p[4];
+    if (!isfinite(m[k])) return;
+  }
+  for (j = 0; j < 4; j += 2) {
+    int o = 2 - j;                /* the other factor's linear coefficient */
+    double cand[2];
+    cand[0] = q[o] != 0 ? (m[1] - q[1] - q[3]) / q[o] : HUGE_VAL;
+    cand[1] = q[o + 1] != 0 ? (m[2] - q[o] * q[j + 1]) / q[o + 1] : HUGE_VAL;
+    best = linear_resid(q, m);
+    if (!(best > FACTOR_GOOD)) continue;    /* the equations hold already */
+    for (k = 0; k < 2; k++) {
+      double r, b0;
+      int i;
+      if (!isfinite(cand[k])) continue;
+      for (i = 0; i < 4; i++) w[i] = q[i];
+      w[j] = cand[k];
+      r = linear_resid(w, m);
+      /* and the factor's roots must still solve p (factor_bwd_dd): the
+      ** equations can be as blind to a wrong coefficient (-1.2e-237 (x^4
+      ** + x^3) + 66 x^2 + 65 x + 3.3e-316 took a factor root 9e-8 off,
+      ** where a subnormal root left the old factor's test unable to say:
+      ** fuzz/fuzz_roots) */
+      b0 = factor_bwd_dd(&P, p, q[j], q[j + 1]);
+      if (r <= FACTOR_GOOD && b0 < HUGE_VAL && /* (HUGE_VAL: cannot tell) */
+          factor_bwd_dd(&P, p, cand[k], q[j + 1]) <= fmax(FACTOR_GOOD, b0)) {
+        best = r; q[j] = cand[k];
+      }
+    }
+  }
+}
+
+static int quartic_factor(double a4, double a3, double a2, double a1,
+                          double a0, double q[4], int refine) {
   double p[5], re[4], im[4];
   poly P;
   int gs[5], ng, i, k, used[4] = {0, 0, 0, 0}, nq = 0;
@@ -756,6 +1115,7 @@ int arclen_quartic_factor(double a4, double a3, double a2, double a1,
     factor_monic(m, v);
     q[0] = ldexp(v[0], E); q[1] = ldexp(v[1], 2 * E);
     q[2] = ldexp(v[2], E); q[3] = ldexp(v[3], 2 * E);
+    if (refine) factor_refine(p, &P, q);
     return ARCLEN_OK;
   }
   /* spread roots: a group of degree 2 is a factor, y^2 + m0 y + m1 in
@@ -793,7 +1153,7 @@ int arclen_quartic_factor(double a4, double a3, double a2, double a1,
   for (; nq < 2; nq++) {
     int s = -1, t = -1;
     for (k = 0; k < 4; k++)        /* the unused root of largest size */
-      if (!used[k] && (s < 0 || hypot(re[k], im[k]) > hypot(re[s], im[s])))
+      if (!used[k] && (s < 0 || mag(re[k], im[k]) > mag(re[s], im[s])))
         s = k;
     used[s] = 1;
     for (k = 0; k < 4; k++)        /* its conjugate, or the next real */
@@ -802,12 +1162,28 @@ int arclen_quartic_factor(double a4, double a3, double a2, double a1,
         t = k;
     if (t < 0)                     /* no exact conjugate: the nearest */
       for (k = 0; k < 4; k++)
-        if (!used[k] && (t < 0 || hypot(re[k] - re[s], im[k] + im[s])
-                         < hypot(re[t] - re[s], im[t] + im[s])))
+        if (!used[k] && (t < 0 || mag(re[k] - re[s], im[k] + im[s])
+                         < mag(re[t] - re[s], im[t] + im[s])))
           t = k;
     used[t] = 1;
     pair_factor(re[s], fabs(im[s]), re[t], im[t], q + 2 * nq);
   }
   factor_polish(&P, q);
+  if (refine) factor_refine(p, &P, q);
+  linear_from_equations(p, q);
   return ARCLEN_OK;
+}
+
+int arclen_quartic_factor(double a4, double a3, double a2, double a1,
+                          double a0, double q[4]) {
+  return quartic_factor(a4, a3, a2, a1, a0, q, 1);
+}
+
+/* Without factor_refine's double-double step: roots3d.c polishes the
+** roots on the hodograph's own form of the quartic, which the rounded
+** coefficients given here do not hold (their last bit is no truth), and
+** the step cost the 3D methods ~1 us a curve. */
+int arclen_quartic_factor_plain(double a4, double a3, double a2, double a1,
+                                double a0, double q[4]) {
+  return quartic_factor(a4, a3, a2, a1, a0, q, 0);
 }

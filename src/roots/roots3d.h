@@ -13,4 +13,12 @@
 int arclen_roots3d(const double a2[3], const double a1[3],
                    const double a0[3], double re[2], double im[2]);
 
+/* arclen_quartic_factor without its double-double refinement of the
+** factors (roots.c): for callers that polish the roots themselves. */
+int arclen_quartic_factor_plain(double a4, double a3, double a2, double a1,
+                                double a0, double q[4]);
+/* arclen_quartic without its double-double step (roots.c). */
+int arclen_quartic_plain(double a4, double a3, double a2, double a1,
+                         double a0, double re[4], double im[4]);
+
 #endif
