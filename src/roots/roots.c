@@ -14,6 +14,7 @@
 
 #include "arclen.h"
 #include "roots/roots3d.h"
+#include "curve/numeric.h"
 
 #define NEWTON_CAP 16     /* quadratic convergence; guards NaN/limit cycles */
 
@@ -540,11 +541,11 @@ static int split_groups(const poly *P, int lo, int *gs) {
 ** 1010's shift).  The coefficients of p(y + s) come from a Taylor shift
 ** in double-double, so the only new error is one rounding of each. */
 
-/* a + b = s + *e exactly (Knuth's TwoSum) */
+/* a + b = s + *e exactly (TwoSum, curve/numeric.h) */
 static double two_sum(double a, double b, double *e) {
-  double s = a + b, z = s - a;
-  *e = (a - (s - z)) + (b - z);
-  return s;
+  arclen_dd r = arclen_two_sum(a, b);
+  *e = r.lo;
+  return r.hi;
 }
 
 /* b[0..d] := coefficients of p(y + s) for p(x) = sum b[j] x^j, by the
