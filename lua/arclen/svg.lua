@@ -903,10 +903,12 @@ local function cubic_range(p0, p1, p2, p3)
   return lo, hi
 end
 
--- svg.stat(doc) -> {layers = {{name, length, travel, paths, segments,
--- bbox = {x0, y0, x1, y1}}...}, total = {same fields}}.  Pen-up travel:
--- from each subpath's end to the next subpath's start in the layer, in
--- document order (vpype's pen-up length).
+-- svg.stat(doc) -> {layers = {{name, length, travel, paths, elements,
+-- segments, bbox = {x0, y0, x1, y1}}...}, total = {same fields}}.  paths
+-- counts subpaths (vpype reads each subpath as a line), elements the drawn
+-- elements, segments the cubics.  Pen-up travel: from each subpath's end
+-- to the next subpath's start in the layer, in document order (vpype's
+-- pen-up length).  bbox: the exact bounding box of the curves.
 function M.stat(doc)
   if type(doc) ~= "table" or type(doc.elements) ~= "table" then
     argerror(1, "arclen.svg.stat", "a document (from arclen.svg.read or parse) expected")
@@ -922,13 +924,14 @@ function M.stat(doc)
   for _, e in ipairs(doc.elements) do
     local L = by[e.layer]
     if not L then
-      L = {name = e.layer, length = 0, travel = 0, paths = 0, segments = 0, box = {}}
+      L = {name = e.layer, length = 0, travel = 0, paths = 0, elements = 0, segments = 0, box = {}}
       by[e.layer] = L
       layers[#layers + 1] = L
     end
     local p = e.path
     L.length = L.length + (e.length or p:length())
-    L.paths = L.paths + 1
+    L.elements = L.elements + 1
+    L.paths = L.paths + p.nsub
     L.segments = L.segments + p.n
     for j = 1, p.nsub do
       local first, last = p.segs[p.first[j]], p.segs[p.first[j + 1] - 1]
@@ -945,16 +948,17 @@ function M.stat(doc)
       box_add(L.box, x0, y0, x1, y1)
     end
   end
-  local total = {name = "total", length = 0, travel = 0, paths = 0, segments = 0, box = {}}
+  local total = {name = "total", length = 0, travel = 0, paths = 0, elements = 0, segments = 0, box = {}}
   local out = {}
   for i, L in ipairs(layers) do
     total.length = total.length + L.length
     total.travel = total.travel + L.travel
     total.paths = total.paths + L.paths
+    total.elements = total.elements + L.elements
     total.segments = total.segments + L.segments
     if L.box[1] then box_add(total.box, L.box[1], L.box[2], L.box[3], L.box[4]) end
     out[i] = {name = L.name, length = L.length, travel = L.travel, paths = L.paths,
-              segments = L.segments, bbox = L.box[1] and L.box or nil}
+              elements = L.elements, segments = L.segments, bbox = L.box[1] and L.box or nil}
   end
   total.bbox = total.box[1] and total.box or nil
   total.box = nil
