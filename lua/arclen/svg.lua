@@ -283,13 +283,22 @@ local function property(attrs, style, name)
   return v
 end
 
+-- Only the declarations this reader uses are looked for (display,
+-- visibility, stroke, stroke-width): a style attribute is mostly fill and
+-- font properties.
+local STYLE_PROPS = {"display", "visibility", "stroke", "stroke-width"}
+
 local function parse_style(s)
-  if s == nil or not find(s, ":") then return nil end
-  local out = {}
-  s = gsub(s, "/%*.-%*/", "")
-  for decl in (s .. ";"):gmatch("([^;]*);") do
-    local k, v = match(decl, "^%s*([%w%-]+)%s*:%s*(.-)%s*$")
-    if k then out[lower(k)] = gsub(v, "%s*!%s*important$", "") end
+  if s == nil then return nil end
+  local out = nil
+  for _, k in ipairs(STYLE_PROPS) do
+    if find(s, k, 1, true) then
+      -- the last declaration wins (CSS); the name must be whole
+      for v in s:gmatch("%f[%w%-]" .. gsub(k, "%-", "%%-") .. "%s*:%s*([^;]*)") do
+        out = out or {}
+        out[k] = gsub(gsub(v, "%s*!%s*important%s*$", ""), "%s+$", "")
+      end
+    end
   end
   return out
 end
@@ -510,8 +519,10 @@ function Reader:open(parent, svgns, tag, attrs, line, col, shadow)
   if SHAPES[tag] then
     local d = shape_data(ctx, tag, attrs, f.vp)
     if d and (f.visible or self.hidden) and (f.stroked or not self.stroked) then
+      local identity = C[1] == 1 and C[2] == 0 and C[3] == 0 and C[4] == 1
+        and C[5] == 0 and C[6] == 0
       local ok, p = pcall(path.svg, d, {tol = self.tol, arc_tol = self.arc_tol,
-        method = self.method, transform = C})
+        method = self.method, transform = not identity and C or nil})
       if not ok then
         local m = tostring(p):gsub("^bad argument #1 to 'arclen.path.svg' %((.*)%)$", "%1")
         fail(line, col, format("<%s%s>: %s", tag, attrs.id and (" id='" .. attrs.id .. "'") or "",

@@ -78,15 +78,28 @@ local NAMES = {
   A = {"rx", "ry", "x-axis-rotation", "large-arc-flag", "sweep-flag", "x", "y"},
 }
 
+-- A separator and a number without exponent in one match: the fast path
+-- (most numbers); anything else goes through number() and its messages.
+local NUM_AFTER = "^[ \t\n\r\f]*,?[ \t\n\r\f]*([+-]?%d*%.?%d*)()"
+local NUM_HERE = "^([+-]?%d*%.?%d*)()"
+local huge = math.huge
+
 -- Read the arguments of one command instance (ARGS[up] numbers) into a.
 local function arguments(d, i, up, a)
-  local names = NAMES[up]
   for k = 1, ARGS[up] do
-    if k > 1 then i = skip_sep(d, i) end
     if up == "A" and (k == 4 or k == 5) then
-      a[k], i = flag(d, i, names[k])
+      i = skip_sep(d, i)
+      a[k], i = flag(d, i, NAMES[up][k])
     else
-      a[k], i = number(d, i, "a number (" .. up .. " " .. names[k] .. ")")
+      local _, _, s, j = find(d, k > 1 and NUM_AFTER or NUM_HERE, i)
+      local c = byte(d, j)
+      local v = c ~= 101 and c ~= 69 and tonumber(s)
+      if v and v == v and v ~= huge and v ~= -huge then
+        a[k], i = v, j
+      else
+        if k > 1 then i = skip_sep(d, i) end
+        a[k], i = number(d, i, "a number (" .. up .. " " .. NAMES[up][k] .. ")")
+      end
     end
   end
   return i
