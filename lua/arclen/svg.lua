@@ -35,7 +35,7 @@ local SEP = "\1"                      -- lxp's namespace separator
 local MAX_DEPTH = 1000                -- element nesting
 local MAX_USE_DEPTH = 64              -- <use> inside used content
 local MAX_ELEMENTS = 1000000          -- drawn elements, uses expanded
-local MAX_REPLAYED = 1000000          -- element events replayed by <use>
+local MAX_REPLAYED = 250000           -- element events replayed by <use> (use bombs)
 local MAX_ENTITIES = 1000             -- entity declarations
 local MAX_ENTITY_LEN = 65536          -- an entity's replacement text
 local CHUNK = 65536                   -- bytes per read of a file
@@ -55,8 +55,9 @@ local function fail(line, col, msg)
   error({line = line, col = col, msg = msg}, 0)
 end
 
-local function argerror(n, fname, msg)
-  error(format("bad argument #%d to '%s' (%s)", n, fname, msg), 3)
+-- level: the user's call (3: argerror's caller is the API function).
+local function argerror(n, fname, msg, level)
+  error(format("bad argument #%d to '%s' (%s)", n, fname, msg), level or 3)
 end
 
 local function isfinite(x)
@@ -577,8 +578,12 @@ function Reader:expand(u)
   end
   for i = 1, #chain do
     if chain[i] == u.href then
-      fail(u.line, u.col, format("<use> of '#%s' refers to itself (cycle %s)", u.href,
-        table.concat(chain, " -> ") .. " -> " .. u.href))
+      if i == #chain then
+        fail(u.line, u.col, format("<use> of '#%s' refers to itself "
+          .. "(or to an element that contains it)", u.href))
+      end
+      fail(u.line, u.col, format("<use> of '#%s' makes a cycle (%s)", u.href,
+        table.concat(chain, " -> ", i) .. " -> " .. u.href))
     end
   end
   if #chain >= MAX_USE_DEPTH then
@@ -756,6 +761,9 @@ local function run(opts, name, next_chunk, uses)
   local ok, msg, line, col = parser:parse()
   if not ok then
     if bytes == 0 then fail(1, 1, "empty document") end
+    if not root_seen and msg == "no element found" then
+      fail(line, col, "empty document (no root element)")
+    end
     xml_error(msg, line, col)
   end
   parser:close()
@@ -774,35 +782,38 @@ local function run(opts, name, next_chunk, uses)
     end
   end
   r.out = drawn
+  r.kept = #r.events
   r.events, r.ids = nil, nil
   return r
 end
 
 -- The options of read and parse: tol, arc_tol, method, units, hidden,
 -- stroked, measure, max_depth.
+local function argerror4(n, fname, msg) argerror(n, fname, msg, 5) end
+
 local function read_opts(opts, fname)
   local o = {tol = 1e-12, method = "gauss", measure = true}
   if opts == nil then return o end
-  if type(opts) ~= "table" then argerror(2, fname, "options table expected, got " .. type(opts)) end
+  if type(opts) ~= "table" then argerror4(2, fname, "options table expected, got " .. type(opts)) end
   for k, v in pairs(opts) do
     if k == "tol" or k == "arc_tol" then
       if type(v) ~= "number" or not (v >= 1e-15 and v <= 0.1) then
-        argerror(2, fname, k .. " must be in [1e-15, 0.1]")
+        argerror4(2, fname, k .. " must be in [1e-15, 0.1]")
       end
     elseif k == "method" then
-      if type(v) ~= "string" then argerror(2, fname, "method must be a string") end
+      if type(v) ~= "string" then argerror4(2, fname, "method must be a string") end
     elseif k == "units" then
       if v ~= "user" and not UNITS[v] then
-        argerror(2, fname, format("unknown units '%s' (user, px, mm, cm, in, pt, pc)", tostring(v)))
+        argerror4(2, fname, format("unknown units '%s' (user, px, mm, cm, in, pt, pc)", tostring(v)))
       end
     elseif k == "hidden" or k == "stroked" or k == "measure" then
-      if type(v) ~= "boolean" then argerror(2, fname, k .. " must be a boolean") end
+      if type(v) ~= "boolean" then argerror4(2, fname, k .. " must be a boolean") end
     elseif k == "max_depth" then
       if type(v) ~= "number" or v ~= floor(v) or v < 1 or v > MAX_DEPTH then
-        argerror(2, fname, format("max_depth must be an integer in [1, %d]", MAX_DEPTH))
+        argerror4(2, fname, format("max_depth must be an integer in [1, %d]", MAX_DEPTH))
       end
     else
-      argerror(2, fname, format("unknown option '%s'", tostring(k)))
+      argerror4(2, fname, format("unknown option '%s'", tostring(k)))
     end
     o[k] = v
   end
@@ -812,7 +823,7 @@ end
 -- The document object from the reader's results.
 local function finish(r, o)
   local doc = {name = r.name, elements = r.out, warnings = r.warnings,
-    skipped = r.skipped, units = r.units, total = nil}
+    skipped = r.skipped, units = r.units, kept = r.kept, total = nil}
   for k, v in pairs(r.info or {}) do doc[k] = v end
   doc.units = r.units
   if o.measure then

@@ -171,7 +171,7 @@ local function transform(subpaths, T)
         x, y = c[k], c[k + 1]
         local u, v = A * x + C * y + E, B * x + D * y + F
         if not (u > -huge and u < huge and v > -huge and v < huge) then
-          fail(1, "the transform takes a coordinate out of range")
+          fail(nil, "the transform takes a coordinate out of range")
         end
         c[k], c[k + 1] = u, v
       end
