@@ -3,7 +3,10 @@
 --   local svg = require "arclen.svg"
 --   local doc = svg.read("drawing.svg" [, opts])    -- a file, streamed
 --   local doc = svg.parse(text [, opts [, name]])   -- a string
---   doc.total, doc.elements[i].{id, tag, path, length, layer, line, col, use}
+--   doc.total, doc.elements[i].{id, tag, path, length, layer, line, col, use,
+--                               d, ctm}  (d: the shape's path data in its own
+--                               coordinates, ctm: {a, b, c, d, e, f} onto the
+--                               document's)
 --   svg.stat(doc) -> per layer: length, pen-up travel, paths, segments, bbox
 --
 -- The document is read by LuaExpat in streaming mode (callbacks; nothing
@@ -530,7 +533,7 @@ function Reader:open(parent, svgns, tag, attrs, line, col, shadow)
           tag == "path" and ("d: " .. m) or m))
       end
       self:emit({id = attrs.id, tag = tag, path = p, layer = f.layer, line = line,
-                 col = col, stroked = f.stroked, use = shadow and shadow.id})
+                 col = col, stroked = f.stroked, use = shadow and shadow.id, d = d, ctm = C})
     end
     f.skip = true        -- shapes have no rendered children
   elseif tag == "use" then
