@@ -25,8 +25,13 @@ LUA_PATH="lua/?.lua;lua/?/init.lua;;" LUA_CPATH="build/$V/?.so;;" \
   nice $LUA bench/svg/arclen_svg.lua "$OUT" $FILES >>"$RES" || exit 1
 
 if /usr/bin/python3 -c 'import svgelements' 2>/dev/null; then
-  echo "== svgelements (python3)"
-  BENCH_REPS=${SVGELEMENTS_REPS:-1} nice /usr/bin/python3 bench/svg/svgelements_peer.py $FILES >>"$RES"
+  echo "== svgelements (python3; with scipy if installed, then without)"
+  BENCH_REPS=${SVGELEMENTS_REPS:-3} nice /usr/bin/python3 bench/svg/svgelements_peer.py $FILES >>"$RES"
+  # without scipy a cubic takes svgelements ~0.5 s: a few small files only
+  SMALL="adwaita-edit-redo-symbolic-rtl adwaita-folder-symbolic adwaita-network-workgroup-symbolic
+         adwaita-system-users-symbolic barracuda-libgeo-test"
+  S=""; for s in $SMALL; do S="$S spec/data/svg/real/$s.svg"; done
+  SVGELEMENTS_NO_SCIPY=1 BENCH_REPS=1 nice /usr/bin/python3 bench/svg/svgelements_peer.py $S >>"$RES"
 else
   echo "svgelements: skipped (apt-get install python3-svgelements)"
 fi

@@ -5,7 +5,9 @@
 -- drawn element's own path data with the scale of its transform.
 --   lua5.4 bench/svg/arclen_svg.lua OUTDIR FILE...
 -- Prints "arclen<TAB>file<TAB>total<TAB>read_s<TAB>measure_s" per file
--- (best of the repetitions), writes OUTDIR/elements.tsv.
+-- (best of the repetitions) and "px-scale<TAB>file<TAB>k" (the px total
+-- over the user-unit total: svgelements measures in px), writes
+-- OUTDIR/elements.tsv.
 local svg = require("arclen.svg")
 local out, files = arg[1], {}
 for i = 2, #arg do files[#files + 1] = arg[i] end
@@ -37,6 +39,7 @@ for _, f in ipairs(files) do
     total = sum
   end
   print(("arclen\t%s\t%.17g\t%.6f\t%.6f"):format(f, total, best_read, best_measure))
+  print(("px-scale\t%s\t%.17g\t0"):format(f, svg.read(f, {units = "px"}).total / total))
   for _, e in ipairs(svg.read(f, {measure = false}).elements) do
     local s = similarity(e.ctm)
     el:write(f, "\t", s and ("%.17g"):format(s) or "-", "\t", (e.d:gsub("%s+", " ")), "\n")

@@ -6,9 +6,17 @@ for line in io.lines("spec/data/svg_refs.tsv") do
   local f, units, option, _, L = line:match("^([^\t#]+)\t([^\t]+)\t([^\t]+)\t([^\t]+)\t([^\t]+)")
   if f and units == "user" and option == "-" then ref["spec/data/svg/" .. f] = tonumber(L) end
 end
-local peers, order = {}, {}
+-- svgelements measures in px (the root's viewBox mapped onto its width and
+-- height): its reference is the user-unit one times arclen's px/user ratio.
+local pxscale = {}
+for line in io.lines(res) do
+  local f, k = line:match("^px%-scale\t([^\t]+)\t([^\t]+)")
+  if f then pxscale[f] = tonumber(k) end
+end
+local peers, order, why = {}, {}, {}
 for line in io.lines(res) do
   local name, f, total, t, tm = line:match("^([^\t]+)\t([^\t]+)\t([^\t]+)\t([^\t]+)\t?([^\t]*)$")
+  if name == "px-scale" then name = nil end
   if name then
     local p = peers[name]
     if not p then
@@ -27,9 +35,13 @@ for line in io.lines(res) do
       end
       p.time = p.time + secs
       p.times[f] = secs
-      if ref[f] then p.err = math.max(p.err, math.abs(L - ref[f]) / ref[f]) end
+      local R = ref[f] and ref[f] * (name:match("^svgelements") and pxscale[f] or 1)
+      if R then p.err = math.max(p.err, math.abs(L - R) / R) end
+      p.errs = p.errs or {}
+      p.errs[f] = R and math.abs(L - R) / R
     else
       p.skipped = p.skipped + 1
+      why[#why + 1] = ("  %s, %s: %s"):format(name, f:match("[^/]+$"), total)
     end
   end
 end
@@ -44,5 +56,6 @@ for _, name in ipairs(order) do
   print(("%-34s %6d %12.4f %12s %12.2e%s"):format(name, p.files, p.time, ratio, p.err,
     p.skipped > 0 and ("  (" .. p.skipped .. " files skipped)") or ""))
 end
+for _, w in ipairs(why) do print(w) end
 print(("arclen's split: reader (XML, transforms, path data) %.4f s, measuring %.4f s (reader/measuring %.2f)"):format(
   a.read, a.measure, a.read / a.measure))

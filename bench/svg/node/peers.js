@@ -26,12 +26,17 @@ function run(name, lengthOf) {
       continue;
     }
     let best = Infinity, total = 0;
-    for (let k = 0; k < REPS; k++) {
-      const t0 = process.cpuUsage();
-      total = 0;
-      for (const [s, d] of els) total += s * lengthOf(d);
-      const t = process.cpuUsage(t0);
-      best = Math.min(best, (t.user + t.system) / 1e6);
+    try {
+      for (let k = 0; k < REPS; k++) {
+        const t0 = process.cpuUsage();
+        total = 0;
+        for (const [s, d] of els) total += s * lengthOf(d);
+        const t = process.cpuUsage(t0);
+        best = Math.min(best, (t.user + t.system) / 1e6);
+      }
+    } catch (e) {
+      console.log(`${name}\t${f}\tfailed: ${String(e.message).slice(0, 80)}\t0`);
+      continue;
     }
     console.log(`${name}\t${f}\t${total.toPrecision(17)}\t${best.toFixed(6)}`);
   }
