@@ -5,13 +5,15 @@
 #   base    build the module and run the specs under Lua 5.4 (default)
 #   matrix  also Lua 5.1, 5.2, 5.3, LuaJIT, LuaTeX (texlua, the plain
 #           luatex format from texlive-base, LuaLaTeX with luamplib from
-#           texlive-luatex), LuaRocks, LuaExpat and lua-cjson for the SVG
-#           document reader, poppler-utils to render the TeX examples
-#   refs    regenerate spec/data (python3-mpmath, real MetaPost)
+#           texlive-luatex), LuaRocks, poppler-utils to render the TeX
+#           examples (base has LuaExpat for the SVG document reader and
+#           lua-dkjson for the command line's --json)
+#   refs    regenerate spec/data (python3-mpmath, real MetaPost;
+#           python3-svgelements: tools/ref_svg.py's second opinion)
 set -e
-BASE="gcc make libc6-dev lua5.4 liblua5.4-dev lua-busted lua-expat lua-cjson"
+BASE="gcc make libc6-dev lua5.4 liblua5.4-dev lua-busted lua-expat lua-cjson lua-dkjson"
 MATRIX="lua5.1 liblua5.1-0-dev lua5.2 liblua5.2-dev lua5.3 liblua5.3-dev luajit libluajit-5.1-dev texlive-binaries texlive-base texlive-luatex luarocks poppler-utils"
-REFS="python3 python3-mpmath texlive-binaries texlive-base python3-fonttools fonts-urw-base35"
+REFS="python3 python3-mpmath python3-svgelements texlive-binaries texlive-base python3-fonttools fonts-urw-base35"
 case "${1:-base}" in
   base) WANT="$BASE" ;;
   matrix) WANT="$BASE $MATRIX" ;;
