@@ -47,14 +47,16 @@ for line in io.lines(res) do
 end
 local a = peers.arclen
 if not a then print("no arclen results") os.exit(1) end
-print(("%-34s %6s %12s %12s %12s"):format("peer", "files", "seconds", "arclen is", "max rel err"))
+print(("%-34s %6s %12s %12s %12s  %s"):format("peer", "files", "seconds", "its/arclen's", "max rel err", "(worst file)"))
 for _, name in ipairs(order) do
   local p = peers[name]
   local mine = 0                         -- arclen's time on the same files
   for f in pairs(p.times) do mine = mine + a.times[f] end
-  local ratio = name == "arclen" and "1" or ("%.0fx faster"):format(p.time / mine)
-  print(("%-34s %6d %12.4f %12s %12.2e%s"):format(name, p.files, p.time, ratio, p.err,
-    p.skipped > 0 and ("  (" .. p.skipped .. " files skipped)") or ""))
+  local ratio = name == "arclen" and "1" or ("%.3g"):format(p.time / mine)
+  local wf, we = "", -1
+  for f, e in pairs(p.errs or {}) do if e and e > we then wf, we = f, e end end
+  print(("%-34s %6d %12.4f %12s %12.2e  %s%s"):format(name, p.files, p.time, ratio, p.err,
+    wf:match("[^/]+$") or "", p.skipped > 0 and ("; " .. p.skipped .. " files not measured") or ""))
 end
 for _, w in ipairs(why) do print(w) end
 print(("arclen's split: reader (XML, transforms, path data) %.4f s, measuring %.4f s (reader/measuring %.2f)"):format(
