@@ -131,8 +131,10 @@ accuracy: $(MODULE)
 #   make bench-peers              arclen vs GSL, kurbo, bezier-js, paper.js,
 #                                 MetaPost on the same curves, one run
 #   make bench-scale              10^6 curves through the Lua API
+#   make bench-svg                whole SVG documents: arclen.svg vs
+#                                 svgelements, svg-path-properties, paper.js
 FUZZ_SECONDS ?= 15
-.PHONY: fuzz sanitize valgrind bench-peers bench-scale
+.PHONY: fuzz sanitize valgrind bench-peers bench-scale bench-svg
 
 fuzz:
 	FUZZ_SECONDS=$(FUZZ_SECONDS) sh tools/fuzz.sh
@@ -145,6 +147,9 @@ valgrind:
 
 bench-peers: $(BUILD)/libarclen.a
 	sh bench/peers/run.sh
+
+bench-svg:
+	sh bench/bench_svg.sh
 
 bench-scale: $(MODULE)
 	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_scale.lua

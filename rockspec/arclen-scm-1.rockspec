@@ -8,7 +8,7 @@ description = {
   subdivision, Walter & Fournier length fits, Floater conic approximations.]],
   license = "MIT",
 }
-dependencies = { "lua >= 5.1" }
+dependencies = { "lua >= 5.1", "luaexpat >= 1.3", "dkjson >= 2.5" }
 build = {
   type = "builtin",
   modules = {
@@ -63,6 +63,7 @@ build = {
     ["arclen.repro.henkel"] = "lua/arclen/repro/henkel.lua",
     ["arclen.repro.plot"] = "lua/arclen/repro/plot.lua",
     ["arclen.repro.svgplot"] = "lua/arclen/repro/svgplot.lua",
+    ["arclen.svg"] = "lua/arclen/svg.lua",
     ["arclen.svgpath"] = "lua/arclen/svgpath.lua",
   },
   install = { bin = { arclen = "bin/arclen" } },

@@ -37,7 +37,7 @@ end
 local function num(s) return tonumber((s:gsub("%s+$", ""))) end
 
 local SVG = [[<?xml version="1.0"?>
-<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">
+<svg xmlns="http://www.w3.org/2000/svg" xmlns:svg="http://www.w3.org/2000/svg" viewBox="0 0 100 100">
   <!-- <path d="M0 0 L100 0"/> is a comment, not a path -->
   <path id="side" d="M0 0 L3 4"/>
   <g><path fill="none"
@@ -69,28 +69,102 @@ describe("arclen CLI: results", function()
     assert.are.equal(arclen.metapost.arclength({0, 0, 10, 0, 10, 10, 0, 0}), num(out))
   end)
 
-  it("length of every <path d=...> of an SVG file, and the total", function()
+  it("length of every drawn shape of an SVG file, and the total", function()
     local out, err, status = run({"length", svgfile})
     assert.are.equal(0, status, err)
     local lines = {}
     for l in out:gmatch("[^\n]+") do lines[#lines + 1] = l end
-    assert.are.equal(5, #lines)
+    assert.are.equal(6, #lines)
     assert.are.equal("side\t5", lines[1])
     assert.are.equal("path2\t2", lines[2])     -- &#10; is a newline (a separator)
+    assert.are.equal("rect3\t20", lines[3])    -- no id: tag and index
     local L = arclen.length({0, 0, 10, 0, 10, 10, 0, 0})
-    assert.are.equal("curve\t" .. ("%.17g"):format(L), lines[3])
-    assert.are.equal("ns\t1", lines[4])        -- <svg:path>, not <pathology>
-    assert.are.equal(8 + L, tonumber(lines[5]:match("^total\t(.*)$")))
+    assert.are.equal("curve\t" .. ("%.17g"):format(L), lines[4])
+    assert.are.equal("ns\t1", lines[5])        -- <svg:path>, not <pathology>
+    assert.are.equal(28 + L, tonumber(lines[6]:match("^total\t(.*)$")))
   end)
 
-  it("--json for a file, a path and a cubic", function()
+  it("--json for a file, a path and a cubic (dkjson; numbers round-trip)", function()
+    local dk = require("dkjson")
     local out = run({"length", "--json", svgfile})
-    assert.matches('^{"paths": %[{"id": "side", "length": 5, "segments": 1}, ', out)
-    assert.matches('"total": ', out)
+    local v = dk.decode(out)
+    assert.are.same({id = "side", tag = "path", layer = "(root)", length = 5, segments = 1},
+                    v.paths[1])
+    assert.are.equal(28 + arclen.length({0, 0, 10, 0, 10, 10, 0, 0}), v.total)
+    assert.are.equal("user", v.units)
     out = run({"length", "--json", "M0 0 L3 4"})
-    assert.are.equal('{"id": "path", "length": 5, "segments": 1}\n', out)
+    assert.are.same({id = "path", length = 5, segments = 1}, dk.decode(out))
     out = run({"length", "--json", "0", "0", "1", "0", "2", "0", "3", "0"})
-    assert.matches('^{"err": [^,]+, "evals": %d+, "length": 3}\n$', out)
+    v = dk.decode(out)
+    assert.are.equal(3, v.length)
+    assert.is_true(v.evals > 0 and v.err >= 0)
+  end)
+
+  it("what the old pattern scanner got wrong: attributes with '>', CDATA, references", function()
+    local name = os.tmpname()
+    local f = assert(io.open(name, "w"))
+    f:write([==[<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 10 10">
+<path title="a>b" id="after" d="M0 0 L3 4"/>
+<style><![CDATA[ <path d="M0 0 L100 0"/> ]]></style>
+<path id="&#x2212;&#38;lt;" d="M0 0 L0 1"/>
+</svg>]==])
+    f:close()
+    local out, err, status = run({"length", "--json", name})
+    os.remove(name)
+    assert.are.equal(0, status, err)
+    local v = require("dkjson").decode(out)
+    assert.are.equal(2, #v.paths)
+    assert.are.equal("after", v.paths[1].id)
+    assert.are.equal("\226\136\146&lt;", v.paths[2].id)   -- U+2212 in UTF-8, &lt; once
+    assert.are.equal(6, v.total)
+  end)
+
+  it("--units: the viewBox onto width/height, then mm, in, pt ...", function()
+    local name = os.tmpname()
+    local f = assert(io.open(name, "w"))
+    f:write([[<svg xmlns="http://www.w3.org/2000/svg" width="20mm" height="10mm" viewBox="0 0 200 100">
+<path d="M0 0 L200 0"/></svg>]])
+    f:close()
+    local want = {user = 200, mm = 20, cm = 2, ["in"] = 20 / 25.4, px = 20 / 25.4 * 96,
+                  pt = 20 / 25.4 * 72, pc = 20 / 25.4 * 6}
+    for u, L in pairs(want) do
+      local out, err, status = run({"length", "--units", u, name})
+      assert.are.equal(0, status, err)
+      local got = tonumber(out:match("total\t(%S+)"))
+      assert.is_true(math.abs(got - L) <= 1e-13 * L, u .. ": " .. tostring(got))
+    end
+    local _, err, status = run({"length", "--units", "furlong", name})
+    os.remove(name)
+    assert.are.equal(2, status)
+    assert.matches("unknown unit 'furlong'", err)
+  end)
+
+  it("stat: per layer and totals, for several files; --json", function()
+    local name = os.tmpname()
+    local f = assert(io.open(name, "w"))
+    f:write([[<svg xmlns="http://www.w3.org/2000/svg"
+  xmlns:inkscape="http://www.inkscape.org/namespaces/inkscape" viewBox="0 0 100 100">
+<g inkscape:groupmode="layer" inkscape:label="cut"><path d="M0 0 L10 0 M20 0 L30 0"/>
+  <rect x="40" y="0" width="10" height="10"/></g>
+<g inkscape:groupmode="layer" inkscape:label="engrave"><line x1="0" y1="50" x2="0" y2="60"/></g>
+</svg>]])
+    f:close()
+    local out, err, status = run({"stat", name, name})
+    assert.are.equal(0, status, err)
+    assert.matches("Layer cut\n  Length: 60\n  Pen%-up length: 20\n  Path count: 3\n", out)
+    assert.matches("Layer engrave\n  Length: 10\n  Pen%-up length: 0\n  Path count: 1\n", out)
+    assert.matches("Bounding box: %(0, 0, 50, 10%)", out)
+    assert.matches("== 2 files", out)
+    out = run({"stat", "--json", name})
+    os.remove(name)
+    local v = require("dkjson").decode(out)
+    assert.are.equal(70, v.total.length)
+    assert.are.equal(20, v.total.travel)
+    assert.are.equal(4, v.total.paths)
+    assert.are.equal(3, v.total.elements)
+    assert.are.equal(7, v.total.segments)
+    assert.are.same({0, 0, 50, 60}, v.total.bbox)
+    assert.are.equal("cut", v.files[1].layers[1].name)
   end)
 
   it("reads path data or an SVG document from stdin (-)", function()
@@ -109,7 +183,7 @@ describe("arclen CLI: results", function()
     local c = {0, 0, 10, 0, 10, 10, 0, 0}
     assert.is_true(math.abs(num(out) - arclen.time(c, 5)) <= 1e-12)
     out = run({"time", "--json", "15", "M0 0 L10 0 L10 10"})
-    assert.matches('^{"time": 1%.5', out)
+    assert.matches('^{"time":1%.5', out)
   end)
 
   it("point: the point and the unit tangent", function()
@@ -138,7 +212,7 @@ describe("arclen CLI: results", function()
     local n = select(2, out:gsub("\n", ""))
     assert.are.equal(5, n)
     out = run({"resample", "--json", "3", "M0 0 L10 0"})
-    assert.matches('^%[{"s": 0, "time": 0, "tx": 1, "ty": 0, "x": 0, "y": 0}, ', out)
+    assert.matches('^%[{"s":0,"time":0,"tx":1,"ty":0,"x":0,"y":0},', out)
   end)
 
   it("fit: the length-versus-t fit's summary", function()
@@ -163,6 +237,25 @@ describe("arclen CLI: results", function()
       assert.matches("^usage: arclen COMMAND", u)
       assert.matches("examples:", u)
     end
+  end)
+end)
+
+describe("arclen CLI: bin/arclen runs from the clone (no LUA_PATH, no LUA_CPATH)", function()
+  local function clean(cmd)
+    local p = assert(io.popen("env -u LUA_PATH -u LUA_CPATH -u LUA_PATH_5_4 -u LUA_CPATH_5_4 "
+      .. cmd .. " 2>&1; echo \"exit=$?\""))
+    local out = p:read("*a")
+    p:close()
+    return out
+  end
+  it("./bin/arclen (sh picks a Lua with a build)", function()
+    assert.are.equal("5\nexit=0\n", clean("./bin/arclen length 'M0 0 L3 4'"))
+    assert.matches("^loop\t.*\ntotal\t352%.44204368409089\nexit=0\n$",
+      clean("./bin/arclen length examples/drawing.svg"))
+  end)
+  it("<this Lua> bin/arclen", function()
+    assert.are.equal("5\nexit=0\n", clean(interpreter() .. " bin/arclen length 'M0 0 L3 4'"))
+    assert.are.equal("5\nexit=0\n", clean(interpreter() .. " lua/arclen/cli.lua length 'M0 0 L3 4'"))
   end)
 end)
 
@@ -206,18 +299,31 @@ describe("arclen CLI: errors (stderr, exit 2 for usage, 1 for failures)", functi
     os.remove(name)
     assert.are.equal(2, status)
     assert.are.equal("", out)
-    assert.matches("time needs one path; the file has 4", err)
+    assert.matches("time needs one path; the file has 5", err)
   end)
 
-  it("a file without paths is a failure", function()
+  it("a document that draws nothing: total 0 and a warning", function()
     local name = os.tmpname()
     local f = assert(io.open(name, "w"))
     f:write("<svg><rect/></svg>")
     f:close()
-    local _, err, status = run({"length", name})
+    local out, err, status = run({"length", name})
+    os.remove(name)
+    assert.are.equal(0, status)
+    assert.are.equal("total\t0\n", out)
+    assert.matches("warning: .*nothing drawn", err)
+  end)
+
+  it("a malformed document: the file, line and column", function()
+    local name = os.tmpname()
+    local f = assert(io.open(name, "w"))
+    f:write("<svg xmlns='http://www.w3.org/2000/svg'>\n  <path d='M0 0 L1 1'>\n</svg>")
+    f:close()
+    local out, err, status = run({"length", name})
     os.remove(name)
     assert.are.equal(1, status)
-    assert.matches("no <path d=...> elements", err)
+    assert.are.equal("", out)
+    assert.matches("^arclen: " .. name:gsub("%p", "%%%0") .. ":3:3: malformed XML: mismatched tag", err)
   end)
 end)
 
@@ -260,7 +366,7 @@ describe("arclen CLI: the README's commands", function()
         assert.are.same(want, got)
       elseif comment and comment:match("%d+%.%d+}$") then  -- a JSON total
         assert.are.equal(tonumber(comment:match("([%d%.]+)}$")),
-                         tonumber(out:match('"total": ([%d%.e%-+]+)')))
+                         tonumber(out:match('"total": ?([%d%.e%-+]+)')))
       end
     end)
   end

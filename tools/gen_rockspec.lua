@@ -22,7 +22,10 @@ local lines = {
   '  subdivision, Walter & Fournier length fits, Floater conic approximations.]],',
   '  license = "MIT",',
   '}',
-  'dependencies = { "lua >= 5.1" }',
+  -- LuaExpat is needed by the SVG document reader (arclen.svg) only and
+  -- dkjson by the command line's --json only; both are loaded when first
+  -- used, and the core and path data parsing need neither.
+  'dependencies = { "lua >= 5.1", "luaexpat >= 1.3", "dkjson >= 2.5" }',
   'build = {',
   '  type = "builtin",',
   '  modules = {',

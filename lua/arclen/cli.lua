@@ -13,8 +13,12 @@ commands:
   length WHAT                length of WHAT:
                                X0 Y0 X1 Y1 X2 Y2 X3 Y3  a cubic (12 numbers for 3D)
                                'M0 0 C10 0 10 10 0 0'   SVG path data
-                               FILE.svg                 every <path d=...> in the file
+                               FILE.svg                 every drawn shape of the document
+                                                        (see doc/svg.md), and the total
                                -                        SVG file or path data on stdin
+  stat FILE.svg ...          per layer (Inkscape layers, else top-level groups) and in
+                             total: length, pen-up travel, paths (subpaths), elements,
+                             segments, bounding box -- what vpype stat prints
   time S WHAT                path time at distance S (MetaPost's convention: segment
                              index + parameter; for one cubic, t in [0, 1])
   point S WHAT               the point and unit tangent at distance S
@@ -29,18 +33,25 @@ options:
   --tol T         relative tolerance in [1e-15, 0.1] (default 1e-12)
   --step H        resample: points H apart instead of N points
   --n N           fit: Gauss-Legendre points per span
+  --units U       SVG documents: user (the root's user units, default), px (the
+                  viewBox mapped onto width/height, 96 px per inch), mm, cm, in, pt, pc
+  --stroked       SVG documents: only shapes with a stroke (for plotters)
+  --hidden        SVG documents: also display:none and visibility:hidden shapes
   --json          print results as JSON
   -h, --help      this text
 
-WHAT of several paths (a file) is measured path by path; time, point and
-resample need a single path.  Coordinates are the path's own (transform
-attributes are not applied).
+WHAT of several paths (a file) is measured element by element; time, point
+and resample need a single path.  SVG documents are read as a renderer draws
+them: basic shapes, transforms, viewports, <use>; lengths in the root's user
+units unless --units says otherwise.
 
 examples:
   arclen henkel
   arclen length 0 0 10 0 10 10 0 0
   arclen length 'M0 0 C10 0 10 10 0 0'
   arclen length --json drawing.svg
+  arclen length --units mm drawing.svg
+  arclen stat --stroked a.svg b.svg
   arclen length --method elliptic --tol 1e-15 0 0 10 10 0 10 10 0
   arclen time 5 'M0 0 L10 0 L10 10'
   arclen point 15 'M0 0 L10 0 L10 10'
@@ -55,7 +66,9 @@ local function fail(msg, status)
   os.exit(status or 1)
 end
 
-local VALUED = {["--method"] = true, ["--tol"] = true, ["--step"] = true, ["--n"] = true}
+local VALUED = {["--method"] = true, ["--tol"] = true, ["--step"] = true, ["--n"] = true,
+                ["--units"] = true}
+local FLAGS = {["--json"] = "json", ["--stroked"] = "stroked", ["--hidden"] = "hidden"}
 
 -- Split argv into options and positional arguments.
 local function parse(argv)
@@ -67,8 +80,8 @@ local function parse(argv)
       if v == nil then fail(a .. " needs a value", 2) end
       opts[a:sub(3)] = v
       i = i + 2
-    elseif a == "--json" then
-      opts.json = true
+    elseif FLAGS[a] then
+      opts[FLAGS[a]] = true
       i = i + 1
     elseif a == "--help" or a == "-h" then
       opts.help = true
@@ -109,60 +122,89 @@ end
 
 local function g17(x) return ("%.17g"):format(x) end
 
--- ---- JSON (numbers round-trip with %.17g) -------------------------------
+-- ---- JSON: dkjson (lua-dkjson) --------------------------------------------
+-- dkjson writes numbers with 14 digits, as lua-cjson 2.1 does at most; a
+-- number is passed as a table whose __tojson gives the shortest of %.15g,
+-- %.16g, %.17g that reads back as the same double, so JSON output
+-- round-trips.  Object keys are sorted.
 
-local function json_string(s)
-  return '"' .. s:gsub('[%c"\\]', function(c)
-    local esc = {['"'] = '\\"', ["\\"] = "\\\\", ["\n"] = "\\n", ["\t"] = "\\t", ["\r"] = "\\r"}
-    return esc[c] or ("\\u%04x"):format(c:byte())
-  end) .. '"'
+local function json_lib()
+  local ok, dk = pcall(require, "dkjson")
+  if not ok then
+    fail("--json needs dkjson: install the Debian package lua-dkjson or the rock dkjson")
+  end
+  return dk
+end
+
+local function shortest(x)
+  if x ~= x or x == math.huge or x == -math.huge then return "null" end
+  for p = 15, 17 do
+    local t = ("%." .. p .. "g"):format(x)
+    if tonumber(t) == x then return t end
+  end
+  return g17(x)
+end
+
+local NUMBER = {__tojson = function(self) return self[1] end}
+local ARRAY = {__jsontype = "array"}
+
+-- A copy of v with numbers wrapped, arrays marked, and the keys in order.
+local function prepare(v, keys)
+  if type(v) == "number" then return setmetatable({shortest(v)}, NUMBER) end
+  if type(v) ~= "table" then return v end
+  local out = {}
+  if v[1] ~= nil or next(v) == nil then
+    for i = 1, #v do out[i] = prepare(v[i], keys) end
+    return setmetatable(out, ARRAY)
+  end
+  for k, x in pairs(v) do
+    out[k] = prepare(x, keys)
+    keys[#keys + 1] = k
+  end
+  return out
 end
 
 local function json(v)
-  local t = type(v)
-  if t == "number" then return g17(v) end
-  if t == "string" then return json_string(v) end
-  if t == "boolean" then return tostring(v) end
-  if v == nil then return "null" end
-  if v[1] ~= nil or next(v) == nil then
-    local out = {}
-    for i = 1, #v do out[i] = json(v[i]) end
-    return "[" .. table.concat(out, ", ") .. "]"
-  end
+  local dk = json_lib()
   local keys = {}
-  for k in pairs(v) do keys[#keys + 1] = k end
+  local w = prepare(v, keys)
   table.sort(keys)
-  local out = {}
-  for _, k in ipairs(keys) do out[#out + 1] = json_string(k) .. ": " .. json(v[k]) end
-  return "{" .. table.concat(out, ", ") .. "}"
+  local seen, order = {}, {}
+  for _, k in ipairs(keys) do
+    if not seen[k] then seen[k] = true; order[#order + 1] = k end
+  end
+  return dk.encode(w, {keyorder = order})
 end
 
 -- ---- what to measure: a cubic, path data, an SVG file -------------------
 
-local ENTITIES = {amp = "&", lt = "<", gt = ">", quot = '"', apos = "'"}
+local UNIT_NAMES = "user, px, mm, cm, in, pt, pc"
 
-local function unescape(s)
-  s = s:gsub("&#[xX](%x+);", function(h) return string.char(tonumber(h, 16) % 256) end)
-  s = s:gsub("&#(%d+);", function(d) return string.char(tonumber(d) % 256) end)
-  return (s:gsub("&(%a+);", function(n) return ENTITIES[n] end))
+-- The reader's options from the command line's.
+local function svg_opts(opts)
+  local o = method_opts(opts)
+  if opts.units then
+    if opts.units ~= "user" and not require("arclen.svg").UNITS[opts.units] then
+      fail(("--units: unknown unit '%s' (%s)"):format(opts.units, UNIT_NAMES), 2)
+    end
+    o.units = opts.units
+  end
+  if opts.stroked then o.stroked = true end
+  if opts.hidden then o.hidden = true end
+  return o
 end
 
--- Every <path ... d="..."> (or <svg:path ...>) of an SVG document:
--- {d =, id =} in order.
--- A simple scan: comments are dropped, attributes are name="value" or
--- name='value'; elements other than path are ignored.
-function cli.svg_paths(text)
-  text = text:gsub("<!%-%-.-%-%->", "")
-  local out = {}
-  for tag, attrs in text:gmatch("<([%w_:%-]+)([%s/][^>]*)>") do
-    if tag ~= "path" and not tag:match(":path$") then attrs = "" end   -- svg:path too
-    local a = {}
-    for name, _, value in attrs:gmatch("([%w:_%-]+)%s*=%s*([\"'])(.-)%2") do
-      a[name] = unescape(value)
-    end
-    if a.d then out[#out + 1] = {d = a.d, id = a.id} end
-  end
-  return out
+-- Read an SVG document (a file name, or text from stdin): the doc; its
+-- warnings go to stderr.
+local function read_svg(name, text, opts)
+  local svg = require("arclen.svg")
+  local o = svg_opts(opts)
+  local ok, doc
+  if text then ok, doc = pcall(svg.parse, text, o, name)
+  else ok, doc = pcall(svg.read, name, o) end
+  if not ok then fail(message(doc)) end
+  for _, w in ipairs(doc.warnings) do io.stderr:write("arclen: warning: ", w, "\n") end
+  return doc
 end
 
 local function read_file(name)
@@ -204,7 +246,7 @@ local function targets(args, from, opts, what)
     local f = io.open(a, "rb")
     if not f then fail(a .. ": no such file (and not SVG path data, which starts with M)") end
     f:close()
-    text, source = read_file(a), a
+    text, source = "<", a       -- read by the document reader itself
   end
   if text == nil then
     return {{label = "path", path = call(1, arclen.path.svg, a, o)}}
@@ -212,16 +254,12 @@ local function targets(args, from, opts, what)
   if not text:find("<") then   -- path data on stdin
     return {{label = "path", path = call(1, arclen.path.svg, text, o)}}
   end
-  local found = cli.svg_paths(text)
-  if #found == 0 then fail(source .. ": no <path d=...> elements") end
+  local doc = read_svg(source, a == "-" and text or nil, opts)
   local out = {}
-  for i, p in ipairs(found) do
-    local ok, res = pcall(arclen.path.svg, p.d, o)
-    if not ok then
-      fail(("%s: path %d%s: %s"):format(source, i, p.id and (" (id " .. p.id .. ")") or "", message(res)))
-    end
-    out[i] = {label = p.id or ("path" .. i), index = i, path = res}
+  for i, e in ipairs(doc.elements) do
+    out[i] = {label = e.id or (e.tag .. i), index = i, path = e.path, element = e}
   end
+  out.doc = doc
   return out
 end
 
@@ -260,6 +298,23 @@ function commands.length(opts, args)
     end
     return
   end
+  local doc = list.doc
+  if doc then                     -- an SVG document: per element, the total
+    local rows = {}
+    for i, t in ipairs(list) do
+      local e = t.element
+      rows[i] = {id = t.label, tag = e.tag, layer = e.layer, length = e.length,
+                 segments = e.path:segments(), use = e.use}
+    end
+    if #rows == 0 then io.stderr:write("arclen: warning: ", doc.name, ": nothing drawn\n") end
+    if opts.json then
+      print(json({paths = rows, total = doc.total, units = doc.units}))
+    else
+      for _, r in ipairs(rows) do print(("%s\t%s"):format(r.id, g17(r.length))) end
+      print("total\t" .. g17(doc.total))
+    end
+    return
+  end
   local total, rows = 0, {}
   for i, t in ipairs(list) do
     local L, err = t.path:length()
@@ -268,16 +323,67 @@ function commands.length(opts, args)
     rows[i] = {id = t.label, length = L, segments = t.path:segments()}
   end
   if opts.json then
-    if #list == 1 and not list[1].index then
-      print(json(rows[1]))
-    else
-      print(json({paths = rows, total = total}))
-    end
-  elseif #list == 1 and not list[1].index then
-    print(g17(total))
+    print(json(rows[1]))
   else
-    for _, r in ipairs(rows) do print(("%s\t%s"):format(r.id, g17(r.length))) end
-    print("total\t" .. g17(total))
+    print(g17(total))
+  end
+end
+
+-- What vpype stat prints, per layer and in total, for each file.
+local function stat_lines(name, st, units)
+  local out = {"== " .. name .. " (units: " .. units .. ")"}
+  local function block(title, r, layers)
+    out[#out + 1] = title
+    if layers then out[#out + 1] = "  Layer count: " .. layers end
+    out[#out + 1] = "  Length: " .. g17(r.length)
+    out[#out + 1] = "  Pen-up length: " .. g17(r.travel)
+    out[#out + 1] = "  Path count: " .. r.paths
+    out[#out + 1] = "  Element count: " .. r.elements
+    out[#out + 1] = "  Segment count: " .. r.segments
+    out[#out + 1] = "  Mean segment length: " .. (r.segments > 0 and g17(r.length / r.segments) or "n/a")
+    local b = r.bbox
+    out[#out + 1] = "  Bounding box: " .. (b and ("(%s, %s, %s, %s)"):format(
+      g17(b[1]), g17(b[2]), g17(b[3]), g17(b[4])) or "n/a")
+  end
+  for _, L in ipairs(st.layers) do block("Layer " .. L.name, L) end
+  block("Totals", st.total, #st.layers)
+  return out
+end
+
+function commands.stat(opts, args)
+  local svg = require("arclen.svg")
+  if #args < 2 then fail("stat: no file (one or more SVG files)", 2) end
+  local files, all = {}, {length = 0, travel = 0, paths = 0, elements = 0, segments = 0}
+  local units
+  for i = 2, #args do
+    local doc = read_svg(args[i], nil, opts)
+    units = doc.units
+    local st = svg.stat(doc)
+    for _, k in ipairs({"length", "travel", "paths", "elements", "segments"}) do
+      all[k] = all[k] + st.total[k]
+    end
+    local b = st.total.bbox
+    if b then
+      if not all.bbox then all.bbox = {b[1], b[2], b[3], b[4]}
+      else
+        local a = all.bbox
+        a[1], a[2] = math.min(a[1], b[1]), math.min(a[2], b[2])
+        a[3], a[4] = math.max(a[3], b[3]), math.max(a[4], b[4])
+      end
+    end
+    files[#files + 1] = {file = args[i], layers = st.layers, total = st.total}
+  end
+  if opts.json then
+    print(json({files = files, total = all, units = units}))
+    return
+  end
+  for _, f in ipairs(files) do
+    for _, line in ipairs(stat_lines(f.file, f, units)) do print(line) end
+  end
+  if #files > 1 then
+    for _, line in ipairs(stat_lines(#files .. " files", {layers = {}, total = all}, units)) do
+      if not line:match("Layer count") then print(line) end
+    end
   end
 end
 
@@ -383,8 +489,13 @@ function cli.main(argv)
   cmd(opts, args)
 end
 
--- Run when executed as a script, not when required.
+-- Run when executed as a script, not when required: from a clone
+-- (lua5.4 lua/arclen/cli.lua), the clone's modules and build come first.
 if arg and arg[0] and arg[0]:match("cli%.lua$") then
+  local root = (arg[0]:match("^(.*)[/\\][^/\\]*$") or ".") .. "/../.."
+  local version = type(jit) == "table" and "jit" or _VERSION:match("%d+%.%d+")
+  package.path = root .. "/lua/?.lua;" .. root .. "/lua/?/init.lua;" .. package.path
+  package.cpath = root .. "/build/" .. version .. "/?.so;" .. package.cpath
   cli.main(arg)
 end
 

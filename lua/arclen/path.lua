@@ -85,6 +85,13 @@ local function read_opts(opts, allowed)
       if not method_known(v) then return nil, format("unknown method '%s'", v) end
     elseif k == "cyclic" then
       if type(v) ~= "boolean" then return nil, "cyclic must be a boolean" end
+    elseif k == "transform" then
+      if type(v) ~= "table" or #v ~= 6 then
+        return nil, "transform must be {a, b, c, d, e, f} (SVG's matrix(a b c d e f))"
+      end
+      for i = 1, 6 do
+        if not isfinite(v[i]) then return nil, "transform entries must be finite numbers" end
+      end
     end
     o[k] = v
   end
@@ -194,15 +201,17 @@ end
 
 -- arclen.path.svg(d [, opts]): SVG path data.  opts: tol, method, arc_tol
 -- (arcs become cubics within a Hausdorff distance of arc_tol * max(rx, ry,
--- chord / 2); default: tol).
+-- chord / 2); default: tol), transform ({a, b, c, d, e, f}: the path's
+-- points mapped by SVG's matrix(a b c d e f); arcs keep their tolerance
+-- after the mapping, relative to the size of the arc's image).
 local function from_svg(d, opts)
   local fname = "arclen.path.svg"
   if type(d) ~= "string" then
     argerror(1, fname, "path data (a string) expected, got " .. type(d))
   end
-  local o, msg = read_opts(opts, {tol = true, method = true, arc_tol = true})
+  local o, msg = read_opts(opts, {tol = true, method = true, arc_tol = true, transform = true})
   if not o then argerror(2, fname, msg) end
-  local subpaths = parse_with(fname, svgpath.parse, d, o.arc_tol or o.tol)
+  local subpaths = parse_with(fname, svgpath.parse, d, o.arc_tol or o.tol, o.transform)
   return build(subpaths, o)
 end
 

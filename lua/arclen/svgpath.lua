@@ -78,15 +78,28 @@ local NAMES = {
   A = {"rx", "ry", "x-axis-rotation", "large-arc-flag", "sweep-flag", "x", "y"},
 }
 
+-- A separator and a number without exponent in one match: the fast path
+-- (most numbers); anything else goes through number() and its messages.
+local NUM_AFTER = "^[ \t\n\r\f]*,?[ \t\n\r\f]*([+-]?%d*%.?%d*)()"
+local NUM_HERE = "^([+-]?%d*%.?%d*)()"
+local huge = math.huge
+
 -- Read the arguments of one command instance (ARGS[up] numbers) into a.
 local function arguments(d, i, up, a)
-  local names = NAMES[up]
   for k = 1, ARGS[up] do
-    if k > 1 then i = skip_sep(d, i) end
     if up == "A" and (k == 4 or k == 5) then
-      a[k], i = flag(d, i, names[k])
+      i = skip_sep(d, i)
+      a[k], i = flag(d, i, NAMES[up][k])
     else
-      a[k], i = number(d, i, "a number (" .. up .. " " .. names[k] .. ")")
+      local _, _, s, j = find(d, k > 1 and NUM_AFTER or NUM_HERE, i)
+      local c = byte(d, j)
+      local v = c ~= 101 and c ~= 69 and tonumber(s)
+      if v and v == v and v ~= huge and v ~= -huge then
+        a[k], i = v, j
+      else
+        if k > 1 then i = skip_sep(d, i) end
+        a[k], i = number(d, i, "a number (" .. up .. " " .. NAMES[up][k] .. ")")
+      end
     end
   end
   return i
@@ -102,10 +115,38 @@ local function quadratic(x0, y0, qx, qy, x1, y1)
           x1 + 2 / 3 * (qx - x1), y1 + 2 / 3 * (qy - y1), x1, y1}
 end
 
--- Append the cubics of an elliptical arc (F.6 of SVG 1.1) to sp.
-local function arc(sp, x0, y0, a, x1, y1, arc_tol, pos)
+-- The arc's size after the transform T = {a, b, c, d, e, f} (SVG's
+-- matrix(a b c d e f)) and T's largest singular value: the image of the
+-- ellipse is the ellipse of the 2x2 matrix A R(phi) diag(rx, ry), whose
+-- semi-axes are that matrix's singular values; the chord maps by A.
+local function singular(p, q, r, s)       -- of [[p r] [q s]], largest first
+  local e, f = (p + s) / 2, (p - s) / 2
+  local g, h = (q - r) / 2, (q + r) / 2
+  local u, v = math.sqrt(e * e + g * g), math.sqrt(f * f + h * h)
+  return u + v, math.abs(u - v)
+end
+
+local function image_scale(T, rx, ry, phi, dx, dy)
+  local c, s = math.cos(math.rad(phi)), math.sin(math.rad(phi))
+  local A, B, C, D = T[1], T[2], T[3], T[4]
+  local s1 = singular(rx * (A * c + C * s), rx * (B * c + D * s),
+                      ry * (-A * s + C * c), ry * (-B * s + D * c))
+  local cx, cy = A * dx + C * dy, B * dx + D * dy
+  return math.max(s1, 0.5 * math.sqrt(cx * cx + cy * cy)), (singular(A, B, C, D))
+end
+
+-- Append the cubics of an elliptical arc (F.6 of SVG 1.1) to sp.  The
+-- Hausdorff tolerance is arc_tol times the arc's size; under a transform T
+-- the cubics are built in the local coordinates at the tolerance that,
+-- multiplied by T's largest singular value (the most T can stretch a
+-- distance), is arc_tol times the size of the arc's image.
+local function arc(sp, x0, y0, a, x1, y1, arc_tol, pos, T)
   local rx, ry = math.abs(a[1]), math.abs(a[2])
   local scale = math.max(rx, ry, 0.5 * math.sqrt((x1 - x0) ^ 2 + (y1 - y0) ^ 2))
+  if T and scale > 0 then
+    local size, smax = image_scale(T, rx, ry, a[3], x1 - x0, y1 - y0)
+    scale = smax > 0 and size / smax or 0
+  end
   local opts = nil
   if scale > 0 and rx > 0 and ry > 0 then opts = {tol = arc_tol * scale} end
   local ok, cubics = pcall(arclen.svg_arc, x0, y0, rx, ry, a[3], a[4], a[5],
@@ -116,8 +157,32 @@ local function arc(sp, x0, y0, a, x1, y1, arc_tol, pos)
   for _, c in ipairs(cubics) do sp[#sp + 1] = c end
 end
 
--- The subpaths of d.  Caps: the data's length bounds every loop.
-function M.parse(d, arc_tol)
+-- Map every point of the subpaths by T (exact for cubics: an affine image
+-- of a Bezier curve is the Bezier curve of the images of its control
+-- points); a coordinate that overflows is an error.
+local function transform(subpaths, T)
+  local A, B, C, D, E, F = T[1], T[2], T[3], T[4], T[5], T[6]
+  local huge = math.huge
+  for _, sp in ipairs(subpaths) do
+    local x, y = sp.x, sp.y
+    sp.x, sp.y = A * x + C * y + E, B * x + D * y + F
+    for _, c in ipairs(sp) do
+      for k = 1, 7, 2 do
+        x, y = c[k], c[k + 1]
+        local u, v = A * x + C * y + E, B * x + D * y + F
+        if not (u > -huge and u < huge and v > -huge and v < huge) then
+          fail(nil, "the transform takes a coordinate out of range")
+        end
+        c[k], c[k + 1] = u, v
+      end
+    end
+  end
+  return subpaths
+end
+
+-- The subpaths of d, mapped by the transform T ({a, b, c, d, e, f} as SVG's
+-- matrix(a b c d e f), optional).  Caps: the data's length bounds every loop.
+function M.parse(d, arc_tol, T)
   local subpaths = {}
   local sp = nil                 -- the current subpath
   local cx, cy = 0, 0            -- current point
@@ -202,7 +267,7 @@ function M.parse(d, arc_tol)
           lastq = {qx, qy}
         else -- "A"
           x, y = a[6] + ox, a[7] + oy
-          arc(sp, cx, cy, a, x, y, arc_tol, cmdpos)
+          arc(sp, cx, cy, a, x, y, arc_tol, cmdpos, T)
         end
         if cmd ~= "C" and cmd ~= "S" then lastc = nil end
         if cmd ~= "Q" and cmd ~= "T" then lastq = nil end
@@ -217,6 +282,7 @@ function M.parse(d, arc_tol)
     end
   end
   assert(prev ~= nil)
+  if T then return transform(subpaths, T) end
   return subpaths
 end
 

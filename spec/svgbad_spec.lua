@@ -1,0 +1,172 @@
+-- spec/svgbad_spec.lua -- arclen.svg against bad documents: each bad case
+-- ends in an error "NAME:LINE:COL: message" that names the file and the
+-- place (or, where a renderer draws nothing -- a singular transform --, in
+-- a warning that does), never in a NaN, a Lua runtime error or a hang.
+-- Then a seeded random mutation of the real documents under spec/data/svg/
+-- (as hostile_spec does for path data): every mutant is read to a result
+-- with finite lengths or to such an error, within a time limit
+-- (ARCLEN_TIME_SCALE stretches it for valgrind and sanitizer runs).
+local svg = require("arclen.svg")
+
+local TIME_SCALE = tonumber(os.getenv("ARCLEN_TIME_SCALE")) or 1
+local H = '<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" viewBox="0 0 10 10">'
+local COL = #H + 1                    -- the column of the first element after H
+
+-- The error message of reading text named name (nil when it reads).
+local function err_of(text, name, opts)
+  local ok, e = pcall(svg.parse, text, opts, name or "bad.svg")
+  if ok then return nil, e end
+  return e
+end
+
+describe("arclen.svg: bad documents, each a clear error naming the file and place", function()
+  local cases = {
+    {"malformed XML (line and column from expat)", "<svg xmlns='http://www.w3.org/2000/svg'>\n  <path d='M0 0'>\n</svg>",
+     "^bad%.svg:3:3: malformed XML: mismatched tag$"},
+    {"an unclosed attribute", H .. '<path d="M0 0/></svg>', "^bad%.svg:1:%d+: malformed XML: "},
+    {"an unknown unit", H .. '<rect width="3qq" height="1"/></svg>',
+     "^bad%.svg:1:" .. COL .. ": width='3qq': unknown unit 'qq'$"},
+    {"a length that is not one", H .. '<circle r="ten"/></svg>', "r='ten' is not a length"},
+    {"a negative width", H .. '<rect width="-3" height="1"/></svg>', "width must not be negative"},
+    {"a wrong argument count", H .. '<path transform="rotate(1 2)" d="M0 0 L1 0"/></svg>',
+     "^bad%.svg:1:" .. COL .. ": transform='rotate%(1 2%)': rotate takes 1 or 3 arguments, got 2"},
+    {"an unknown transform", H .. '<g transform="frob(1)"/></svg>', "unknown transform 'frob'"},
+    {"an unclosed transform", H .. '<g transform="scale(1"/></svg>', "a number or '%)' expected in scale"},
+    {"a comma before ')'", H .. '<g transform="scale(1,)"/></svg>', "comma before '%)'"},
+    {"a comma after the last transform", H .. '<g transform="scale(1),"/></svg>', "comma after the last transform"},
+    {"a transform that overflows", H .. '<g transform="scale(1e308) scale(1e308)"/></svg>', "overflows"},
+    {"coordinates out of range after a transform", H .. '<path transform="scale(1e300)" d="M0 0 L1e10 0"/></svg>',
+     "the transform takes a coordinate out of range"},
+    {"bad path data, with its position", H .. '<path id="p" d="M0 0 L1e"/></svg>',
+     "^bad%.svg:1:" .. COL .. ": <path id='p'>: d: exponent without digits in a number at position 8$"},
+    {"an odd number of coordinates", H .. '<polygon points="1 2 3"/></svg>', "points: an odd number of coordinates"},
+    {"a bad viewBox", H .. '<svg viewBox="1 2 3"/></svg>', "viewBox='1 2 3' is not four numbers"},
+    {"a bad preserveAspectRatio", H .. '<svg viewBox="0 0 1 1" preserveAspectRatio="xMidYMax sliced"/></svg>',
+     "preserveAspectRatio='xMidYMax sliced' is not valid"},
+    {"a percentage without a viewport", '<svg xmlns="http://www.w3.org/2000/svg"><rect width="50%" height="1"/></svg>',
+     "a percentage needs a viewport"},
+    {"a use of itself", H .. '<use href="#a" id="a"/></svg>', "^bad%.svg:1:" .. COL .. ": <use> of '#a' refers to itself"},
+    {"a use inside its target", H .. '<g id="g"><path d="M0 0 L1 0"/><use href="#g"/></g></svg>', "refers to itself"},
+    {"a use cycle", H .. '<g id="a"><use href="#b"/></g><g id="b"><use xlink:href="#a"/></g></svg>',
+     "makes a cycle %(b %-> a %-> b%)"},
+    {"a use of a missing id", H .. '<use href="#nope"/></svg>', "<use> of '#nope': no element has that id"},
+    {"nesting beyond the cap", H .. ("<g>"):rep(1100) .. ("</g>"):rep(1100) .. "</svg>", "elements nested deeper than 1000"},
+    {"entity expansion (billion laughs)",
+     '<?xml version="1.0"?><!DOCTYPE svg [<!ENTITY a "lol"><!ENTITY b "&a;&a;&a;&a;&a;&a;&a;&a;">]><svg>&b;</svg>',
+     "^bad%.svg:1:%d+: entity 'b' refers to other entities"},
+    {"an empty document", "", "^bad%.svg:1:1: empty document$"},
+    {"whitespace only", " \n  ", "^bad%.svg:%d+:%d+: empty document %(no root element%)$"},
+    {"not XML", "M0 0 L10 10", "^bad%.svg:1:1: malformed XML: syntax error$"},
+    {"XML that is not SVG", '<html xmlns="http://www.w3.org/1999/xhtml"><body/></html>',
+     "^bad%.svg:1:1: not an SVG document: the root element is <html>"},
+    {"an svg root in another namespace", '<svg xmlns="urn:x"/>', "not an SVG document"},
+  }
+  for _, c in ipairs(cases) do
+    it(c[1], function()
+      local e = err_of(c[2])
+      assert.is_string(e, "no error")
+      assert.matches(c[3], e)
+      assert.is_nil(e:find("traceback", 1, true))
+    end)
+  end
+
+  it("a singular transform: not drawn, with a warning naming the place", function()
+    local e, doc = err_of(H .. '<path transform="scale(0)" d="M0 0 L1 0"/><path d="M0 0 L2 0"/></svg>')
+    assert.is_nil(e)
+    assert.are.equal(2, doc.total)
+    assert.matches("^bad%.svg:1:" .. COL .. ": <path>: singular transform, not drawn$", doc.warnings[1])
+  end)
+
+  it("a use bomb (each level uses the previous twice) stops at the cap, quickly", function()
+    local b = {H, '<path id="l0" d="M0 0 L1 0"/>'}
+    for i = 1, 40 do b[#b + 1] = ('<g id="l%d"><use href="#l%d"/><use href="#l%d"/></g>'):format(i, i - 1, i - 1) end
+    b[#b + 1] = "</svg>"
+    local t0 = os.clock()
+    local e = err_of(table.concat(b))
+    assert.matches("<use> expansions replay more than %d+ elements", e)
+    assert.is_true(os.clock() - t0 < 30 * TIME_SCALE)
+  end)
+
+  it("read: a missing file says so; misuse is 'bad argument'", function()
+    local ok, e = pcall(svg.read, "/nonexistent/x.svg")
+    assert.is_false(ok)
+    assert.matches("/nonexistent/x.svg: No such file", e)
+    ok, e = pcall(svg.read, 42)
+    assert.matches("^bad argument #1 to 'arclen.svg.read'", e)
+    ok, e = pcall(function() local d = svg.parse(H .. "</svg>", {units = "furlong"}); return d end)
+    assert.matches("^[^:]*svgbad_spec.lua:%d+: bad argument #2 to 'arclen.svg.parse' %(unknown units 'furlong'", e)
+    ok, e = pcall(svg.parse, H .. "</svg>", {frob = true})
+    assert.matches("unknown option 'frob'", e)
+    ok, e = pcall(svg.stat, {})
+    assert.matches("^bad argument #1 to 'arclen.svg.stat'", e)
+  end)
+end)
+
+describe("arclen.svg: seeded random mutations of the real documents", function()
+  local files = {}
+  for _, row in ipairs(require("helpers").tsv("svg/SOURCES.tsv")) do files[#files + 1] = row.file end
+  local texts = {}
+  for i, f in ipairs(files) do
+    local h = assert(io.open("spec/data/svg/" .. f, "rb"))
+    texts[i] = h:read("*a")
+    h:close()
+  end
+  -- Park and Miller's generator: exact in doubles, the same on every Lua
+  local seed = 19
+  local function rnd(n)
+    seed = (seed * 16807) % 2147483647
+    return seed % n + 1
+  end
+  local INSERTS = {"<", ">", "&", "&amp;", "&#0;", '"', "'", "/>", "</g>", "<g>", "<use href='#x'/>",
+    " transform='scale(0)'", " transform='matrix(1e308 0 0 1e308 0 0)'", " transform='rotate('",
+    " width='1e400'", " r='-1'", " d='M1e308 1e308 L-1e308 -1e308'", " d='M0 0 A1e-320 1e-320 0 0 1 1 1'",
+    "1e999", "-", ".", "NaN", "inf", "0x10", "]]>", "<!--", "-->", "<![CDATA[", "<?x?>",
+    " display='none'", " viewBox='0 0 0 0'", " points='1 2 3'", " style='stroke:none'",
+    "\0", "\255\254", "<svg>", "</svg>", "<symbol id='s'>", "<use xlink:href='#s'/>"}
+  local function mutate(text)
+    local t = text
+    for _ = 1, rnd(4) do
+      local n = #t
+      local p = rnd(n)
+      local kind = rnd(4)
+      if kind == 1 then                       -- delete a run
+        t = t:sub(1, p - 1) .. t:sub(p + rnd(20))
+      elseif kind == 2 then                   -- insert a token
+        t = t:sub(1, p) .. INSERTS[rnd(#INSERTS)] .. t:sub(p + 1)
+      elseif kind == 3 then                   -- replace a byte
+        t = t:sub(1, p - 1) .. string.char(rnd(256) - 1) .. t:sub(p + 1)
+      else                                    -- duplicate a run
+        local q = math.min(n, p + rnd(200))
+        t = t:sub(1, q) .. t:sub(p, q) .. t:sub(q + 1)
+      end
+    end
+    return t
+  end
+  local RUNS = tonumber(os.getenv("SVG_MUTATIONS")) or 300
+  it(("%d mutants: finite results or located errors, never NaN or a crash"):format(RUNS), function()
+    local reads, errors = 0, 0
+    local t0 = os.clock()
+    for run = 1, RUNS do
+      local k = rnd(#texts)
+      local text = mutate(texts[k])
+      local name = files[k] .. "~" .. run
+      local ok, res = pcall(svg.parse, text, nil, name)
+      if ok then
+        reads = reads + 1
+        assert(res.total == res.total and res.total < math.huge, name .. ": total " .. tostring(res.total))
+        for _, e in ipairs(res.elements) do
+          assert(e.length == e.length and e.length < math.huge, name .. ": element length")
+        end
+      else
+        errors = errors + 1
+        assert(type(res) == "string", name .. ": error object " .. tostring(res))
+        local esc = name:gsub("%p", "%%%0")
+        assert(res:match("^" .. esc .. ":%d+:%d+: .+"), name .. ": unlocated error: " .. res)
+        assert(not res:find("attempt to", 1, true), name .. ": Lua error: " .. res)
+        assert(not res:find("traceback", 1, true), name .. ": " .. res)
+      end
+    end
+    assert.is_true(reads > 0 and errors > 0)
+    assert.is_true(os.clock() - t0 < 120 * TIME_SCALE, "too slow")
+  end)
+end)

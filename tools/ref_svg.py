@@ -1,0 +1,524 @@
+#!/usr/bin/python3
+"""tools/ref_svg.py -- reference lengths of whole SVG documents
+(spec/data/svg_refs.tsv).
+
+An independent reading of each document under spec/data/svg/, following the
+SVG specification (and the choices doc/svg.md documents where it leaves
+room), into exact primitives in document coordinates -- lines, quadratic
+and cubic Beziers, elliptical arcs, each with the affine map of its element
+-- measured with mpmath at 32 digits:
+  - the tree by xml.etree (a DOM: a reference need not stream);
+  - basic shapes as SVG 2 chapter 10 defines them (rect with the rx/ry
+    auto and clamping rules, circle, ellipse, line, polyline, polygon) and
+    path data by tools/ref_paths.py's reader;
+  - transforms (SVG 1.1 section 7.6) and viewports (viewBox,
+    preserveAspectRatio, SVG 2 section 8.2) as exact matrices (angles by
+    mpmath), units by CSS (96 px per inch);
+  - <use> of elements and symbols (SVG 2 section 5.6);
+  - lines exactly, Beziers by quadrature of the speed split at its minima
+    (B' . B'' = 0) and in 4 (or 16), where Gauss-Legendre and tanh-sinh
+    must agree to 1e-24 relative, each arc by the SVG 1.1 F.6.5
+    endpoint-to-centre conversion (F.6.6 radius correction) and the
+    integral over its parametric angle of |A R(phi) (-rx sin t, ry cos t)|
+    -- the image of the ellipse arc, not a cubic approximation.
+svgelements (python3-svgelements) is asked for a second opinion on the
+structure only: the number of drawn shapes is printed next to ours (it also
+draws what unused symbols, masks and markers hold; its lengths are ~1e-10 off).
+
+Columns: file, units, options (hidden / stroked / -), elements (drawn
+shapes), L (total length, 30 digits), arcs, arcscale (sum over arcs of
+max(rx', ry', chord'/2), the size of the arc's image in the output units:
+arclen's arc tolerance is arc_tol times it, so an arc's length is within
+2 pi arc_tol arcscale of the truth).
+
+Values carry 30 digits, of which the quadrature check vouches for 24.
+
+Usage: /usr/bin/python3 tools/ref_svg.py   (from the repository root;
+       REF_JOBS=2 runs two processes, the largest files first)
+"""
+import os
+import re
+import sys
+import xml.etree.ElementTree as ET
+
+import mpmath as mp
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import ref_paths  # noqa: E402  (its path-data reader and quadrature)
+
+mp.mp.dps = 32
+
+SVG_NS = "http://www.w3.org/2000/svg"
+XLINK = "{http://www.w3.org/1999/xlink}href"
+INK = "{http://www.inkscape.org/namespaces/inkscape}"
+PX = {"": 1, "px": 1, "in": 96, "cm": mp.mpf(96) / mp.mpf("2.54"),
+      "mm": mp.mpf(96) / mp.mpf("25.4"), "pt": mp.mpf(96) / 72,
+      "pc": mp.mpf(96) / 6, "q": mp.mpf(96) / mp.mpf("101.6")}
+OUT = {"user": None, "px": 1, "in": 96, "cm": PX["cm"], "mm": PX["mm"],
+       "pt": PX["pt"], "pc": PX["pc"]}
+NOT_RENDERED = {"defs", "symbol", "clipPath", "mask", "marker", "pattern",
+                "linearGradient", "radialGradient", "filter", "style",
+                "script", "title", "desc", "metadata", "view", "font",
+                "font-face", "cursor", "hatch", "solidcolor", "meshgradient"}
+SHAPES = {"path", "rect", "circle", "ellipse", "line", "polyline", "polygon"}
+CONTAINERS = {"g", "a", "switch", "svg"}
+NUM = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
+
+# ---- the files and the variants measured --------------------------------
+VARIANTS = {
+    "hand/units.svg": [("user", "-"), ("px", "-"), ("mm", "-"), ("cm", "-"),
+                       ("in", "-"), ("pt", "-"), ("pc", "-")],
+    "hand/par-none.svg": [("user", "-"), ("px", "-"), ("mm", "-")],
+    "hand/par-slice.svg": [("user", "-"), ("px", "-"), ("in", "-")],
+    "hand/display.svg": [("user", "-"), ("user", "hidden"), ("user", "stroked")],
+    "real/inkscape-tutorials-making_markers.svg": [("user", "-"), ("mm", "-")],
+    "real/vim-gvim.svg": [("user", "-"), ("px", "-")],
+}
+
+
+def split(tag):
+    if tag.startswith("{"):
+        ns, name = tag[1:].split("}", 1)
+        return ns, name
+    return None, tag
+
+
+def mul(P, Q):
+    a, b, c, d, e, f = P
+    A, B, C, D, E, F = Q
+    return (a * A + c * B, b * A + d * B, a * C + c * D, b * C + d * D,
+            a * E + c * F + e, b * E + d * F + f)
+
+
+ID = tuple(mp.mpf(x) for x in (1, 0, 0, 1, 0, 0))
+
+
+def tr(x, y):
+    return (mp.mpf(1), mp.mpf(0), mp.mpf(0), mp.mpf(1), x, y)
+
+
+def transform(s):
+    """SVG 1.1 section 7.6, exact (mpmath angles)."""
+    T = ID
+    for name, args in re.findall(r"(matrix|translate|scale|rotate|skewX|skewY)\s*\(([^)]*)\)", s):
+        a = [mp.mpf(x) for x in NUM.findall(args)]
+        if name == "matrix":
+            M = tuple(a)
+        elif name == "translate":
+            M = tr(a[0], a[1] if len(a) > 1 else 0)
+        elif name == "scale":
+            M = (a[0], 0, 0, a[1] if len(a) > 1 else a[0], 0, 0)
+        elif name == "rotate":
+            t = mp.radians(a[0])
+            R = (mp.cos(t), mp.sin(t), -mp.sin(t), mp.cos(t), 0, 0)
+            M = mul(mul(tr(a[1], a[2]), R), tr(-a[1], -a[2])) if len(a) == 3 else R
+        elif name == "skewX":
+            M = (1, 0, mp.tan(mp.radians(a[0])), 1, 0, 0)
+        else:
+            M = (1, mp.tan(mp.radians(a[0])), 0, 1, 0, 0)
+        T = mul(T, tuple(mp.mpf(x) for x in M))
+    return T
+
+
+def styles(el):
+    out = {}
+    for decl in (el.get("style") or "").split(";"):
+        if ":" in decl:
+            k, v = decl.split(":", 1)
+            out[k.strip().lower()] = v.replace("!important", "").strip()
+    return out
+
+
+def prop(el, name):
+    v = styles(el).get(name, el.get(name))
+    return v.strip().lower() if v is not None else None
+
+
+def length(s, kind, vp):
+    s = s.strip()
+    m = re.match(r"^([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*([a-zA-Z%]*)$", s)
+    v, u = mp.mpf(m.group(1)), m.group(2).lower()
+    if u in PX:
+        return v * PX[u]
+    if u == "em":
+        return v * 16
+    if u == "ex":
+        return v * 8
+    assert u == "%", s
+    ref = vp[0] if kind == "x" else vp[1] if kind == "y" else mp.sqrt((vp[0] ** 2 + vp[1] ** 2) / 2)
+    return v / 100 * ref
+
+
+def attr_len(el, name, kind, vp, default):
+    s = el.get(name)
+    if s is None or not s.strip() or s.strip() == "auto":
+        return default
+    return length(s, kind, vp)
+
+
+def viewbox(vb, par, ex, ey, ew, eh):
+    """SVG 2 section 8.2."""
+    words = (par or "").split()
+    if words and words[0] == "defer":
+        words = words[1:]
+    align = words[0] if words else "xMidYMid"
+    slice_ = len(words) > 1 and words[1] == "slice"
+    sx, sy = ew / vb[2], eh / vb[3]
+    if align != "none":
+        sx = sy = max(sx, sy) if slice_ else min(sx, sy)
+    tx, ty = ex - vb[0] * sx, ey - vb[1] * sy
+    if align != "none":
+        ax, ay = align[1:4], align[5:8]
+        tx += {"Min": 0, "Mid": (ew - vb[2] * sx) / 2, "Max": ew - vb[2] * sx}[ax]
+        ty += {"Min": 0, "Mid": (eh - vb[3] * sy) / 2, "Max": eh - vb[3] * sy}[ay]
+    return (sx, mp.mpf(0), mp.mpf(0), sy, tx, ty)
+
+
+def vbox(el):
+    s = el.get("viewBox")
+    if not s or not s.strip():
+        return None
+    return [mp.mpf(x) for x in NUM.findall(s)]
+
+
+def d_of(tag, el, vp):
+    """SVG 2 chapter 10: the path equivalent of a shape (None: not rendered)."""
+    n = lambda x: mp.nstr(x, 40, min_fixed=-mp.inf, max_fixed=mp.inf)
+    if tag == "path":
+        d = el.get("d")
+        return d if d and d.strip() else None
+    if tag == "rect":
+        x, y = attr_len(el, "x", "x", vp, 0), attr_len(el, "y", "y", vp, 0)
+        w, h = attr_len(el, "width", "x", vp, 0), attr_len(el, "height", "y", vp, 0)
+        rx, ry = attr_len(el, "rx", "x", vp, None), attr_len(el, "ry", "y", vp, None)
+        if w == 0 or h == 0:
+            return None
+        if rx is None:
+            rx = ry if ry is not None else 0
+        if ry is None:
+            ry = rx
+        rx, ry = min(rx, w / 2), min(ry, h / 2)
+        x, y, w, h = [mp.mpf(v) for v in (x, y, w, h)]
+        if rx == 0 or ry == 0:
+            return "M%s %s H%s V%s H%s Z" % (n(x), n(y), n(x + w), n(y + h), n(x))
+        a = "A%s %s 0 0 1 " % (n(rx), n(ry))
+        return " ".join(["M%s %s H%s" % (n(x + rx), n(y), n(x + w - rx)),
+                         a + "%s %s" % (n(x + w), n(y + ry)), "V" + n(y + h - ry),
+                         a + "%s %s" % (n(x + w - rx), n(y + h)), "H" + n(x + rx),
+                         a + "%s %s" % (n(x), n(y + h - ry)), "V" + n(y + ry),
+                         a + "%s %s" % (n(x + rx), n(y)), "Z"])
+    if tag in ("circle", "ellipse"):
+        cx, cy = mp.mpf(attr_len(el, "cx", "x", vp, 0)), mp.mpf(attr_len(el, "cy", "y", vp, 0))
+        if tag == "circle":
+            rx = ry = attr_len(el, "r", "o", vp, 0)
+        else:
+            rx, ry = attr_len(el, "rx", "x", vp, None), attr_len(el, "ry", "y", vp, None)
+            rx, ry = (rx if rx is not None else ry or 0), (ry if ry is not None else rx or 0)
+        if rx == 0 or ry == 0:
+            return None
+        a = "A%s %s 0 0 1 " % (n(rx), n(ry))
+        return " ".join(["M%s %s" % (n(cx + rx), n(cy)), a + "%s %s" % (n(cx), n(cy + ry)),
+                         a + "%s %s" % (n(cx - rx), n(cy)), a + "%s %s" % (n(cx), n(cy - ry)),
+                         a + "%s %s" % (n(cx + rx), n(cy)), "Z"])
+    if tag == "line":
+        v = [n(mp.mpf(attr_len(el, k, k[0], vp, 0))) for k in ("x1", "y1", "x2", "y2")]
+        return "M%s %s L%s %s" % tuple(v)
+    pts = NUM.findall(el.get("points") or "")
+    if len(pts) < 2:
+        return None
+    d = "M" + " ".join(pts[:2]) + "".join(" L%s %s" % (pts[k], pts[k + 1])
+                                         for k in range(2, len(pts) - 1, 2))
+    return d + (" Z" if tag == "polygon" else "")
+
+
+# ---- measuring a primitive under the 2x2 part A of a matrix ---------------
+
+def apply(A, p):
+    return (A[0] * p[0] + A[2] * p[1], A[1] * p[0] + A[3] * p[1])
+
+
+def sing(p, q, r, s):
+    """Singular values of [[p r] [q s]]."""
+    M = mp.matrix([[p, r], [q, s]])
+    return sorted(mp.svd_r(M, compute_uv=False), reverse=True)
+
+
+def integrate(f, cuts):
+    """The integral of f over [cuts[0], cuts[-1]], split at the cuts and each
+    piece in 4 (then 16 if needed): Gauss-Legendre and tanh-sinh must agree
+    to 1e-24 relative."""
+    pts = sorted(set(cuts))
+
+    def split(k):
+        out = []
+        for a, b in zip(pts, pts[1:]):
+            out += list(mp.linspace(a, b, k + 1))[:-1]
+        return out + [pts[-1]]
+    for k in (4, 16):
+        v1 = mp.quad(f, split(k), method="gauss-legendre")
+        v2 = mp.quad(f, split(k), method="tanh-sinh")
+        if abs(v1 - v2) <= mp.mpf(10) ** -24 * (abs(v2) + mp.mpf(10) ** -300):
+            return v2
+    raise AssertionError("quadratures disagree: %s %s" % (v1, v2))
+
+
+def speed_minima(ctrl):
+    """Parameters in (0, 1) where |B'|^2 has a critical point (B' . B'' = 0):
+    the speed's minima, near-cusps among them, where quadrature is split."""
+    n = len(ctrl) - 1
+    d = [[n * (ctrl[i + 1][k] - ctrl[i][k]) for k in (0, 1)] for i in range(n)]
+    # B'(t) as a polynomial in t, coefficients highest first, per coordinate
+    if n == 3:
+        polys = [[d[0][k] - 2 * d[1][k] + d[2][k], 2 * (d[1][k] - d[0][k]), d[0][k]] for k in (0, 1)]
+    else:
+        polys = [[d[1][k] - d[0][k], d[0][k]] for k in (0, 1)]
+    out = []
+    prod = None
+    for p in polys:
+        dp = [c * (len(p) - 1 - i) for i, c in enumerate(p[:-1])]
+        q = [mp.mpf(0)] * (len(p) + len(dp) - 1)
+        for i, a in enumerate(p):
+            for j, b in enumerate(dp):
+                q[i + j] += a * b
+        prod = q if prod is None else [x + y for x, y in zip(prod, q)]
+    while prod and prod[0] == 0:
+        prod = prod[1:]
+    if len(prod) >= 2:
+        try:
+            roots = mp.polyroots(prod, maxsteps=200, extraprec=200)
+        except mp.libmp.libhyper.NoConvergence:
+            roots = []
+        for r in roots:
+            if abs(mp.im(r)) < mp.mpf(10) ** -20 and 0 < mp.re(r) < 1:
+                out.append(mp.re(r))
+    return out
+
+
+def measure(prim, A):
+    """Length of the primitive's image; for arcs also the image's size."""
+    kind = prim[0]
+    if kind == "line":
+        d = apply(A, (prim[2][0] - prim[1][0], prim[2][1] - prim[1][1]))
+        return mp.sqrt(d[0] ** 2 + d[1] ** 2), None
+    if kind in ("quad", "cubic"):
+        ctrl = [apply(A, p) for p in ref_paths.cubic_of(prim)]
+        cuts = [mp.mpf(0)] + speed_minima(ctrl) + [mp.mpf(1)]
+        return integrate(lambda u: ref_paths.speed(ctrl, u), cuts), None
+    _, rx, ry, phi, fa, fs, (x1, y1), (x2, y2) = prim
+    if (x1, y1) == (x2, y2):
+        return mp.mpf(0), None
+    with mp.workdps(2 * mp.mp.dps):
+        ph = mp.radians(phi)
+        c, s = mp.cos(ph), mp.sin(ph)
+    rx, ry = abs(rx), abs(ry)
+    ch = apply(A, (x2 - x1, y2 - y1))
+    chord2 = mp.sqrt(ch[0] ** 2 + ch[1] ** 2) / 2
+    if rx == 0 or ry == 0:                       # F.6.2: a straight line
+        return 2 * chord2, None
+    size = max(sing(rx * (A[0] * c + A[2] * s), rx * (A[1] * c + A[3] * s),
+                    ry * (-A[0] * s + A[2] * c), ry * (-A[1] * s + A[3] * c))[0], chord2)
+    # F.6.5.2 takes the square root of a difference that cancels for half
+    # ellipses (k ~ sqrt(rounding)): the conversion runs at twice the digits
+    with mp.workdps(2 * mp.mp.dps):
+        dx, dy = (x1 - x2) / 2, (y1 - y2) / 2        # F.6.5.1
+        xp, yp = c * dx + s * dy, -s * dx + c * dy
+        lam = xp ** 2 / rx ** 2 + yp ** 2 / ry ** 2  # F.6.6
+        if lam > 1:
+            rx, ry = mp.sqrt(lam) * rx, mp.sqrt(lam) * ry
+        num = rx ** 2 * ry ** 2 - rx ** 2 * yp ** 2 - ry ** 2 * xp ** 2
+        den = rx ** 2 * yp ** 2 + ry ** 2 * xp ** 2
+        k = mp.sqrt(max(num / den, 0)) * (-1 if fa == fs else 1)
+        cxp, cyp = k * rx * yp / ry, -k * ry * xp / rx
+    ang = lambda ux, uy, vx, vy: mp.atan2(ux * vy - uy * vx, ux * vx + uy * vy)
+    th1 = ang(1, 0, (xp - cxp) / rx, (yp - cyp) / ry)   # F.6.5.5, F.6.5.6
+    dth = ang((xp - cxp) / rx, (yp - cyp) / ry, (-xp - cxp) / rx, (-yp - cyp) / ry)
+    if not fs and dth > 0:
+        dth -= 2 * mp.pi
+    elif fs and dth < 0:
+        dth += 2 * mp.pi
+
+    def speed(t):
+        v = apply(A, (c * (-rx * mp.sin(t)) - s * (ry * mp.cos(t)),
+                      s * (-rx * mp.sin(t)) + c * (ry * mp.cos(t))))
+        return mp.sqrt(v[0] ** 2 + v[1] ** 2)
+    a, b = (th1, th1 + dth) if dth > 0 else (th1 + dth, th1)
+    return integrate(speed, [a, b]), size
+
+
+# ---- the document ------------------------------------------------------------
+
+class Doc:
+    def __init__(self, path, units, option):
+        self.tree = ET.parse(path)
+        self.root = self.tree.getroot()
+        self.ids = {}
+        for el in self.root.iter():
+            i = el.get("id")
+            if i is not None and i not in self.ids:
+                self.ids[i] = el
+        self.units, self.option = units, option
+        self.total, self.count, self.arcs, self.arcscale = mp.mpf(0), 0, 0, mp.mpf(0)
+
+    def run(self):
+        r = self.root
+        vb = vbox(r)
+        w = r.get("width")
+        h = r.get("height")
+        w = length(w, "x", None) if w and "%" not in w else None
+        h = length(h, "y", None) if h and "%" not in h else None
+        vp = (vb[2], vb[3]) if vb else (w, h) if w is not None and h is not None else None
+        ctm = ID
+        if self.units != "user":
+            V = viewbox(vb, r.get("preserveAspectRatio"), 0, 0,
+                        w if w is not None else vb[2], h if h is not None else vb[3]) if vb else ID
+            k = 1 / mp.mpf(OUT[self.units])
+            ctm = mul((k, 0, 0, k, 0, 0), V)
+        if r.get("transform"):
+            ctm = mul(ctm, transform(r.get("transform")))
+        visible = prop(r, "visibility") not in ("hidden", "collapse")
+        stroked = prop(r, "stroke") not in (None, "none", "inherit")
+        for ch in r:
+            self.walk(ch, ctm, vp, visible, stroked, [], None)
+
+    def walk(self, el, ctm, vp, visible, stroked, chain, use):
+        if not isinstance(el.tag, str):
+            return                                  # comments, processing instructions
+        ns, tag = split(el.tag)
+        if ns not in (None, SVG_NS):
+            return
+        if prop(el, "display") == "none" and self.option != "hidden":
+            return
+        v = prop(el, "visibility")
+        if v in ("hidden", "collapse"):
+            visible = False
+        elif v == "visible":
+            visible = True
+        st = prop(el, "stroke")
+        if st == "none":
+            stroked = False
+        elif st not in (None, "inherit"):
+            stroked = True
+        sw = prop(el, "stroke-width")
+        if sw is not None and NUM.match(sw) and mp.mpf(NUM.match(sw).group(0)) == 0:
+            stroked = False
+        via_use = use is not None and use["root"] is el
+        if tag in NOT_RENDERED and not (tag == "symbol" and via_use):
+            return
+        if tag not in SHAPES and tag not in CONTAINERS and tag not in ("use", "symbol"):
+            return                                  # text, image, unknown: not measured
+        if el.get("transform") and tag not in ("svg", "symbol"):
+            ctm = mul(ctm, transform(el.get("transform")))
+        if tag in ("svg", "symbol"):
+            x, y = attr_len(el, "x", "x", vp, 0), attr_len(el, "y", "y", vp, 0)
+            w = use["w"] if via_use and use["w"] is not None else attr_len(el, "width", "x", vp, None)
+            h = use["h"] if via_use and use["h"] is not None else attr_len(el, "height", "y", vp, None)
+            w = vp[0] if w is None else w
+            h = vp[1] if h is None else h
+            vb = vbox(el)
+            if w == 0 or h == 0 or (vb and (vb[2] == 0 or vb[3] == 0)):
+                return
+            if vb:
+                ctm = mul(ctm, viewbox(vb, el.get("preserveAspectRatio"), x, y, w, h))
+                vp = (vb[2], vb[3])
+            else:
+                ctm = mul(ctm, tr(x, y))
+                vp = (w, h)
+        if ctm[0] * ctm[3] - ctm[1] * ctm[2] == 0:
+            return
+        if tag in SHAPES:
+            d = d_of(tag, el, vp)
+            if d is None or not (visible or self.option == "hidden"):
+                return
+            if self.option == "stroked" and not stroked:
+                return
+            self.count += 1
+            A = ctm[:4]
+            for prim in ref_paths.parse(d):
+                L, size = measure(prim, A)
+                self.total += L
+                if size is not None:
+                    self.arcs += 1
+                    self.arcscale += size
+            return
+        if tag == "use":
+            href = el.get("href", el.get(XLINK))
+            if not href or not href.startswith("#"):
+                return
+            target = self.ids[href[1:]]
+            assert href[1:] not in chain, "use cycle"
+            u = {"root": target, "w": attr_len(el, "width", "x", vp, None),
+                 "h": attr_len(el, "height", "y", vp, None)}
+            m = mul(ctm, tr(attr_len(el, "x", "x", vp, 0), attr_len(el, "y", "y", vp, 0)))
+            self.walk(target, m, vp, visible, stroked, chain + [href[1:]], u)
+            return
+        children = [c for c in el if isinstance(c.tag, str)]
+        if tag == "switch":                         # SVG 2 section 5.8: the first that passes
+            first = [c for c in children if split(c.tag)[0] in (None, SVG_NS)
+                     and c.get("requiredExtensions") is None]
+            children = first[:1]
+        for ch in children:
+            self.walk(ch, ctm, vp, visible, stroked, chain, use and dict(use, root=None))
+
+
+def second_opinion(path):
+    """svgelements' count of drawn shapes (None if it is not installed)."""
+    try:
+        import svgelements as se
+    except ImportError:
+        return None
+    n = 0
+    try:
+        elements = list(se.SVG.parse(path).elements())
+    except Exception as e:                          # e.g. em units it cannot place
+        return "failed: %s" % e
+    for e in elements:
+        if isinstance(e, se.Shape) and not isinstance(e, se.Group) and e.values.get("display") != "none":
+            n += 1
+    return n
+
+
+def fmt(x):
+    return mp.nstr(x, 30, min_fixed=-mp.inf, max_fixed=mp.inf) if x != 0 else "0"
+
+
+def job(args):
+    base, f, units, option = args
+    mp.mp.dps = 32
+    doc = Doc(os.path.join(base, f), units, option)
+    doc.run()
+    row = [f, units, option, str(doc.count), fmt(doc.total), str(doc.arcs), fmt(doc.arcscale)]
+    note = None
+    if units == "user" and option == "-":
+        note = "%-58s %4d shapes (svgelements %s)  L = %s" % (
+            f, doc.count, second_opinion(os.path.join(base, f)), mp.nstr(doc.total, 20))
+        print(note, flush=True)
+    return row
+
+
+def main():
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    base = os.path.join(root, "spec", "data", "svg")
+    files = []
+    for sub in ("hand", "real", "graphviz"):
+        files += sorted(sub + "/" + f for f in os.listdir(os.path.join(base, sub)) if f.endswith(".svg"))
+    jobs = [(base, f, units, option) for f in files for units, option in VARIANTS.get(f, [("user", "-")])]
+    # REF_JOBS processes (default 1), the largest files first
+    n = int(os.environ.get("REF_JOBS", "1"))
+    order = sorted(range(len(jobs)), key=lambda i: -os.path.getsize(os.path.join(base, jobs[i][1])))
+    if n > 1:
+        import multiprocessing
+        with multiprocessing.Pool(n) as pool:
+            done = dict(zip(order, pool.map(job, [jobs[i] for i in order], chunksize=1)))
+    else:
+        done = {i: job(jobs[i]) for i in order}
+    rows = [done[i] for i in range(len(jobs))]
+    out = os.path.join(root, "spec", "data", "svg_refs.tsv")
+    with open(out, "w") as fh:
+        fh.write("# generated by tools/ref_svg.py (mpmath %s, %d digits)\n" % (mp.__version__, mp.mp.dps))
+        fh.write("file\tunits\toption\telements\tL\tarcs\tarcscale\n")
+        for r in rows:
+            fh.write("\t".join(r) + "\n")
+
+
+if __name__ == "__main__":
+    main()
