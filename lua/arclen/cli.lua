@@ -96,6 +96,7 @@ local function parse(argv)
   return opts, args
 end
 
+-- --method and --tol as an options table (the library checks their range).
 local function method_opts(opts)
   local o = {}
   if opts.method then o.method = opts.method end
@@ -432,7 +433,6 @@ end
 
 function commands.fit(opts, args)
   local arclen = require("arclen")
-  if type(arclen.fit) ~= "function" then fail("fit: this build has no arclen.fit") end
   local nums = {}
   for i = 2, #args do
     nums[#nums + 1] = tonumber(args[i])
@@ -441,12 +441,7 @@ function commands.fit(opts, args)
   if #nums ~= 8 and #nums ~= 12 then
     fail(("fit: a cubic needs 8 (2D) or 12 (3D) numbers, got %d"):format(#nums), 2)
   end
-  local o = {}
-  if opts.method then o.method = opts.method end
-  if opts.tol then
-    o.tol = tonumber(opts.tol)
-    if o.tol == nil then fail("--tol: '" .. opts.tol .. "' is not a number", 2) end
-  end
+  local o = method_opts(opts)
   if opts.n then
     o.n = tonumber(opts.n)
     if o.n == nil then fail("--n: '" .. opts.n .. "' is not a number", 2) end
