@@ -88,7 +88,7 @@ void arclen_hodograph(const double *c, int dim, double a2[3], double a1[3],
 ** critical points: minima, maxima, cusps), ascending; returns the count. */
 int arclen_critical_points(const double *c, int dim, double roots[3]);
 
-/* ---- quadrature.c: the default method ("gauss") -------------------- */
+/* ---- gauss/: the default method ("gauss") ------------------------- */
 double arclen_length(const double c[8], double rtol);
 double arclen_length_range(const double c[8], double t0, double t1,
                            double rtol);
