@@ -145,55 +145,103 @@ static double sub_integral(integrator *in, double x, double y, double target,
   return arclen_apply_rule(&in->h, r, c, h);
 }
 
-/* Safeguarded Newton for s(t) = goal inside an accepted piece [a, b] whose
-** length is plen (goal in [0, plen]): s is increasing, so the bracket
-** [lo, hi] always holds the answer, and a step leaving it is replaced by
-** bisection.  s(t) is taken from the nearer end of the bracket, whose s is
-** known, plus the integral between (sub_integral): near the answer these
-** are short and need few points.  The k-th such integral may err by
-** tol 2^-(k+1), so every s known errs by less than tol in all. */
-static double solve_in_piece(integrator *in, double a, double b, double plen,
-                             double goal, double tol,
-                             const arclen_gauss_rule *r) {
-  double lo = a, hi = b, slo = 0, shi = plen, share = tol / 2;
-  double t = hermite_guess(&in->h, a, b, plen, goal);
-  piece_bound eb;             /* the piece's ellipse: M and e for Cauchy */
-  int it;
-  arclen_bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &eb);
+/* An accepted piece [a, b] (half-width hp), its length plen and rule r
+** (scaled units), and its Bernstein ellipse eb (M and e for Cauchy's
+** estimates), shared by every search inside it. */
+typedef struct piece_search {
+  double a, b, plen, hp;
+  const arclen_gauss_rule *r;
+  piece_bound eb;
+} piece_search;
+
+static void search_piece(integrator *in, piece_search *p, double a, double b,
+                         double plen, const arclen_gauss_rule *r) {
+  p->a = a;
+  p->b = b;
+  p->plen = plen;
+  p->hp = (b - a) / 2;
+  p->r = r;
+  arclen_bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &p->eb);
   in->evals += 2;
-  t = refine_guess(in, a, b, plen, goal, r, t);
+}
+
+/* [lo, hi] holds the answer; slo, shi: s there, from the piece's start. */
+typedef struct bracket {
+  double lo, slo, hi, shi;
+} bracket;
+
+/* Safeguarded Newton for s(t) = goal from the guess t inside the bracket
+** (goal in [slo, shi]): s is increasing, so the bracket always holds the
+** answer, and a step leaving it is replaced by bisection.  s(t) is taken
+** from the nearer end of the bracket, whose s is known, plus the integral
+** between (sub_integral): near the answer these are short and need few
+** points.  The k-th such integral may err by share 2^-k, so the s values
+** known err by less than 2 share more than the bracket's did.  The bracket
+** is left holding the last points evaluated, for a search that follows. */
+static double newton_search(integrator *in, const piece_search *p,
+                            bracket *bk, double t, double goal, double tol,
+                            double share) {
+  double lo = bk->lo, hi = bk->hi, slo = bk->slo, shi = bk->shi;
+  int it;
+  if (t < lo || t > hi) t = lo + (hi - lo) / 2;   /* a guess from the piece */
   for (it = 0; it < 100; it++) {
     double g, f, next;
     if (t - lo <= hi - t)
-      g = slo + sub_integral(in, lo, t, share, &eb, (b - a) / 2, r) - goal;
+      g = slo + sub_integral(in, lo, t, share, &p->eb, p->hp, p->r) - goal;
     else
-      g = shi - sub_integral(in, t, hi, share, &eb, (b - a) / 2, r) - goal;
+      g = shi - sub_integral(in, t, hi, share, &p->eb, p->hp, p->r) - goal;
     share /= 2;
     f = arclen_hodo_speed(&in->h, t);
     in->evals++;
-    if (fabs(g) <= tol) break;
     if (g < 0) {
       lo = t;
       slo = g + goal;
-    } else {
+    } else if (g > 0) {
       hi = t;
       shi = g + goal;
     }
+    if (fabs(g) <= tol) break;
     next = f > 0 ? t - g / f : lo + (hi - lo) / 2;
     if (!(f > 0 && next > lo && next < hi)) {   /* a Newton step only */
       next = lo + (hi - lo) / 2;
-    } else if (newton_certified(&eb, (b - a) / 2, next - t, tol)) {
-      return next;
+    } else if (newton_certified(&p->eb, p->hp, next - t, tol)) {
+      t = next;
+      break;
     } else {
       double f1, f2, e;
       speed_slopes(&in->h, t, f, &f1, &f2);
-      e = second_order_step(&eb, (b - a) / 2, -g / f, f, f1, tol);
-      if (e != 0 && t + e > lo && t + e < hi) return t + e;
+      e = second_order_step(&p->eb, p->hp, -g / f, f, f1, tol);
+      if (e != 0 && t + e > lo && t + e < hi) {
+        t = t + e;
+        break;
+      }
     }
     if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) break;
     t = next;
   }
+  bk->lo = lo;
+  bk->slo = slo;
+  bk->hi = hi;
+  bk->shi = shi;
   return t;
+}
+
+/* s(t) = goal inside the accepted piece [a, b] of length plen (goal in
+** [0, plen]): the Hermite guess, refined, then the Newton search with the
+** whole piece as its bracket and half of tol for its integrals. */
+static double solve_in_piece(integrator *in, double a, double b, double plen,
+                             double goal, double tol,
+                             const arclen_gauss_rule *r) {
+  piece_search p;
+  bracket bk;
+  double t = hermite_guess(&in->h, a, b, plen, goal);
+  search_piece(in, &p, a, b, plen, r);
+  t = refine_guess(in, a, b, plen, goal, r, t);
+  bk.lo = a;
+  bk.slo = 0;
+  bk.hi = b;
+  bk.shi = plen;
+  return newton_search(in, &p, &bk, t, goal, tol, tol / 2);
 }
 
 /* time cuts at the feet within 0.2 of the width, more than the length
@@ -263,5 +311,173 @@ int arclen_time_gauss(const double *c, int dim, double s,
     cum += piece;
   }
   arclen_integ_fill_info(info, &in, in.h.exp);
+  return ARCLEN_OK;
+}
+
+/* The unit tangent at t: z'(t) normalised; where z' vanishes (a cusp, or
+** a control point on its end point) the limit from the next derivatives,
+** z'' (its negative at t = 1, approached from the left), then z'''; a
+** point has none (zeros).  As lua/arclen/path.lua's direction(), to the
+** bit. */
+static void unit_tangent(const double *c, int dim, double t, double *v) {
+  double len = 0;
+  int i;
+  arclen_derivative(c, dim, t, v);
+  for (i = 0; i < dim; i++) len += v[i] * v[i];
+  len = sqrt(len);
+  if (len == 0) {
+    double u = 1 - t;
+    for (i = 0; i < dim; i++) {
+      double p0 = c[i], p1 = c[dim + i], p2 = c[2 * dim + i], p3 = c[3 * dim + i];
+      v[i] = u * (p2 - 2 * p1 + p0) + t * (p3 - 2 * p2 + p1);
+      if (t == 1) v[i] = -v[i];
+    }
+    for (i = 0, len = 0; i < dim; i++) len += v[i] * v[i];
+    len = sqrt(len);
+  }
+  if (len == 0) {
+    for (i = 0; i < dim; i++)
+      v[i] = c[3 * dim + i] - 3 * c[2 * dim + i] + 3 * c[dim + i] - c[i];
+    for (i = 0, len = 0; i < dim; i++) len += v[i] * v[i];
+    len = sqrt(len);
+  }
+  for (i = 0; i < dim; i++) v[i] = len == 0 ? 0 : v[i] / len;
+}
+
+/* The pieces of the integral in increasing t: the first pieces with their
+** orders straight from the branch points when those are to be had (as
+** time_first_pieces), else the integrator's stack (as arclen_time_gauss). */
+typedef struct piece_walk {
+  int fast, k;
+  double c[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES];
+  int n[ARCLEN_CUT_PIECES];
+} piece_walk;
+
+static int walk_next(integrator *in, piece_walk *w, double *a, double *b,
+                     double *len, const arclen_gauss_rule **r, int *last) {
+  if (w->fast) {
+    if (w->k > in->nmin) return 0;
+    *r = arclen_rule_at_least(w->n[w->k]);
+    *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->hh[w->k]);
+    *a = arclen_first_from(in, w->k);
+    *b = arclen_first_to(in, w->k);
+    in->evals += (*r)->n;
+    in->pieces++;
+    *last = w->k == in->nmin;
+    w->k++;
+    return 1;
+  }
+  if (!arclen_integ_next_piece(in, a, b, len, r)) return 0;
+  *last = in->top == 0;
+  return 1;
+}
+
+#define CHAIN 16
+
+/* A later distance in the same piece: the search starts from the bracket
+** the previous one left (its lower end lo, where s is slo < goal), with
+** the third-order step from lo as its guess (series reversion, as in
+** refine_guess), so its integrals are short. */
+static double chained_guess(const integrator *in, const bracket *bk,
+                            double goal) {
+  double f = arclen_hodo_speed(&in->h, bk->lo), t;
+  if (f > 0) {
+    double d = (goal - bk->slo) / f, f1, f2;
+    speed_slopes(&in->h, bk->lo, f, &f1, &f2);
+    t = bk->lo + d + d * d * (-f1 / (2 * f) +
+                              d * (f1 * f1 / (2 * f * f) - f2 / (6 * f)));
+    if (t > bk->lo && t < bk->hi) return t;
+  }
+  return bk->lo + (bk->hi - bk->lo) / 2;
+}
+
+/* The distances s[i..] that the piece of length plen starting at cum
+** holds (as arclen_time_gauss decides it: s <= cum + plen, and on the last
+** piece not s >= cum + plen, which is t = 1), each s scaled by 2^-exp. */
+static long goals_in_piece(const double *s, long i, long n, int exp,
+                           double cum, double plen, int last) {
+  long j = i;
+  while (j < n) {
+    double g = ldexp(s[j], exp);
+    if (!(cum + plen >= g) || (last && g >= cum + plen)) break;
+    j++;
+  }
+  return j - i;
+}
+
+int arclen_times(const double *c, int dim, const double *s, long n,
+                 double rtol, double *t, double *pts, double *tan) {
+  integrator in;
+  piece_walk w;
+  double cum = 0, tol;
+  long i, j;
+  int e = arclen_integ_check_args(c, dim, rtol, 0, 1);
+  if (!e && n < 0) e = ARCLEN_EDOMAIN;
+  for (i = 0; !e && i < n; i++) {
+    if (isnan(s[i])) e = ARCLEN_EINVAL;
+    else if (i > 0 && s[i] < s[i - 1]) e = ARCLEN_EDOMAIN;
+  }
+  if (e) {
+    for (i = 0; i < n; i++) t[i] = NAN;
+    return e;
+  }
+  for (i = 0; i < n && s[i] <= 0; i++) t[i] = 0;
+  for (j = i; j < n; j++) t[j] = 1;
+  if (i < n && arclen_integ_start(&in, c, dim, 0, 1, rtol * 0.25,
+                                  TIME_FOOTCUT)) {
+    w.fast = arclen_integ_first_orders(&in, w.c, w.hh, w.n);
+    w.k = 0;
+    arclen_integ_prepare_bounds(&in);       /* for sub_integral's cut bounds */
+    if (!w.fast) arclen_integ_push_initial(&in);
+    tol = in.rtol * in.lest;
+    while (i < n) {
+      double pa, pb, plen;
+      const arclen_gauss_rule *r;
+      int last;
+      long m, q;
+      piece_search p;
+      bracket bk;
+      if (!walk_next(&in, &w, &pa, &pb, &plen, &r, &last)) break;
+      m = goals_in_piece(s, i, n, -in.h.exp, cum, plen, last);
+      if (m > 0) {
+        /* A chain of searches, each from the bracket the last one left,
+        ** carries its s values on: CHAIN goals at most (then the piece's
+        ** ends again), each whose integrals err by tol / CHAIN in all, so
+        ** that the s values err by less than tol, as one search's do, and
+        ** the chain's roundings stay within CHAIN additions. */
+        double budget = tol / (double)(m < CHAIN ? m : CHAIN);
+        search_piece(&in, &p, pa, pb, plen, r);
+        for (q = 0; q < m; q++, i++) {
+          double goal = ldexp(s[i], -in.h.exp) - cum, guess;
+          if (q > 0 && s[i] == s[i - 1]) {
+            t[i] = t[i - 1];
+            continue;
+          }
+          if (q % CHAIN == 0 || goal >= bk.shi) {   /* the piece's end */
+            bk.hi = pb;
+            bk.shi = plen;
+          }
+          if (q % CHAIN == 0) {
+            bk.lo = pa;
+            bk.slo = 0;
+          }
+          if (bk.lo == pa) {
+            guess = refine_guess(&in, pa, pb, plen, goal, r,
+                                 hermite_guess(&in.h, pa, pb, plen, goal));
+          } else {
+            guess = chained_guess(&in, &bk, goal);
+          }
+          t[i] = newton_search(&in, &p, &bk, guess, goal, tol, budget / 2);
+        }
+      }
+      if (last) break;
+      cum += plen;
+    }
+  }
+  if (pts || tan)
+    for (i = 0; i < n; i++) {
+      if (pts) arclen_point(c, dim, t[i], pts + dim * i);
+      if (tan) unit_tangent(c, dim, t[i], tan + dim * i);
+    }
   return ARCLEN_OK;
 }
