@@ -46,6 +46,7 @@ build = {
         "src/lua/fit.c",
         "src/lua/henkel.c",
         "src/lua/module.c",
+        "src/lua/times.c",
         "src/metapost/metapost.c",
         "src/methods/methods.c",
         "src/roots/roots.c",

@@ -77,6 +77,10 @@ const arclen_method *arclen_method_list(void);   /* ends with name NULL */
 int arclen_check_curve(const double *c, int dim);        /* 0 or EINVAL */
 void arclen_point(const double *c, int dim, double t, double *p);
 void arclen_derivative(const double *c, int dim, double t, double *d);
+/* The unit tangent at t (dim numbers into v): z'(t) normalised; where z'
+** vanishes the limit direction (z'', negated at t = 1, then z'''); a
+** curve that is a point gets zeros. */
+void arclen_unit_tangent(const double *c, int dim, double t, double *v);
 void arclen_split(const double *c, int dim, double t, double *left,
                   double *right);
 void arclen_subcurve(const double *c, int dim, double t0, double t1,

@@ -314,36 +314,6 @@ int arclen_time_gauss(const double *c, int dim, double s,
   return ARCLEN_OK;
 }
 
-/* The unit tangent at t: z'(t) normalised; where z' vanishes (a cusp, or
-** a control point on its end point) the limit from the next derivatives,
-** z'' (its negative at t = 1, approached from the left), then z'''; a
-** point has none (zeros).  As lua/arclen/path.lua's direction(), to the
-** bit. */
-static void unit_tangent(const double *c, int dim, double t, double *v) {
-  double len = 0;
-  int i;
-  arclen_derivative(c, dim, t, v);
-  for (i = 0; i < dim; i++) len += v[i] * v[i];
-  len = sqrt(len);
-  if (len == 0) {
-    double u = 1 - t;
-    for (i = 0; i < dim; i++) {
-      double p0 = c[i], p1 = c[dim + i], p2 = c[2 * dim + i], p3 = c[3 * dim + i];
-      v[i] = u * (p2 - 2 * p1 + p0) + t * (p3 - 2 * p2 + p1);
-      if (t == 1) v[i] = -v[i];
-    }
-    for (i = 0, len = 0; i < dim; i++) len += v[i] * v[i];
-    len = sqrt(len);
-  }
-  if (len == 0) {
-    for (i = 0; i < dim; i++)
-      v[i] = c[3 * dim + i] - 3 * c[2 * dim + i] + 3 * c[dim + i] - c[i];
-    for (i = 0, len = 0; i < dim; i++) len += v[i] * v[i];
-    len = sqrt(len);
-  }
-  for (i = 0; i < dim; i++) v[i] = len == 0 ? 0 : v[i] / len;
-}
-
 /* The pieces of the integral in increasing t: the first pieces with their
 ** orders straight from the branch points when those are to be had (as
 ** time_first_pieces), else the integrator's stack (as arclen_time_gauss). */
@@ -477,7 +447,7 @@ int arclen_times(const double *c, int dim, const double *s, long n,
   if (pts || tan)
     for (i = 0; i < n; i++) {
       if (pts) arclen_point(c, dim, t[i], pts + dim * i);
-      if (tan) unit_tangent(c, dim, t[i], tan + dim * i);
+      if (tan) arclen_unit_tangent(c, dim, t[i], tan + dim * i);
     }
   return ARCLEN_OK;
 }
