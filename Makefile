@@ -135,8 +135,9 @@ accuracy: $(MODULE)
 #   make bench-peers              arclen vs GSL, kurbo, bezier-js, paper.js,
 #                                 MetaPost on the same curves, one run
 #   make bench-scale              10^6 curves through the Lua API
+#   make bench-paths              points along paths, with node/kurbo peers
 FUZZ_SECONDS ?= 15
-.PHONY: fuzz sanitize valgrind bench-peers bench-scale
+.PHONY: fuzz sanitize valgrind bench-peers bench-scale bench-paths
 
 fuzz:
 	FUZZ_SECONDS=$(FUZZ_SECONDS) sh tools/fuzz.sh
@@ -149,6 +150,13 @@ valgrind:
 
 bench-peers: $(BUILD)/libarclen.a
 	sh bench/peers/run.sh
+
+# Points along paths: resample, points, dash on 10 .. 10^4 segments, k = 10
+# .. 10^5, per point as ratios to one length call, with the node and kurbo
+# peers (bench/peers/paths/) and their errors.
+bench-paths: $(MODULE)
+	@mkdir -p $(BUILD)/peers/paths
+	PEERS_OUT=$(BUILD)/peers/paths LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_paths.lua
 
 bench-scale: $(MODULE)
 	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_scale.lua
