@@ -109,11 +109,12 @@ int arclen_time_gauss(const double *c, int dim, double s,
 ** start of the cubic, each within rtol times the length as
 ** arclen_time_gauss's, in one pass: the curve's set-up and the pieces'
 ** rules serve every distance, and a distance's search starts where the
-** previous one's ended.  s <= 0 gives 0, s >= the length 1.  pts and tan
-** (dim n numbers each, may be NULL) get the points and unit tangents (at a
-** zero derivative the limit direction; a point has zeros).  Returns
-** ARCLEN_EDOMAIN for n < 0 or s not ascending, ARCLEN_EINVAL for a NaN
-** distance (t then all NaN), or the curve's and tolerance's codes. */
+** previous one's ended; the t are ascending.  s <= 0 gives 0, s >= the
+** length 1.  pts and tan (dim n numbers each, may be NULL) get the points
+** and unit tangents (at a zero derivative the limit direction; a point
+** has zeros).  Returns ARCLEN_EDOMAIN for n < 0 or s not ascending,
+** ARCLEN_EINVAL for a NaN distance (t then all NaN), or the curve's and
+** tolerance's codes. */
 int arclen_times(const double *c, int dim, const double *s, long n,
                  double rtol, double *t, double *pts, double *tan);
 /* A fixed n-point Gauss-Legendre rule on [0,1] (n = 24: the speed floor). */

@@ -110,7 +110,7 @@ int arclen_integ_start(integrator *in, const double *c, int dim, double t0,
   /* h, br and cc are filled below; the stack is filled by push() before
   ** pop reads it */
   in->lest = in->logk = in->lgoal = in->err = 0;
-  in->nmin = in->top = in->depth = in->want_err = 0;
+  in->nmin = in->top = in->depth = in->want_err = in->prepared = 0;
   in->evals = in->pieces = in->splits = 0;
   in->unit = 1;
   if (t0 == 0 && t1 == 1) {
@@ -148,6 +148,8 @@ int arclen_integ_start(integrator *in, const double *c, int dim, double t0,
 ** arclen_integ_start() by the curves whose first pieces arclen_cut_orders does not
 ** serve, and by time. */
 void arclen_integ_prepare_bounds(integrator *in) {
+  if (in->prepared) return;
+  in->prepared = 1;
   arclen_cut_prepare(&in->br, &in->cc);
   if (!in->cc.ok)
     in->logk = arclen_rough_log2((32.0 / 15.0) * in->width / in->rtol) -

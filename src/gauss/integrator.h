@@ -129,6 +129,7 @@ typedef struct integrator {
   int depth;
   double err;                 /* sum of accepted pieces' bounds */
   int want_err;               /* info requested: sum the bounds */
+  int prepared;               /* cc and logk taken (prepare_bounds) */
   span stack[MAXSTACK];       /* last: start() leaves it uninitialised */
 } integrator;
 

@@ -134,6 +134,7 @@ static double sub_integral(integrator *in, double x, double y, double target,
                  eb->logc) / eb->log_rho2;
     n = nn <= 2 ? 2 : nn < ARCLEN_GAUSS_MAX ? (int)ceil(nn) : 0;
   }
+  if (!n) arclen_integ_prepare_bounds(in);   /* taken when first needed */
   if (!n && in->cc.ok) {
     arclen_cut_piece cp;
     double lg = arclen_rough_log2(target) - arclen_rough_log2(h) - in->lkl - 2 * ARCLEN_LOG2_ERR;
@@ -259,7 +260,6 @@ static int time_first_pieces(integrator *in, double goal, double *t) {
   double c[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES], cum = 0;
   int n[ARCLEN_CUT_PIECES], i;
   if (!arclen_integ_first_orders(in, c, hh, n)) return 0;
-  arclen_integ_prepare_bounds(in);                   /* for sub_integral's cut bounds */
   for (i = 0; i <= in->nmin; i++) {
     const arclen_gauss_rule *r = arclen_rule_at_least(n[i]);
     double piece = arclen_apply_rule(&in->h, r, c[i], hh[i]);
@@ -397,8 +397,10 @@ int arclen_times(const double *c, int dim, const double *s, long n,
                                   TIME_FOOTCUT)) {
     w.fast = arclen_integ_first_orders(&in, w.c, w.hh, w.n);
     w.k = 0;
-    arclen_integ_prepare_bounds(&in);       /* for sub_integral's cut bounds */
-    if (!w.fast) arclen_integ_push_initial(&in);
+    if (!w.fast) {
+      arclen_integ_prepare_bounds(&in);
+      arclen_integ_push_initial(&in);
+    }
     tol = in.rtol * in.lest;
     while (i < n) {
       double pa, pb, plen;
@@ -444,6 +446,10 @@ int arclen_times(const double *c, int dim, const double *s, long n,
       cum += plen;
     }
   }
+  /* ascending, as the distances: each t within tol L of its truth, so a t
+  ** below the one before it may take that one's place and stay within */
+  for (i = 1; i < n; i++)
+    if (t[i] < t[i - 1]) t[i] = t[i - 1];
   if (pts || tan)
     for (i = 0; i < n; i++) {
       if (pts) arclen_point(c, dim, t[i], pts + dim * i);
