@@ -158,5 +158,6 @@ bench-paths: $(MODULE)
 	@mkdir -p $(BUILD)/peers/paths
 	PEERS_OUT=$(BUILD)/peers/paths LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_paths.lua
 
-bench-scale: $(MODULE)
-	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_scale.lua
+bench-scale: $(MODULE) $(BUILD)/libarclen.a
+	$(MAKE) -s -C bench bin/bench_scale_c
+	C_LOOP=bench/bin/bench_scale_c LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_scale.lua
