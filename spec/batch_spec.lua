@@ -3,6 +3,12 @@
 -- the coordinate.
 local arclen = require("arclen")
 
+-- The same double: == but for NaN and the sign of zero (5.1 has no %a).
+local function same(a, b)
+  if a ~= a then return b ~= b end
+  return a == b and (a ~= 0 or 1 / a == 1 / b)
+end
+
 local function rng(seed)
   local x = seed
   return function()
@@ -23,8 +29,8 @@ describe("arclen.lengths", function()
         for i = 1, n do
           local c = {}
           for q = 1, 4 * dim do c[q] = flat[4 * dim * (i - 1) + q] end
-          assert.are.equal(string.format("%a", arclen.length(c, {tol = tol})),
-                           string.format("%a", out[i]), "curve " .. i)
+          local one = arclen.length(c, {tol = tol})
+          assert.is_true(same(one, out[i]), ("curve %d: %.17g, batch %.17g"):format(i, one, out[i]))
         end
       end
     end)
@@ -35,7 +41,7 @@ describe("arclen.lengths", function()
     flat[8 * 280 + 3] = "x"
     local ok, msg = pcall(arclen.lengths, flat)
     assert.is_false(ok)
-    assert.matches("bad argument #1 to '[%w.]*lengths' %(coordinate 2243 must be a number, got string%)", msg)
+    assert.matches("bad argument #1 to '[^']*' %(coordinate 2243 must be a number, got string%)", msg)
     flat[8 * 280 + 3] = 0 / 0
     ok, msg = pcall(arclen.lengths, flat)
     assert.matches("coordinate 2243 must be finite", msg)

@@ -31,7 +31,11 @@ local function curves(n, dim, seed)
   return out, r
 end
 
-local function bits(x) return string.format("%a", x) end
+-- The same double: == but for NaN and the sign of zero (5.1 has no %a).
+local function same(a, b)
+  if a ~= a then return b ~= b end
+  return a == b and (a ~= 0 or 1 / a == 1 / b)
+end
 
 local function same_lengths(dim, tol, ranged)
   local cs, r = curves(400, dim, ranged and 977 or 4711)
@@ -43,7 +47,7 @@ local function same_lengths(dim, tol, ranged)
     end
     local plain = arclen.length(c, o1)
     local general = arclen.length(c, o2)
-    assert.are.equal(bits(general), bits(plain), "curve " .. i)
+    assert.is_true(same(general, plain), ("curve %d: %.17g plain, %.17g general"):format(i, plain, general))
   end
 end
 
@@ -53,7 +57,8 @@ local function same_times(dim, tol)
     local s = arclen.length(c, {tol = tol}) * (1.1 * r() - 0.05)
     local plain = arclen.time(c, s, {tol = tol})
     local general = arclen.time(c, s, {tol = tol, info = true})
-    assert.are.equal(bits(general), bits(plain), "curve " .. i .. ", s " .. bits(s))
+    assert.is_true(same(general, plain),
+      ("curve %d, s %.17g: %.17g plain, %.17g general"):format(i, s, plain, general))
   end
 end
 

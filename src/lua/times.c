@@ -73,6 +73,8 @@ static int l_times(lua_State *L) {
       lua_pop(L, 1);
     }
   }
+  if (lua_rawlen(L, 2) > 0x7fffffff / 3)
+    return luaL_argerror(L, 2, "too many distances");
   n = (long)lua_rawlen(L, 2);
   lua_settop(L, 3);
   lua_createtable(L, (int)n, 0);                          /* 4: ts */
