@@ -101,7 +101,7 @@ if command -v luarocks >/dev/null; then
     find src -name "*.o" -delete
     echo "== specs under lua5.4 (the luarocks-installed module)"
     lua5.4 /usr/bin/busted --cpath="build/rocktree/lib/lua/5.4/?.so" \
-      --lpath="build/rocktree/share/lua/5.4/?.lua;spec/?.lua" \
+      --lpath="build/rocktree/share/lua/5.4/?.lua;build/rocktree/share/lua/5.4/?/init.lua;spec/?.lua" \
       -o spec/summary_output.lua spec 2>&1 | tee "$OUT"
     count "busted on the luarocks install"
   else
