@@ -326,16 +326,34 @@ end
 -- Visit the runs of ds[i0..i1] (ascending, in [0, L]) that fall in one
 -- segment, in order: visit(k, i, j) for the run ds[i..j] in segment k --
 -- the segment that locate() gives each of them (at_end: a distance at a
--- joint belongs to the segment that ends there).  O(n + k) in all.
+-- joint belongs to the segment that ends there).  O(n + k) in all, and
+-- O(k log n) for few distances.
+-- Whether distance s lies beyond segment m (at_end: strictly beyond).
+local function ends_before(cum, m, s, at_end)
+  if at_end then return cum[m] < s end
+  return cum[m] <= s
+end
+
 local function walk(self, ds, i0, i1, at_end, visit)
   local cum, n = self.cum, self.n
   local k, i = 1, i0
   while i <= i1 do
     local s = ds[i]
-    if at_end then
-      while k < n and cum[k] < s do k = k + 1 end
-    else
-      while k < n and cum[k] <= s do k = k + 1 end
+    if k < n and ends_before(cum, k, s, at_end) then
+      -- gallop, then bisect: O(log gap) a run, so few distances on many
+      -- segments cost O(k log n), many cost O(n + k)
+      local lo, step = k, 1       -- before(lo) holds
+      local hi = lo + step
+      while hi < n and ends_before(cum, hi, s, at_end) do
+        lo, step = hi, 2 * step
+        hi = lo + step
+      end
+      if hi > n then hi = n end   -- the answer lies in (lo, hi]
+      while hi - lo > 1 do
+        local mid = floor((lo + hi) / 2)
+        if ends_before(cum, mid, s, at_end) then lo = mid else hi = mid end
+      end
+      k = hi
     end
     local j = i
     if k == n then
