@@ -98,7 +98,7 @@ for _, n in ipairs(NS) do
   end
 end
 
--- Growth: resample's time per point against the smallest n and k.
+-- Growth: resample's time per point against n = 10 at the largest k.
 print()
 print("resample, time per point relative to n = " .. NS[1] .. ", k = " .. KS[#KS] ..
   " (rows: n; columns: k = " .. table.concat(KS, ", ") .. "):")
@@ -108,7 +108,6 @@ for _, n in ipairs(NS) do
   print(("  n = %5d: %s"):format(n, table.concat(row, "  ")))
 end
 print("  (constant = linear in n + k; small k pays each segment's set-up and the walk, ~n/k)")
-  "; flat rows = linear in k, a column growing ~ n/k where set-up dominates)")
 
 -- Accuracy: resample at tol 1e-12 against the tol-1e-15 answer.
 print()
