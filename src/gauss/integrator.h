@@ -36,10 +36,7 @@
 #if defined(__GNUC__)
 #define HOT_INLINE __attribute__((always_inline)) inline
 #else
-#define HOT_INLINE inline/* length.c: the plain API's length over [t0, t1] (NaN on bad input). */
-double arclen_integ_length_of(const double *c, int dim, double t0, double t1,
-                              double rtol);
-
+#define HOT_INLINE inline
 #endif
 
 /* The range is cut at the foot of a branch point nearer to it than
@@ -222,8 +219,5 @@ int arclen_integ_check_args(const double *c, int dim, double rtol, double t0,
 double arclen_integ_curve_units(const integrator *in, double x);
 /* The counts into info (when not NULL), err scaled by 2^exp. */
 void arclen_integ_fill_info(arclen_info *info, const integrator *in, int exp);
-/* length.c: the plain API's length over [t0, t1] (NaN on bad input). */
-double arclen_integ_length_of(const double *c, int dim, double t0, double t1,
-                              double rtol);
 
 #endif

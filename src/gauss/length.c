@@ -1,6 +1,7 @@
 /*
 ** length.c -- the default method's length ("gauss"): the integrator over
-** [t0, t1] (integrator.h), and a fast path for the commonest call.
+** [t0, t1] (integrator.h), a fast path for the commonest call, and the
+** plain API's lengths (arclen_length and its forms) beside it.
 */
 #include "gauss/integrator.h"
 
@@ -76,9 +77,10 @@ int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
   return ARCLEN_OK;
 }
 
-/* The plain API's length: NaN on bad input. */
-double arclen_integ_length_of(const double *c, int dim, double t0, double t1,
-                              double rtol) {
+/* The plain API's length: NaN on bad input.  Here, beside the fast path
+** it takes, so that the commonest call is one call. */
+static double length_of(const double *c, int dim, double t0, double t1,
+                        double rtol) {
   double len;
   if (try_fast(c, dim, t0, t1, rtol, &len)) return len;
   if (arclen_integ_check_args(c, dim, rtol, t0, t1)) return NAN;
@@ -90,4 +92,19 @@ double arclen_length_gl(const double *c, int dim, int n) {
   arclen_hodo_scaled(c, dim, &h);
   if (h.zero) return 0;
   return arclen_times_pow2(arclen_apply_rule(&h, arclen_rule_at_least(n), 0.5, 0.5), h.exp);
+}
+
+double arclen_length(const double c[8], double rtol) {
+  return length_of(c, 2, 0, 1, rtol);
+}
+double arclen_length_range(const double c[8], double t0, double t1,
+                           double rtol) {
+  return length_of(c, 2, t0, t1, rtol);
+}
+double arclen_length3(const double c[12], double rtol) {
+  return length_of(c, 3, 0, 1, rtol);
+}
+double arclen_length3_range(const double c[12], double t0, double t1,
+                            double rtol) {
+  return length_of(c, 3, t0, t1, rtol);
 }
