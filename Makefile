@@ -133,8 +133,9 @@ accuracy: $(MODULE)
 #   make bench-scale              10^6 curves through the Lua API
 #   make bench-svg                whole SVG documents: arclen.svg vs
 #                                 svgelements, svg-path-properties, paper.js
+#   make bench-paths              points along paths, with node/kurbo peers
 FUZZ_SECONDS ?= 15
-.PHONY: fuzz sanitize valgrind bench-peers bench-scale bench-svg
+.PHONY: fuzz sanitize valgrind bench-peers bench-scale bench-svg bench-paths
 
 fuzz:
 	FUZZ_SECONDS=$(FUZZ_SECONDS) sh tools/fuzz.sh
@@ -151,8 +152,16 @@ bench-peers: $(BUILD)/libarclen.a
 bench-svg:
 	sh bench/bench_svg.sh
 
-bench-scale: $(MODULE)
-	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_scale.lua
+# Points along paths: resample, points, dash on 10 .. 10^4 segments, k = 10
+# .. 10^5, per point as ratios to one length call, with the node and kurbo
+# peers (bench/peers/paths/) and their errors.
+bench-paths: $(MODULE)
+	@mkdir -p $(BUILD)/peers/paths
+	PEERS_OUT=$(BUILD)/peers/paths LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_paths.lua
+
+bench-scale: $(MODULE) $(BUILD)/libarclen.a
+	$(MAKE) -s -C bench bin/bench_scale_c
+	C_LOOP=bench/bin/bench_scale_c LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_scale.lua
 
 # ---- LuaTeX and MetaPost documents -------------------------------------
 #   make luatex   the example documents in real LuaLaTeX and LuaTeX runs
@@ -162,4 +171,3 @@ bench-scale: $(MODULE)
 luatex:
 	$(MAKE) LUA=5.3
 	sh tools/check-luatex.sh
-

@@ -3,7 +3,7 @@
 -- arclen.length call per curve (8 numbers as arguments, the fastest
 -- per-call form) and per curve with a table (the common form).  Reports
 -- curves per second, the ratio batch / per-call, and peak memory (VmHWM).
---   make bench-scale            (N=1000000 by default)
+--   make bench-scale            (N=1000000 by default; with the C loop)
 --   N=100000 lua5.4 bench/bench_scale.lua
 local arclen = require("arclen")
 
@@ -60,10 +60,24 @@ local t_tab = clock() - t0
 per = nil
 collectgarbage()
 
--- batch
-t0 = clock()
-local batch = arclen.lengths(coords, opts)
-local t_batch = clock() - t0
+-- batch, in turn with the C loop over the same curves (bench_scale_c.c,
+-- when C_LOOP names it): three rounds, the least of each
+local C_LOOP = os.getenv("C_LOOP")
+local batch, t_batch, c_ns, ratios = nil, math.huge, {}, {}
+for round = 1, 3 do
+  if C_LOOP then
+    local f = io.popen(C_LOOP .. " " .. N)
+    local out = f and f:read("*a") or ""
+    if f then f:close() end
+    c_ns[round] = tonumber(out:match("(%d+) ns/curve"))
+  end
+  collectgarbage()
+  t0 = clock()
+  batch = arclen.lengths(coords, opts)
+  local t = clock() - t0
+  if t < t_batch then t_batch = t end
+  if c_ns[round] then ratios[round] = t / N * 1e9 / c_ns[round] end
+end
 
 -- the results agree exactly (same method, same options)
 local sum, worst = 0, 0
@@ -85,6 +99,14 @@ row("arclen.length, 8 numbers per call", t_call)
 row("arclen.length, a table per call", t_tab)
 row("arclen.lengths (batch, one flat array)", t_batch)
 print(("batch / per-call time: %.3f (8 numbers), %.3f (table)"):format(t_batch / t_call, t_batch / t_tab))
+if #ratios > 0 then
+  table.sort(ratios)
+  local lo, hi = math.huge, 0
+  for _, v in ipairs(c_ns) do lo, hi = math.min(lo, v), math.max(hi, v) end
+  print(("C loop (arclen_length over the same array, CPU time): %.0f-%.0f ns/curve; " ..
+    "arclen.lengths / C loop, in turn: %s"):format(lo, hi,
+    table.concat((function() local t = {} for i, r in ipairs(ratios) do t[i] = ("%.2f"):format(r) end return t end)(), ", ")))
+end
 print(("batch equals per-call: max |difference| %g on 100 samples; sum of lengths %.10g (tables: %.10g)")
   :format(worst, sum, sum_tab))
 if hwm then

@@ -12,7 +12,11 @@
 **     tolerances; on a sub-range, L(t0, t1) + L(t1, 1) = L(t0, 1);
 **   - "gauss"'s info.err certifies it: at rtol and at 1e-15 the two
 **     lengths differ by at most the sum of their info.err plus 64 eps of
-**     rounding each (the reserve its tolerance keeps).
+**     rounding each (the reserve its tolerance keeps);
+**   - "gauss"'s fast path (no report asked: length_fast, or the first
+**     pieces' orders from arclen_cut_orders) gives the general path's
+**     length (info asked: the cut records) to the bit, and so does the
+**     plain API.
 ** The baselines run with at most 2000 steps (their 10^6 default is a
 ** reference row, not a fuzz target).
 */
@@ -152,6 +156,25 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
               rtol, t0, t1, i1.err, i2.err);
       fz_fail("gauss info.err", c, dim, "%.17g at rtol, %.17g at 1e-15", l1, l2);
     }
+  }
+
+  /* The fast and the general path of the default method: one result. */
+  {
+    arclen_opts o;
+    arclen_info info;
+    double lf, lg;
+    arclen_opts_init(&o);
+    o.rtol = rtol > 1e-15 ? rtol : 1e-15;
+    o.t0 = t0;
+    o.t1 = t1;
+    if (arclen_length_gauss(c, dim, &o, &lf, NULL) != ARCLEN_OK) abort();
+    if (arclen_length_gauss(c, dim, &o, &lg, &info) != ARCLEN_OK) abort();
+    if (memcmp(&lf, &lg, sizeof lf))
+      fz_fail("gauss fast path", c, dim, "%a without info, %a with", lf, lg);
+    lg = dim == 2 ? arclen_length_range(c, t0, t1, o.rtol)
+                  : arclen_length3_range(c, t0, t1, o.rtol);
+    if (memcmp(&lf, &lg, sizeof lf))
+      fz_fail("gauss plain API", c, dim, "%a by the method, %a plain", lf, lg);
   }
 
   /* Additivity of the default method on a sub-range. */

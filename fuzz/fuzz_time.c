@@ -4,6 +4,9 @@
 ** for "gauss", |s(t) - s| <= rtol L (s(t) measured by gauss at 1e-14 plus
 ** the rounding allowance); for "metapost", t is finite in [0, 1] and its
 ** arclength reproduces the goal within MetaPost's absolute tolerance.
+** "gauss" gives the same t to the bit with and without the report (the
+** first pieces' orders from the branch points, or the cut records), and
+** through the plain API.
 */
 #include "arclen.h"
 #include "fuzz_input.h"
@@ -38,7 +41,13 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     if (!(t >= 0 && t <= 1)) fz_fail(m->name, c, dim, "time %g for s %g", t, s);
     if (s <= 0 && t != 0) fz_fail(m->name, c, dim, "time %g for s %g <= 0", t, s);
     if (!strcmp(m->name, "gauss")) {
-      double st;
+      double st, tg;
+      arclen_info info;
+      if (m->time(c, dim, s, &o, &tg, &info) != ARCLEN_OK || memcmp(&t, &tg, sizeof t))
+        fz_fail("gauss time with info", c, dim, "%a without info, %a with", t, tg);
+      tg = dim == 2 ? arclen_time(c, s, rtol) : arclen_time3(c, s, rtol);
+      if (rtol >= ARCLEN_RTOL_MIN && memcmp(&t, &tg, sizeof t))
+        fz_fail("gauss plain time", c, dim, "%a by the method, %a plain", t, tg);
       if (s >= L && t != 1 && s > L * (1 + rtol))
         fz_fail(m->name, c, dim, "time %g for s %g >= L", t, s);
       if (s > 0 && s < L) {

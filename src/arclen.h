@@ -77,6 +77,10 @@ const arclen_method *arclen_method_list(void);   /* ends with name NULL */
 int arclen_check_curve(const double *c, int dim);        /* 0 or EINVAL */
 void arclen_point(const double *c, int dim, double t, double *p);
 void arclen_derivative(const double *c, int dim, double t, double *d);
+/* The unit tangent at t (dim numbers into v): z'(t) normalised; where z'
+** vanishes the limit direction (z'', negated at t = 1, then z'''); a
+** curve that is a point gets zeros. */
+void arclen_unit_tangent(const double *c, int dim, double t, double *v);
 void arclen_split(const double *c, int dim, double t, double *left,
                   double *right);
 void arclen_subcurve(const double *c, int dim, double t0, double t1,
@@ -101,6 +105,18 @@ int arclen_length_gauss(const double *c, int dim, const arclen_opts *o,
                         double *len, arclen_info *info);
 int arclen_time_gauss(const double *c, int dim, double s,
                       const arclen_opts *o, double *t, arclen_info *info);
+/* The parameters t[i] at the lengths s[i] (i < n, ascending) from the
+** start of the cubic, each within rtol times the length as
+** arclen_time_gauss's, in one pass: the curve's set-up and the pieces'
+** rules serve every distance, and a distance's search starts where the
+** previous one's ended; the t are ascending.  s <= 0 gives 0, s >= the
+** length 1.  pts and tan (dim n numbers each, may be NULL) get the points
+** and unit tangents (at a zero derivative the limit direction; a point
+** has zeros).  Returns ARCLEN_EDOMAIN for n < 0 or s not ascending,
+** ARCLEN_EINVAL for a NaN distance (t then all NaN), or the curve's and
+** tolerance's codes. */
+int arclen_times(const double *c, int dim, const double *s, long n,
+                 double rtol, double *t, double *pts, double *tan);
 /* A fixed n-point Gauss-Legendre rule on [0,1] (n = 24: the speed floor). */
 double arclen_length_gl(const double *c, int dim, int n);
 

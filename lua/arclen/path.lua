@@ -297,18 +297,98 @@ local function locate(self, s, at_end)
   local cum = self.cum
   if s >= cum[n] then return n, 1 end
   local lo, hi = 1, n            -- smallest k with cum[k] > s (>= s at_end)
-  while lo < hi do
-    local mid = floor((lo + hi) / 2)
-    if cum[mid] > s or (at_end and cum[mid] >= s) then
-      hi = mid
-    else
-      lo = mid + 1
+  local k = self.cursor          -- the last query's segment: sorted queries
+  if k and (at_end and cum[k - 1] < s and cum[k] >= s
+            or not at_end and cum[k - 1] <= s and cum[k] > s) then
+    lo = k
+  else
+    while lo < hi do
+      local mid = floor((lo + hi) / 2)
+      if cum[mid] > s or (at_end and cum[mid] >= s) then
+        hi = mid
+      else
+        lo = mid + 1
+      end
     end
+    self.cursor = lo
   end
   local goal = s - cum[lo - 1]
   if goal <= 0 then return lo, 0 end
   if goal >= cum[lo] - cum[lo - 1] then return lo, 1 end
   return lo, arclen.time(self.segs[lo], goal, {tol = self.tol, method = self.method})
+end
+
+-- ---- many distances in one walk -------------------------------------------
+
+local segment_times, segment_samples = arclen._segment_times, arclen._segment_samples
+
+-- Whether distances go through the one-pass walk (arclen.times per
+-- segment): the default method's paths; others take one time per distance.
+local function walks(self)
+  return self.method == "gauss" and self.n > 0
+end
+
+-- Visit the runs of ds[i0..i1] (ascending, in [0, L]) that fall in one
+-- segment, in order: visit(k, i, j) for the run ds[i..j] in segment k --
+-- the segment that locate() gives each of them (at_end: a distance at a
+-- joint belongs to the segment that ends there).  O(n + k) in all, and
+-- O(k log n) for few distances.
+-- Whether distance s lies beyond segment m (at_end: strictly beyond).
+local function ends_before(cum, m, s, at_end)
+  if at_end then return cum[m] < s end
+  return cum[m] <= s
+end
+
+local function walk(self, ds, i0, i1, at_end, visit)
+  local cum, n = self.cum, self.n
+  local k, i = 1, i0
+  while i <= i1 do
+    local s = ds[i]
+    if k < n and ends_before(cum, k, s, at_end) then
+      -- gallop, then bisect: O(log gap) a run, so few distances on many
+      -- segments cost O(k log n), many cost O(n + k)
+      local lo, step = k, 1       -- before(lo) holds
+      local hi = lo + step
+      while hi < n and ends_before(cum, hi, s, at_end) do
+        lo, step = hi, 2 * step
+        hi = lo + step
+      end
+      if hi > n then hi = n end   -- the answer lies in (lo, hi]
+      while hi - lo > 1 do
+        local mid = floor((lo + hi) / 2)
+        if ends_before(cum, mid, s, at_end) then lo = mid else hi = mid end
+      end
+      k = hi
+    end
+    local j = i
+    if k == n then
+      j = i1
+    elseif at_end then
+      local e = cum[k]
+      while j < i1 and ds[j + 1] <= e do j = j + 1 end
+    else
+      local e = cum[k]
+      while j < i1 and ds[j + 1] < e do j = j + 1 end
+    end
+    visit(k, i, j)
+    i = j + 1
+  end
+end
+
+-- The segments ks[] and times ts[] of the ascending distances ds (in
+-- [0, L]), as locate() gives them one by one.
+local function locate_many(self, ds, at_end)
+  local ks, ts = {}, {}
+  if not walks(self) then
+    for i = 1, #ds do ks[i], ts[i] = locate(self, ds[i], at_end) end
+    return ks, ts
+  end
+  local cum, segs, tol = self.cum, self.segs, self.tol
+  walk(self, ds, 1, #ds, at_end, function(k, i, j)
+    for q = i, j do ks[q] = k end
+    segment_times(segs[k], ds, i, j, cum[k - 1], cum[k] - cum[k - 1], tol, ts)
+  end)
+  return ks, ts
 end
 
 -- A distance into [0, L]: clamped on an open path, wrapped on a cyclic one.
@@ -440,19 +520,21 @@ local function from_pieces(self, pieces, x0, y0, z0)
   return p
 end
 
--- The segments between distances a <= b (in [0, L]) as a list with gap
--- marks, and the start point.
-local function pieces_between(self, a, b)
+-- The segments from (k0, t0) to (k1, t1) -- distances a <= b (in [0, L])
+-- located -- as a list with gap marks, and the start point.
+local function pieces_located(self, k0, t0, k1, t1)
   local out = {gap = {}}
-  local k0, t0 = locate(self, a)
-  local k1, t1 = locate(self, b, true)
   local d = self.dim
   if k1 < k0 or (k1 == k0 and t1 <= t0) then
     local x, y, z = arclen.point(self.segs[k0], t0)
     return out, x, y, z
   end
-  local isgap = {}
-  for j = 2, self.nsub do isgap[self.first[j]] = true end
+  local isgap = self.isgap
+  if not isgap then
+    isgap = {}
+    for j = 2, self.nsub do isgap[self.first[j]] = true end
+    self.isgap = isgap
+  end
   for k = k0, k1 do
     local c = self.segs[k]
     local ta, tb = k == k0 and t0 or 0, k == k1 and t1 or 1
@@ -468,6 +550,12 @@ local function pieces_between(self, a, b)
   end
   local c = out[1]
   return out, c[1], c[2], d == 3 and c[3] or nil
+end
+
+local function pieces_between(self, a, b)
+  local k0, t0 = locate(self, a)
+  local k1, t1 = locate(self, b, true)
+  return pieces_located(self, k0, t0, k1, t1)
 end
 
 -- p:sub(s0, s1) -> the part of the path from distance s0 to s1 (clamped to
@@ -553,8 +641,135 @@ function Path:resample(spec)
     end
     return out
   end
+  if walks(self) then
+    local cum, segs, tol = self.cum, self.segs, self.tol
+    walk(self, dists, 1, #dists, false, function(k, i, j)
+      segment_samples(segs[k], dists, i, j, cum[k - 1], cum[k] - cum[k - 1],
+                      tol, k, out)
+    end)
+    return out
+  end
   for i, s in ipairs(dists) do out[i] = sample(self, s) end
   return out
+end
+
+-- The distances of a query list as numbers reduced into [0, L] (clamped,
+-- or wrapped when cyclic), ascending; order[q] = the query's index of the
+-- q-th (nil when the list was ascending already).
+local function read_queries(self, ds, fname, L)
+  if type(ds) ~= "table" then
+    argerror(1, fname, "a list of distances expected, got " .. type(ds))
+  end
+  local r, ascending = {}, true
+  for i = 1, #ds do
+    local s = ds[i]
+    if type(s) ~= "number" then
+      argerror(1, fname, format("distance %d must be a number, got %s", i, type(s)))
+    end
+    if not isfinite(s) then argerror(1, fname, format("distance %d must be finite", i)) end
+    r[i] = (reduce(self, s, L))
+    if i > 1 and r[i] < r[i - 1] then ascending = false end
+  end
+  if ascending then return r, nil end
+  local order = {}
+  for i = 1, #r do order[i] = i end
+  table.sort(order, function(a, b) return r[a] < r[b] end)
+  local sorted = {}
+  for q = 1, #r do sorted[q] = r[order[q]] end
+  return sorted, order
+end
+
+-- The samples at the ascending distances ds: tables into out (pts == nil),
+-- or flat arrays pts, tans, times (tans, times: a table or false).
+local function fill_samples(self, ds, out, pts, tans, times)
+  local d = self.dim
+  if self.n == 0 then
+    for q = 1, #ds do
+      if pts then
+        for c = 1, d do
+          pts[d * (q - 1) + c] = c == 1 and self.x0 or c == 2 and self.y0 or self.z0
+          if tans then tans[d * (q - 1) + c] = 0 end
+        end
+        if times then times[q] = 0 end
+      else
+        out[q] = {x = self.x0, y = self.y0, z = self.z0, s = ds[q], time = 0,
+                  tx = 0, ty = 0, tz = d == 3 and 0 or nil}
+      end
+    end
+  elseif walks(self) then
+    local cum, segs, tol = self.cum, self.segs, self.tol
+    walk(self, ds, 1, #ds, false, function(k, i, j)
+      segment_samples(segs[k], ds, i, j, cum[k - 1], cum[k] - cum[k - 1], tol,
+                      k, pts or out, pts and (tans or false), pts and (times or false))
+    end)
+  else
+    for q = 1, #ds do
+      local smp = sample(self, ds[q])
+      if pts then
+        local p, v = {smp.x, smp.y, smp.z}, {smp.tx, smp.ty, smp.tz}
+        for c = 1, d do
+          pts[d * (q - 1) + c] = p[c]
+          if tans then tans[d * (q - 1) + c] = v[c] end
+        end
+        if times then times[q] = smp.time end
+      else
+        out[q] = smp
+      end
+    end
+  end
+end
+
+-- p:samples(distances) -> a list of samples {x =, y =, s =, time =, tx =,
+-- ty =} (as resample's) at the given distances (clamped, or wrapped when
+-- cyclic; any order, ascending is the fastest).
+function Path:samples(ds)
+  check_self(self, "samples")
+  local L = usable(self, "samples")
+  local r, order = read_queries(self, ds, "samples", L)
+  local out = {}
+  fill_samples(self, r, out)
+  if not order then return out end
+  local res = {}
+  for q = 1, #r do res[order[q]] = out[q] end
+  return res
+end
+
+-- p:points(distances [, opts]) -> pts [, tans [, times]]: flat arrays, the
+-- points (x1, y1, x2, y2, ... -- 3 numbers each in 3D) at the distances
+-- (clamped, or wrapped when cyclic; any order), with opts.tangents the
+-- unit tangents (flat too) and opts.times the path times; a result not
+-- asked for is nil.
+function Path:points(ds, opts)
+  check_self(self, "points")
+  local fname = "points"
+  local want_tans, want_times = false, false
+  if opts ~= nil then
+    if type(opts) ~= "table" then
+      argerror(2, fname, "options table expected, got " .. type(opts))
+    end
+    for key, v in pairs(opts) do
+      if key == "tangents" then want_tans = v and true or false
+      elseif key == "times" then want_times = v and true or false
+      else argerror(2, fname, format("unknown option '%s'", tostring(key))) end
+    end
+  end
+  local L = usable(self, fname)
+  local r, order = read_queries(self, ds, fname, L)
+  local pts, tans, times = {}, want_tans and {} or false, want_times and {} or false
+  fill_samples(self, r, nil, pts, tans, times)
+  if order then
+    local d, p2, v2, t2 = self.dim, {}, tans and {}, times and {}
+    for q = 1, #r do
+      local i = order[q]
+      for c = 1, d do
+        p2[d * (i - 1) + c] = pts[d * (q - 1) + c]
+        if v2 then v2[d * (i - 1) + c] = tans[d * (q - 1) + c] end
+      end
+      if t2 then t2[i] = times[q] end
+    end
+    pts, tans, times = p2, v2, t2
+  end
+  return pts, tans or nil, times or nil
 end
 
 -- The dash pattern {on, off, ...}: non-negative numbers, not all zero; an
@@ -594,6 +809,7 @@ function Path:dash(pattern, offset)
   local dashes = {}
   if self.n == 0 then return dashes end
   local mp = is_metapost(self)
+  local starts, ends = {}, {}        -- the dashes' ends, ascending
   for j = 1, self.nsub do
     local a, b = 0, L               -- the subpath's range of distances
     if not mp then a, b = self.cum[self.first[j] - 1], self.cum[self.first[j + 1] - 1] end
@@ -616,13 +832,18 @@ function Path:dash(pattern, offset)
       local e = rel + left
       if e > span then e = span end
       if i % 2 == 1 then
-        dashes[#dashes + 1] = from_pieces(self, pieces_between(self, a + rel, a + e))
+        starts[#starts + 1], ends[#ends + 1] = a + rel, a + e
       end
       rel = e
       if rel >= span then break end
       i = i % #pat + 1
       left = pat[i]
     end
+  end
+  local k0, t0 = locate_many(self, starts, false)
+  local k1, t1 = locate_many(self, ends, true)
+  for q = 1, #starts do
+    dashes[q] = from_pieces(self, pieces_located(self, k0[q], t0[q], k1[q], t1[q]))
   end
   return dashes
 end

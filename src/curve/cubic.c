@@ -41,6 +41,35 @@ void arclen_derivative(const double *c, int dim, double t, double *d) {
   }
 }
 
+/* The unit tangent at t: z'(t) normalised; where z' vanishes (a cusp, or
+** a control point on its end point) the limit from the next derivatives,
+** z'' (its negative at t = 1, approached from the left), then z'''; a
+** point has none (zeros). */
+void arclen_unit_tangent(const double *c, int dim, double t, double *v) {
+  double len = 0;
+  int i;
+  arclen_derivative(c, dim, t, v);
+  for (i = 0; i < dim; i++) len += v[i] * v[i];
+  len = sqrt(len);
+  if (len == 0) {
+    double u = 1 - t;
+    for (i = 0; i < dim; i++) {
+      double p0 = c[i], p1 = c[dim + i], p2 = c[2 * dim + i], p3 = c[3 * dim + i];
+      v[i] = u * (p2 - 2 * p1 + p0) + t * (p3 - 2 * p2 + p1);
+      if (t == 1) v[i] = -v[i];
+    }
+    for (i = 0, len = 0; i < dim; i++) len += v[i] * v[i];
+    len = sqrt(len);
+  }
+  if (len == 0) {
+    for (i = 0; i < dim; i++)
+      v[i] = c[3 * dim + i] - 3 * c[2 * dim + i] + 3 * c[dim + i] - c[i];
+    for (i = 0, len = 0; i < dim; i++) len += v[i] * v[i];
+    len = sqrt(len);
+  }
+  for (i = 0; i < dim; i++) v[i] = len == 0 ? 0 : v[i] / len;
+}
+
 /* The blossom (polar form) b(u1, u2, u3) by three de Casteljau steps with
 ** different parameters; b(t,t,t) is the point at t. */
 static void blossom(const double *c, int dim, double u1, double u2, double u3,

@@ -13,6 +13,16 @@
 
 #define CHUNK 256      /* curves per buffer: 24 KB of stack in 3D */
 
+/* lua_rawgeti returning the value's type, as it does from 5.3 on. */
+#if defined(LUA_VERSION_NUM) && LUA_VERSION_NUM >= 503
+#define rawgeti_type(L, t, k) lua_rawgeti(L, (t), (k))
+#else
+static int rawgeti_type(lua_State *L, int t, int k) {
+  lua_rawgeti(L, t, k);
+  return lua_type(L, -1);
+}
+#endif
+
 static int lengths(lua_State *L, int dim, const char *fname) {
   double buf[CHUNK * 12], out[CHUNK];
   arclenL_opts lo;
@@ -39,20 +49,30 @@ static int lengths(lua_State *L, int dim, const char *fname) {
   for (done = 0; done < n; done += CHUNK) {
     long m = n - done < CHUNK ? n - done : CHUNK;
     int rc;
-    for (i = 0; i < m * stride; i++) {
-      int k = (int)(done * stride + i + 1);
-      double v;
-      lua_rawgeti(L, 1, k);
-      if (lua_type(L, -1) != LUA_TNUMBER)
-        return luaL_argerror(L, 1, lua_pushfstring(L,
-            "coordinate %d must be a number, got %s", k,
-            luaL_typename(L, -1)));
-      v = lua_tonumber(L, -1);
-      lua_pop(L, 1);
-      if (!isfinite(v))
-        return luaL_argerror(L, 1, lua_pushfstring(L,
-            "coordinate %d must be finite", k));
-      buf[i] = v;
+    for (i = 0; i < m * stride; i += stride) {
+      int k0 = (int)(done * stride + i), j, bad = 0;
+      /* a curve's numbers pushed at once, read in place and popped at
+      ** once: half the API calls of one push, check and pop per number */
+      for (j = 0; j < stride; j++)
+        bad |= rawgeti_type(L, 1, k0 + j + 1) != LUA_TNUMBER;
+      for (j = 0; j < stride; j++) {
+        double v = lua_tonumber(L, j - stride);
+        bad |= !isfinite(v);
+        buf[i + j] = v;
+      }
+      if (bad) {                  /* which one, for the message */
+        for (j = 0; j < stride; j++) {
+          int idx = j - stride, k = k0 + j + 1;
+          if (lua_type(L, idx) != LUA_TNUMBER)
+            return luaL_argerror(L, 1, lua_pushfstring(L,
+                "coordinate %d must be a number, got %s", k,
+                luaL_typename(L, idx)));
+          if (!isfinite(buf[i + j]))
+            return luaL_argerror(L, 1, lua_pushfstring(L,
+                "coordinate %d must be finite", k));
+        }
+      }
+      lua_pop(L, stride);
     }
     rc = arclen_lengths(buf, m, dim, lo.method, &lo.o, out, &failed);
     if (rc == ARCLEN_EDIM)

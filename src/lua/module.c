@@ -394,6 +394,7 @@ int luaopen_arclen_core(lua_State *L) {
   arclen_open_elliptic(L);
   arclen_open_fit(L);
   arclen_open_batch(L);
+  arclen_open_times(L);
   /* new areas: one line each, above this line */
   return 1;
 }

@@ -1,0 +1,216 @@
+/*
+** times.c -- many distances on one cubic in one call (arclen_times):
+**   arclen.times(c, distances [, opts]) -> ts [, points [, tangents]]
+** and the path layer's walk (lua/arclen/path.lua), which hands each
+** segment the run of sorted distances that falls in it:
+**   arclen._segment_times(c, ds, i, j, shift, seglen, tol, ts)
+**   arclen._segment_samples(c, ds, i, j, shift, seglen, tol, k, out [, tans, times])
+** The distances are read in chunks into C buffers (one set-up per chunk),
+** so a long run pays neither a Lua call nor a table per distance.
+*/
+#include <math.h>
+#include <string.h>
+
+#include "lua/binding.h"
+
+#define CHUNK 256        /* distances per call of arclen_times */
+
+/* ds[i] as a number, not NaN (arg names the table). */
+static double distance_at(lua_State *L, int arg, int ds, long i) {
+  double v;
+  lua_rawgeti(L, ds, (int)i);
+  if (lua_type(L, -1) != LUA_TNUMBER)
+    return luaL_argerror(L, arg, lua_pushfstring(L,
+        "distance %d must be a number, got %s", (int)i,
+        luaL_typename(L, -1))), 0;
+  v = lua_tonumber(L, -1);
+  lua_pop(L, 1);
+  if (isnan(v))
+    luaL_argerror(L, arg, lua_pushfstring(L, "distance %d is NaN", (int)i));
+  return v;
+}
+
+/* Reads ds[i .. i + m - 1] less shift into s, checking the order (the
+** previous distance is *prev); raises on bad input. */
+static void read_chunk(lua_State *L, int arg, int ds, long i, long m,
+                       double shift, double *prev, double *s) {
+  long q;
+  for (q = 0; q < m; q++) {
+    double v = distance_at(L, arg, ds, i + q);
+    if (v < *prev)
+      luaL_argerror(L, arg, "distances must be sorted (ascending)");
+    *prev = v;
+    s[q] = v - shift;
+  }
+}
+
+static void set_number(lua_State *L, int t, long i, double v) {
+  lua_pushnumber(L, v);
+  lua_rawseti(L, t, (int)i);
+}
+
+/* arclen.times(c, distances [, opts]): opts tol, points, tangents. */
+static int l_times(lua_State *L) {
+  double c[12], s[CHUNK], t[CHUNK], p[3 * CHUNK], v[3 * CHUNK];
+  double rtol = 1e-12, prev = -HUGE_VAL;
+  int dim = arclenL_checkcurve(L, 1, c), want_p = 0, want_v = 0, k, out;
+  long n, i, q;
+  const char *key;
+  luaL_checktype(L, 2, LUA_TTABLE);
+  if (arclenL_optbegin(L, 3)) {
+    while ((key = arclenL_optnext(L, 3)) != NULL) {
+      if (strcmp(key, "tol") == 0) {
+        if (lua_type(L, -1) != LUA_TNUMBER)
+          luaL_argerror(L, 3, "tol must be a number");
+        rtol = arclenL_checktol(L, 3, lua_tonumber(L, -1));
+      } else if (strcmp(key, "points") == 0) {
+        want_p = lua_toboolean(L, -1);
+      } else if (strcmp(key, "tangents") == 0) {
+        want_v = lua_toboolean(L, -1);
+      } else {
+        luaL_argerror(L, 3, lua_pushfstring(L, "unknown option '%s'", key));
+      }
+      lua_pop(L, 1);
+    }
+  }
+  if (lua_rawlen(L, 2) > 0x7fffffff / 3)
+    return luaL_argerror(L, 2, "too many distances");
+  n = (long)lua_rawlen(L, 2);
+  lua_settop(L, 3);
+  lua_createtable(L, (int)n, 0);                          /* 4: ts */
+  if (want_p) lua_createtable(L, (int)(dim * n), 0);      /* points */
+  else lua_pushnil(L);
+  if (want_v) lua_createtable(L, (int)(dim * n), 0);      /* tangents */
+  else lua_pushnil(L);
+  for (i = 1; i <= n; i += CHUNK) {
+    long m = n - i + 1 < CHUNK ? n - i + 1 : CHUNK;
+    int rc;
+    read_chunk(L, 2, 2, i, m, 0, &prev, s);
+    rc = arclen_times(c, dim, s, m, rtol, t, want_p ? p : NULL,
+                      want_v ? v : NULL);
+    if (rc != ARCLEN_OK) return arclenL_argcode(L, 2, rc);
+    for (q = 0; q < m; q++) {
+      set_number(L, 4, i + q, t[q]);
+      for (k = 0; k < dim; k++) {
+        if (want_p) set_number(L, 5, dim * (i + q - 1) + k + 1, p[dim * q + k]);
+        if (want_v) set_number(L, 6, dim * (i + q - 1) + k + 1, v[dim * q + k]);
+      }
+    }
+  }
+  out = 1 + want_p + want_v;
+  if (!want_v) lua_pop(L, 1);
+  if (!want_p) lua_remove(L, 5);
+  return out;
+}
+
+/* The segment call's common arguments: c, ds, i, j, shift, seglen, tol. */
+typedef struct segment_run {
+  double c[12], shift, seglen, rtol;
+  long i, j;
+  int dim;
+} segment_run;
+
+static void check_run(lua_State *L, segment_run *r) {
+  r->dim = arclenL_checkcurve(L, 1, r->c);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  r->i = (long)luaL_checkinteger(L, 3);
+  r->j = (long)luaL_checkinteger(L, 4);
+  r->shift = arclenL_checkfinite(L, 5, "shift");
+  r->seglen = arclenL_checkfinite(L, 6, "segment length");
+  r->rtol = arclenL_checktol(L, 7, luaL_checknumber(L, 7));
+  if (r->i < 1 || r->j > (long)lua_rawlen(L, 2))
+    luaL_argerror(L, 3, "distances out of range");
+}
+
+/* The times of ds[i .. i + m - 1] in this segment: 0 at or before its
+** start, 1 at or past its length (as path.lua's locate), else
+** arclen_times on what lies between. */
+static void run_chunk(lua_State *L, const segment_run *r, long i, long m,
+                      double *prev, double *t, double *p, double *v) {
+  double s[CHUNK];
+  long q, a, b;
+  int rc;
+  read_chunk(L, 2, 2, i, m, r->shift, prev, s);
+  for (a = 0; a < m && s[a] <= 0; a++) t[a] = 0;
+  for (b = m; b > a && s[b - 1] >= r->seglen; b--) t[b - 1] = 1;
+  rc = arclen_times(r->c, r->dim, s + a, b - a, r->rtol, t + a, NULL, NULL);
+  if (rc != ARCLEN_OK) arclenL_argcode(L, 2, rc);
+  for (q = 0; q < m && (p || v); q++) {
+    if (p) arclen_point(r->c, r->dim, t[q], p + r->dim * q);
+    if (v) arclen_unit_tangent(r->c, r->dim, t[q], v + r->dim * q);
+  }
+}
+
+/* arclen._segment_times(c, ds, i, j, shift, seglen, tol, ts): ts[q] = the
+** time of ds[q] - shift in the segment, for q in i..j. */
+static int l_segment_times(lua_State *L) {
+  segment_run r;
+  double t[CHUNK], prev = -HUGE_VAL;
+  long i, q;
+  check_run(L, &r);
+  luaL_checktype(L, 8, LUA_TTABLE);
+  for (i = r.i; i <= r.j; i += CHUNK) {
+    long m = r.j - i + 1 < CHUNK ? r.j - i + 1 : CHUNK;
+    run_chunk(L, &r, i, m, &prev, t, NULL, NULL);
+    for (q = 0; q < m; q++) set_number(L, 8, i + q, t[q]);
+  }
+  return 0;
+}
+
+/* arclen._segment_samples(c, ds, i, j, shift, seglen, tol, k, out
+** [, tans, times]): with tans absent or nil, out[q] = {x =, y =[, z =],
+** s =, time = k - 1 + t, tx =, ty =[, tz =]}; with tans a table or
+** false, flat arrays: out gets the points (dim numbers each), tans the
+** unit tangents, times the path times (each when a table). */
+static int l_segment_samples(lua_State *L) {
+  segment_run r;
+  double t[CHUNK], p[3 * CHUNK], v[3 * CHUNK], prev = -HUGE_VAL, base;
+  long i, q;
+  int flat = !lua_isnoneornil(L, 10), want_v, want_t;
+  static const char *const pn[3] = {"x", "y", "z"}, *const vn[3] = {"tx", "ty", "tz"};
+  check_run(L, &r);
+  base = (double)luaL_checkinteger(L, 8) - 1;
+  luaL_checktype(L, 9, LUA_TTABLE);
+  want_v = flat && lua_istable(L, 10);
+  want_t = flat && lua_istable(L, 11);
+  for (i = r.i; i <= r.j; i += CHUNK) {
+    long m = r.j - i + 1 < CHUNK ? r.j - i + 1 : CHUNK;
+    run_chunk(L, &r, i, m, &prev, t, p, (!flat || want_v) ? v : NULL);
+    for (q = 0; q < m; q++) {
+      int k;
+      if (flat) {
+        for (k = 0; k < r.dim; k++) {
+          long at = r.dim * (i + q - 1) + k + 1;
+          set_number(L, 9, at, p[r.dim * q + k]);
+          if (want_v) set_number(L, 10, at, v[r.dim * q + k]);
+        }
+        if (want_t) set_number(L, 11, i + q, base + t[q]);
+        continue;
+      }
+      lua_createtable(L, 0, 2 * r.dim + 2);
+      for (k = 0; k < r.dim; k++) {
+        lua_pushnumber(L, p[r.dim * q + k]);
+        lua_setfield(L, -2, pn[k]);
+        lua_pushnumber(L, v[r.dim * q + k]);
+        lua_setfield(L, -2, vn[k]);
+      }
+      lua_rawgeti(L, 2, (int)(i + q));
+      lua_setfield(L, -2, "s");
+      lua_pushnumber(L, base + t[q]);
+      lua_setfield(L, -2, "time");
+      lua_rawseti(L, 9, (int)(i + q));
+    }
+  }
+  return 0;
+}
+
+static const luaL_Reg times_funcs[] = {
+  {"times", l_times},
+  {"_segment_times", l_segment_times},
+  {"_segment_samples", l_segment_samples},
+  {NULL, NULL}
+};
+
+void arclen_open_times(lua_State *L) {
+  luaL_setfuncs(L, times_funcs, 0);
+}
