@@ -170,7 +170,9 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
   deg = q[4] > 0 ? 4 : q[2] > 0 ? 2 : 0;
   b->lead2 = q[deg];
   if (deg == 0) return;
-  n = arclen_quartic(q[4], q[3], q[2], q[1], q[0], re, im);
+  /* Q's coefficients are rounded sums: the refined roots of those digits
+  ** buy the bound nothing, so the solver's plain form (roots3d.h) */
+  n = arclen_quartic_plain(q[4], q[3], q[2], q[1], q[0], re, im);
   for (k = 0; k < n; k++) z[k] = re[k] + I * im[k];
   for (k = 0; k < n; k++) {
     int best = -1;
