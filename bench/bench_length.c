@@ -7,7 +7,7 @@
 **
 ** Two yardsticks, both the 24-point rule: a plain loop, one square root at
 ** a time on the unscaled hodograph -- what a library writes, and the unit
-** in which ../shared/notes/anchors.md gives the peers' costs (kurbo ~4.5)
+** in which doc/benchmarks.md gives the peers' costs (kurbo 0.13 ~4.5)
 ** -- and arclen_length_gl(c, 2, 24), whose loop is the default method's own
 ** (speed_sum.c: two or four square roots per instruction), so that the
 ** ratio to it is what the error control costs beside the rule.

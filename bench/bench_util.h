@@ -45,7 +45,7 @@ static inline double bench_median(double *v, int n) {
 /* The fixed 24-point Gauss-Legendre rule as a plain loop, one square root
 ** at a time on the unscaled hodograph of a plane cubic: what a library
 ** without packed square roots runs, and the unit in which
-** ../shared/notes/anchors.md gives the peers' costs. */
+** doc/benchmarks.md gives the peers' costs. */
 static inline double bench_plain24(const double *c) {
   const arclen_gauss_rule *r = &arclen_gauss_rules[23];
   double ax[3], ay[3], s = 0;

@@ -2,7 +2,7 @@
 -- tools/ref_lengths.py (spec/data/curves2d.tsv, curves3d.tsv) and of
 -- tools/ref_hard.py (spec/data/hard2d.tsv, hard3d.tsv: reversals near a line
 -- at 1e-2 .. 1e-12, coincident pairs and triples and such points moved apart
--- by 1e-4 .. 1e-15, near-cusps to 1e-15).  Bounds (issue 23): every curve <= 1e-14
+-- by 1e-4 .. 1e-15, near-cusps to 1e-15).  Bounds: every curve <= 1e-14
 -- relative, Henkel's six arcs <= 5e-15.  Why 1e-14 holds: every branch now
 -- sums terms within ~6x the result (Carlson's [1,1,1,1] with R_D traded for
 -- R_G, src/elliptic/product.c), each from a handful of roundings and
@@ -34,7 +34,7 @@ describe("elliptic", function()
   check_file("hard2d.tsv")     -- reversals, coincident points, near-cusps
   check_file("hard3d.tsv")     -- the same in space (|z'|^2 split by roots.c)
 
-  -- Where the digits went before (issue 23): near a fold the hodograph root
+  -- Where the digits went before: near a fold the hodograph root
   -- is within b1 << 1 of the range, the arguments M^2, Lm^2 of R_F and R_D
   -- both ~ b1^2, and both R-functions diverge like log(1/b1) in Carlson's sum
   -- (terms to 50x the integral: 2.7e-14 on reversal-83, 2.85e-14 on
@@ -101,7 +101,7 @@ describe("elliptic", function()
   end)
 
   -- 3D roots of Q = |z'|^2 that are multiple: Newton on Q pins them only to
-  -- ~sqrt(eps) (erred 6e-9); the pair is rebuilt from its centre (src/elliptic3d.c).
+  -- ~sqrt(eps) (erred 6e-9); the pair is rebuilt from its centre (src/roots/roots3d.c).
   -- Closed forms, and the default method at tol 1e-15 on sub-ranges.
   local function multiple(c, exact)
     assert.is_true(H.relerr(elliptic(c, 0, 1), exact) <= 1e-14)
@@ -123,7 +123,7 @@ describe("elliptic", function()
   -- mpmath): a near double complex pair (hodograph nearly in a plane through
   -- the origin) erred 3.5e-11, a perturbed collinear stop 3.6e-7 (sub-range
   -- beside it 1.5e-5), fuzz-found 3D stops 7e-6.  Close roots are now set in a
-  -- frame about their cluster (src/elliptic3d.c).  The bound: 1e-14 (issue 23).
+  -- frame about their cluster (src/roots/roots3d.c).  The bound: 1e-14.
   describe("close roots of |z'|^2 in 3D (close3d.tsv)", function()
     local rows = H.tsv("close3d.tsv")
     for _, family in ipairs(H.families(rows)) do

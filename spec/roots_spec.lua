@@ -133,7 +133,7 @@ describe("roots", function()
   end)
 end)
 
--- The quartics that fuzz/fuzz_roots (and issue 3's open bullet) found
+-- The quartics that fuzz/fuzz_roots found
 -- wrong, with exact roots (tools/ref_roots_fuzz.py, sympy CRootOf) and per
 -- root the error attainable after the coefficients' rounding (a
 -- near-double root's is ~sqrt(eps)).  Judged three ways: every root (of
@@ -203,7 +203,7 @@ describe("roots: fuzz reproducers (roots_fuzz.tsv)", function()
         local qs = 1 + math.abs(q[1]) + math.abs(q[2]) + math.abs(q[3]) + math.abs(q[4])
         -- (polish-blind-underflow: the pair +-2.7e74 i has real part 3e-11,
         -- which the roots give as 0; the x^2 coefficient (7.1e148 for 0)
-        -- needs it: it now comes from that equation, issue 23)
+        -- needs it: it now comes from that equation)
         for k = 1, 4 do
           local lim = 512 * EPS * math.max(w[k] + math.abs(m[k]), 2 ^ -1022 * qs)
           assert.is_true(math.abs(f[k] - m[k]) <= lim, ("%s: x^%d coefficient %.17g, want %.17g (limit %.3g)"):format(

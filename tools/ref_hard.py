@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Hard curves for the elliptic method (issue 23), with 40-digit references.
+"""Hard curves for the elliptic method, with 40-digit references.
 
 Three families that lose digits in a chain of closed forms (they do not in
 the data: the default method is within 1.2e-15 on them):

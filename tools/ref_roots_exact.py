@@ -2,7 +2,7 @@
 """Write spec/data/roots_exact.tsv: quartics whose coefficients are exact
 doubles (integers or dyadic rationals of at most 53 bits), built from known
 roots, so that the roots are exactly those of the polynomial a solver is
-handed (issue 23; Algorithm 1010's case 8 is such a quartic).
+handed (Algorithm 1010's case 8 is such a quartic).
 
 Families (seeded; a candidate is kept only if every coefficient of its
 exact product is a double):

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""Reference roots for the quartics that fuzz/fuzz_roots (and issue 3's
-open bullet) found wrong in src/roots.c, from exact arithmetic.
+"""Reference roots for the quartics that fuzz/fuzz_roots found wrong in
+src/roots/roots.c, from exact arithmetic.
 
 Writes spec/data/roots_fuzz.tsv: per quartic (coefficients as doubles,
 highest first) the roots of THAT double polynomial to 30 digits relative

@@ -5,7 +5,7 @@
 ** Henkel (seed 003, Eqns 7-11) writes the length as int sqrt(Q(t)) dt with
 ** the quartic Q = |z'|^2 split into two quadratics and evaluates Carlson's
 ** (1992) formula; it failed on exact cusps, collinear curves and near
-** cusps.  Here (shared/notes/elliptic.md):
+** cusps.  Here (doc/papers.md, "Henkel"):
 ** - 2D: z'(t) = A2 t^2 + A1 t + A0 is a complex quadratic with roots s1,
 **   s2, so sqrt(Q) = |A2| |t - s1| |t - s2| exactly: no quartic solver.
 **   3D: Q is split by the quartic solver (roots.c).

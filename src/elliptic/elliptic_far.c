@@ -2,7 +2,7 @@
 ** elliptic_far.c -- the length integral int |t - s1||t - s2| dt when a root
 ** is far from the interval (near-quadratic cubics: |A2| << |A1| puts one
 ** hodograph root far away, where Carlson's [1,1,1,1] cancels like eps R^4,
-** shared/notes/elliptic.md).
+** doc/papers.md, "Henkel").
 **
 ** A far factor is a power series: with D = s - a, R = |D|, c = Re D / R,
 **   |u - D| = R sqrt(1 - 2c(u/R) + (u/R)^2) = R sum_n C_n(c) (u/R)^n,

@@ -56,7 +56,7 @@ static double closed_cusp(double a1, double a2, double b2, double y,
 }
 
 /* r - w and r + w for r = ell_hypot(w, b) >= |w|: the one that would cancel
-** is b^2 / (the other) (shared/notes/elliptic.md). */
+** is b^2 / (the other) (doc/papers.md, "Henkel"). */
 static void diffsum(double r, double w, double b, double *minus,
                     double *plus) {
   if (w >= 0) { *plus = r + w; *minus = *plus > 0 ? b * b / *plus : 0; }

@@ -51,7 +51,7 @@ static double complex cdiv(double complex p, double complex q) {
 ** their conjugates.  The root formula avoids cancellation: d is the square
 ** root of the discriminant D = A1^2 - 4 A2 A0 on the side of A1 (principal
 ** root in Kahan's formulation), q = -(A1 + d)/2, roots q/A2 and A0/q (see
-** notes/elliptic.md).  In real arithmetic: this runs on every default-method
+** doc/papers.md, "Henkel").  In real arithmetic: this runs on every default-method
 ** call, and C99's complex product checks for NaN and may call out. */
 static void branch2(const arclen_hodo *h, arclen_branch *b) {
   double x2 = h->a2[0], y2 = h->a2[1], x1 = h->a1[0], y1 = h->a1[1];
