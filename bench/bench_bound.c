@@ -21,10 +21,10 @@ static double curves[8 * NCURVES];
 static double ratios[MAXRATIOS], chosen[NCURVES], oracle[NCURVES];
 
 /* The bound of the n-point rule on [0, 1] in scaled units: the method's
-** own (arclen_cut_ratio at 2^0) times its common factor hh (4/pi) lead. */
-static double bound_at(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
+** own (arclen_cut_ratio at 2^0) times its common factor half_width (4/pi) lead. */
+static double bound_at(const arclen_cut_curve *cc, const arclen_cut_piece *pbound,
                        double lead, int n) {
-  return arclen_cut_ratio(cc, pb, 0, n) * 0.5 * (4 / 3.14159265358979323846) *
+  return arclen_cut_ratio(cc, pbound, 0, n) * 0.5 * (4 / 3.14159265358979323846) *
          lead;
 }
 
@@ -39,7 +39,7 @@ int main(void) {
     arclen_hodo h;
     arclen_branch br;
     arclen_cut_curve cc;
-    arclen_cut_piece pb;
+    arclen_cut_piece pbound;
     double len, ref, refs;
     arclen_opts_init(&o);
     arclen_length_gauss(c, 2, &o, &len, &info);
@@ -48,14 +48,14 @@ int main(void) {
     arclen_branch_points(&h, &br);
     arclen_cut_prepare(&br, &cc);
     if (!cc.ok) continue;
-    arclen_cut_bound(&cc, 0.5, 0.5, &pb);
+    arclen_cut_bound(&cc, 0.5, 0.5, &pbound);
     ref = arclen_length(c, 1e-15);
     refs = ldexp(ref, -h.exp);
     oracle[nc] = 0;
     for (n = 2; n <= ARCLEN_GAUSS_MAX; n++) {
       double err = fabs(ldexp(arclen_length_gl(c, 2, n), -h.exp) - refs);
       if (err > 1e-13 * refs && nr < MAXRATIOS)
-        ratios[nr++] = bound_at(&cc, &pb, sqrt(br.lead2), n) / err;
+        ratios[nr++] = bound_at(&cc, &pbound, sqrt(br.lead2), n) / err;
       if (!oracle[nc] && err <= 1e-12 * refs) oracle[nc] = n;
     }
     chosen[nc] = (double)info.evals;

@@ -58,9 +58,9 @@ static double step(int s, int i, double dep) {
       return arclen_hodo_chord(&h, 0, 1);
     }
     case ORDER: {
-      double mid = 0.5 + dep, hh = 0.5;
+      double mid = 0.5 + dep, half_width = 0.5;
       int n = 0;
-      arclen_cut_orders(&branch[i], 1, &mid, &hh, -40, 128, &n);
+      arclen_cut_orders(&branch[i], 1, &mid, &half_width, -40, 128, &n);
       return n;
     }
     case LENGTH: return arclen_length(c, 1e-12);

@@ -321,7 +321,9 @@ function M.run(op, sys, method, tol, knots, ...)
         .. "precision use \\mplibnumbersystem{double}")
     end
     if type(tol) ~= "number" or tol == 0 then tol = 1e-12 end
-    if not (tol >= 1e-15 and tol <= 0.1) then fail("arclen_tol must be 0 (the default) or in [1e-15, 0.1]") end
+    if not (tol >= arclen.tol_min and tol <= arclen.tol_max) then
+      fail(("arclen_tol must be 0 (the default) or in [%g, %g]"):format(arclen.tol_min, arclen.tol_max))
+    end
     local p = path_of(knots, method, tol)
     return f(p, sys, unpack(args, 1, nargs))
   end)

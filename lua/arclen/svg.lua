@@ -21,6 +21,7 @@
 -- doc/svg.md lists the semantic choices made where the specification leaves
 -- room.
 local path = require("arclen.path")
+local core = require("arclen.core")
 
 local M = {}
 
@@ -800,8 +801,8 @@ local function read_opts(opts, fname)
   if type(opts) ~= "table" then argerror4(2, fname, "options table expected, got " .. type(opts)) end
   for k, v in pairs(opts) do
     if k == "tol" or k == "arc_tol" then
-      if type(v) ~= "number" or not (v >= 1e-15 and v <= 0.1) then
-        argerror4(2, fname, k .. " must be in [1e-15, 0.1]")
+      if type(v) ~= "number" or not (v >= core.tol_min and v <= core.tol_max) then
+        argerror4(2, fname, ("%s must be in [%g, %g]"):format(k, core.tol_min, core.tol_max))
       end
     elseif k == "method" then
       if type(v) ~= "string" then argerror4(2, fname, "method must be a string") end

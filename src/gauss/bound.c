@@ -2,7 +2,7 @@
 ** bound.c -- how many Gauss-Legendre points a piece needs, from the
 ** branch points of the speed.
 **
-** On a piece t = c + hh u, u in [-1, 1], write F(w) = f(c + hh J(w)) with
+** On a piece t = c + half_width u, u in [-1, 1], write F(w) = f(c + half_width J(w)) with
 ** J(w) = (w + 1/w)/2.  The Chebyshev coefficients of f are
 **     a_k = (1 / pi i) \oint_{|w|=1} F(w) w^(-k-1) dw,
 ** and the contour may be pushed out to infinity except around the cuts
@@ -14,19 +14,19 @@
 ** k >= 2n its error E_n(T_k) is about pi/2 in size for k = 2n and 2n + 2,
 ** tiny up to 3n and beyond, and never above 2 + 2/(k^2 - 1) <= 32/15
 ** (ellipse_table.h: bounds for every stored rule).  So its error is at
-** most sum_{k even >= 2n} |E_n(T_k)| |a_k| (times hh for the t integral).
+** most sum_{k even >= 2n} |E_n(T_k)| |a_k| (times half_width for the t integral).
 **
 ** Along the cut, with r = s rho_j and x = s - 1, |J(s w_j) - J(w_j)| <=
 ** x a_j (a_j = (rho_j + 1/rho_j)/2, the ellipse's semi-axis), and every
-** other root R_m lies at most D_m + x hh a_j from the point; the speed is
-** lead prod |t - R_m|^(1/2), so with Z = sqrt(hh a_j), q_m = sqrt(D_m):
+** other root R_m lies at most D_m + x half_width a_j from the point; the speed is
+** lead prod |t - R_m|^(1/2), so with Z = sqrt(half_width a_j), q_m = sqrt(D_m):
 **     |F| <= lead Z x^(1/2) prod_m (q_m + Z x^(1/2)).
 ** Summing over k, sum_{k even >= 2n} |E_n(T_k)| r^(-k-1) dr <= rho_j^(-2n)
 ** C_j(n) s^(-2n-1) ds, with C_j(n) the aliasing tail of ellipse_table.h
 ** (3.3 for rho = 1.12, where the sum over all k with 32/15 for every
 ** |E_n(T_k)|, (32/15) rho_j/(rho_j - 1), is 20), and each power of x
 ** integrates to a Beta function (tabulated, gauss_tables.c):
-**     E <= hh (4 / pi) lead sum_j rho_j^(-2n) C_j(n)
+**     E <= half_width (4 / pi) lead sum_j rho_j^(-2n) C_j(n)
 **                 sum_i sym_j[i] Z_j^(i+1) B((i+1)/2 + 1, 2n - (i+1)/2).
 ** C_j(n) falls with n: the orders' estimates take C_j(REF_ORDER) from the
 ** reference order on, and C_j(2) below it.  Unlike the Bernstein-ellipse
@@ -196,9 +196,9 @@ static ALWAYS_INLINE double term_sum(const double sym[4], int n, double c,
 /* log2 of term j's sum at order n, from above (log2_above: the estimates
 ** below the reference order run on pieces cut at a foot, of ~20 points) */
 static ALWAYS_INLINE double term_log2(const arclen_cut_curve *cc,
-                                      const arclen_cut_piece *pb, int j,
+                                      const arclen_cut_piece *pbound, int j,
                                       int n) {
-  return log2_above(term_sum(cc->sym[j], n, pb->cc[j], pb->z[j]));
+  return log2_above(term_sum(cc->sym[j], n, pbound->cc[j], pbound->z[j]));
 }
 
 /* The ellipse's quantities for x = a - 1 (rounded down) from the table:
@@ -206,7 +206,7 @@ static ALWAYS_INLINE double term_log2(const arclen_cut_curve *cc,
 ** way to the order.  0 when x lies outside the table, or is 0 or NaN (its
 ** bits then give no cell). */
 static ALWAYS_INLINE int from_table(double am1, double sqrthh,
-                                    arclen_cut_piece *pb, int j) {
+                                    arclen_cut_piece *pbound, int j) {
   const arclen_ellipse_cell *e;
   uint64_t u, k;
   double x0, dx;
@@ -217,11 +217,11 @@ static ALWAYS_INLINE int from_table(double am1, double sqrthh,
   u &= ~((1ULL << ARCLEN_ELLIPSE_SHIFT) - 1);    /* the cell's start */
   memcpy(&x0, &u, sizeof x0);
   dx = am1 - x0;                                 /* exact: Sterbenz */
-  pb->lam[j] = e->lam + dx * e->dlam;
-  pb->ilam[j] = e->ilam + dx * e->dilam;
-  pb->cc[j] = e->c2 + dx * e->dc2;
-  pb->cref[j] = e->cref + dx * e->dcref;
-  pb->z[j] = sqrthh * (e->sa + dx * e->dsa);
+  pbound->lam[j] = e->lam + dx * e->dlam;
+  pbound->ilam[j] = e->ilam + dx * e->dilam;
+  pbound->cc[j] = e->c2 + dx * e->dc2;
+  pbound->cref[j] = e->cref + dx * e->dcref;
+  pbound->z[j] = sqrthh * (e->sa + dx * e->dsa);
   return 1;
 }
 
@@ -229,8 +229,8 @@ static ALWAYS_INLINE int from_table(double am1, double sqrthh,
 ** b = sqrt(a^2 - 1) and rho = a + b; next to the interval a - 1 cancels,
 ** so x is rounded down by the sum's rounding (r1, r2 are each within 2
 ** ulps), and rho is never above the true one; g = rho^2 - 1 = 2 b rho. */
-static void from_formulas(double am1, double s12, double hh,
-                          arclen_cut_piece *pb, int j) {
+static void from_formulas(double am1, double s12, double half_width,
+                          arclen_cut_piece *pbound, int j) {
   const double *al = arclen_gauss_alias;
   double b, rho, g, r;
   if (!(am1 > 0)) am1 = 0;             /* on the interval, or NaN */
@@ -242,26 +242,26 @@ static void from_formulas(double am1, double s12, double hh,
     ** positive terms: cut after y^9/9 it is below, by at most 0.12%;
     ** g carries some 6 ulps of rounding, the margin is 64 */
     double y = g / (2 + g), y2 = y * y;
-    pb->lam[j] = 2 * y * (1 + y2 * (1.0 / 3 + y2 * (0.2 + y2 * (1.0 / 7 +
+    pbound->lam[j] = 2 * y * (1 + y2 * (1.0 / 3 + y2 * (0.2 + y2 * (1.0 / 7 +
                  y2 * (1.0 / 9))))) * (1.4426950408889634 * (1 - 0x1p-46));
   } else {
-    pb->lam[j] = rough_log2(1 + g) - LOG2_ERR;
+    pbound->lam[j] = rough_log2(1 + g) - LOG2_ERR;
   }
-  pb->ilam[j] = 1 / pb->lam[j];
+  pbound->ilam[j] = 1 / pbound->lam[j];
   /* C(2) with r = rho^-2 = 1/(1 + g), 1/(1 - r) = (1 + g)/g (inf when
   ** g = 0: lam = 0 too), the roundings covered by the factor */
   r = 1 / (1 + g);
-  pb->cc[j] = (al[0] + al[1] * r + (al[2] * r * r + (32.0 / 15) * r / rho) *
+  pbound->cc[j] = (al[0] + al[1] * r + (al[2] * r * r + (32.0 / 15) * r / rho) *
                ((1 + g) / g)) * (1 + 0x1p-44);
-  pb->cref[j] = pb->cc[j];
-  pb->z[j] = sqrt(hh * s12 * (0.5 + 0x1p-50));   /* a rounded up */
+  pbound->cref[j] = pbound->cc[j];
+  pbound->z[j] = sqrt(half_width * s12 * (0.5 + 0x1p-50));   /* a rounded up */
 }
 
-/* Term j of the bound of the piece [c - hh, c + hh] (inv = 1/hh, sqrthh =
-** sqrt(hh)). */
+/* Term j of the bound of the piece [c - half_width, c + half_width] (inv = 1/half_width, sqrthh =
+** sqrt(half_width)). */
 static ALWAYS_INLINE void pair_bound(const arclen_cut_curve *cc, int j,
-                                     double c, double hh, double inv,
-                                     double sqrthh, arclen_cut_piece *pb) {
+                                     double c, double half_width, double inv,
+                                     double sqrthh, arclen_cut_piece *pbound) {
   /* The Bernstein ellipse through the branch point z = u + iv (piece
   ** units) has foci +-1, so its semi-major axis is a = (|z - 1| + |z + 1|)/2
   ** (two square roots side by side).  Next to the interval a - 1 cancels:
@@ -269,62 +269,62 @@ static ALWAYS_INLINE void pair_bound(const arclen_cut_curve *cc, int j,
   ** ulps), and all else is taken from it, from the table or the formulas,
   ** each erring on the safe side. */
   double dr = cc->re[j] - c, im = cc->im[j];
-  if (fabs(dr) + im > FAR_PAIR * hh) {
+  if (fabs(dr) + im > FAR_PAIR * half_width) {
     /* Far from the piece (|z| >= 2^39; for a piece of subnormal width u
-    ** and v would overflow): rho >= a >= |z| >= max(|dr|, im)/hh, so
-    ** C(n) <= alias[0] + 2^-70, and hh a <= hh (|z| + 1) <= |dr| + im +
-    ** hh bounds Z^2. */
+    ** and v would overflow): rho >= a >= |z| >= max(|dr|, im)/half_width, so
+    ** C(n) <= alias[0] + 2^-70, and half_width a <= half_width (|z| + 1) <= |dr| + im +
+    ** half_width bounds Z^2. */
     double dmax = fabs(dr) > im ? fabs(dr) : im;
-    pb->lam[j] = 2 * (rough_log2(dmax) - rough_log2(hh) - 2 * LOG2_ERR);
-    pb->cc[j] = pb->cref[j] = arclen_gauss_alias[0] * (1 + 0x1p-40);
-    pb->z[j] = sqrt((fabs(dr) + im + hh) * (1 + 0x1p-50));
-    pb->ilam[j] = 1 / pb->lam[j];
+    pbound->lam[j] = 2 * (rough_log2(dmax) - rough_log2(half_width) - 2 * LOG2_ERR);
+    pbound->cc[j] = pbound->cref[j] = arclen_gauss_alias[0] * (1 + 0x1p-40);
+    pbound->z[j] = sqrt((fabs(dr) + im + half_width) * (1 + 0x1p-50));
+    pbound->ilam[j] = 1 / pbound->lam[j];
   } else {
     double u = dr * inv, v = im * inv;
     double r1 = sqrt((u - 1) * (u - 1) + v * v);
     double r2 = sqrt((u + 1) * (u + 1) + v * v), s12 = r1 + r2;
     double am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50;
-    if (!from_table(am1, sqrthh, pb, j))
-      from_formulas(am1, s12, hh, pb, j);
+    if (!from_table(am1, sqrthh, pbound, j))
+      from_formulas(am1, s12, half_width, pbound, j);
   }
   /* log2 of term j's sum at REF_ORDER (Beta integrals taken in
   ** prepare), from above */
-  pb->lref[j] = log2_above(pb->cref[j] *
-                           horner_z(cc->symref[j], pb->z[j]));
+  pbound->lref[j] = log2_above(pbound->cref[j] *
+                           horner_z(cc->symref[j], pbound->z[j]));
 }
 
-/* 1/hh and sqrt(hh), known for the whole range ([0, 1] or [-1, 1]). */
-static double inverse_of(double hh) {
-  return hh == 0.5 ? 2 : hh == 1 ? 1 : 1 / hh;
+/* 1/half_width and sqrt(half_width), known for the whole range ([0, 1] or [-1, 1]). */
+static double inverse_of(double half_width) {
+  return half_width == 0.5 ? 2 : half_width == 1 ? 1 : 1 / half_width;
 }
-static double sqrt_of(double hh) {
-  return hh == 0.5 ? 0.70710678118654757 : hh == 1 ? 1 : sqrt(hh);
+static double sqrt_of(double half_width) {
+  return half_width == 0.5 ? 0.70710678118654757 : half_width == 1 ? 1 : sqrt(half_width);
 }
 
-void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
-                      arclen_cut_piece *pb) {
-  double inv = inverse_of(hh), sqrthh = sqrt_of(hh);
+void arclen_cut_bound(const arclen_cut_curve *cc, double c, double half_width,
+                      arclen_cut_piece *pbound) {
+  double inv = inverse_of(half_width), sqrthh = sqrt_of(half_width);
   int j, k;
-  pb->nt = cc->npair;
-  pb->inside = 0;
+  pbound->nt = cc->npair;
+  pbound->inside = 0;
   if (cc->has_real) {
     const arclen_branch *br = cc->br;
     for (k = 0; k < br->n; k += 2)
-      if (br->im[k] == 0 && fabs(br->re[k] - c) < hh * (1 - 1e-12))
-        pb->inside = 1;                  /* a kink: the rule cannot see it */
+      if (br->im[k] == 0 && fabs(br->re[k] - c) < half_width * (1 - 1e-12))
+        pbound->inside = 1;                  /* a kink: the rule cannot see it */
   }
-  for (j = 0; j < cc->npair; j++) pair_bound(cc, j, c, hh, inv, sqrthh, pb);
+  for (j = 0; j < cc->npair; j++) pair_bound(cc, j, c, half_width, inv, sqrthh, pbound);
 }
 
 /* The bound at order n over 2^lgoal. */
 double arclen_cut_ratio(const arclen_cut_curve *cc,
-                        const arclen_cut_piece *pb, double lgoal, int n) {
+                        const arclen_cut_piece *pbound, double lgoal, int n) {
   double r = 0;
   int j;
-  for (j = 0; j < pb->nt; j++)
-    r += exp2_above(-n * pb->lam[j] - lgoal) *
-         term_sum(cc->sym[j], n, n >= REF_ORDER ? pb->cref[j] : pb->cc[j],
-                  pb->z[j]);
+  for (j = 0; j < pbound->nt; j++)
+    r += exp2_above(-n * pbound->lam[j] - lgoal) *
+         term_sum(cc->sym[j], n, n >= REF_ORDER ? pbound->cref[j] : pbound->cc[j],
+                  pbound->z[j]);
   return r * BOUND_MARGIN;
 }
 
@@ -345,49 +345,49 @@ static int order_ceil(double x) {
 ** 63/64 of the goal; a second term must then lie below 1/64 of it, else
 ** each gets half. */
 #define SHARE_LOG2 0.0228         /* log2(64/63) = 0.02272..., rounded up */
-static ALWAYS_INLINE int order_at(const arclen_cut_piece *pb,
+static ALWAYS_INLINE int order_at(const arclen_cut_piece *pbound,
                                   const double *l, double lgoal) {
-  double n0 = (l[0] - lgoal + SHARE_LOG2) * pb->ilam[0], n1;
+  double n0 = (l[0] - lgoal + SHARE_LOG2) * pbound->ilam[0], n1;
   int n;
-  if (pb->nt == 1) return order_ceil(n0);
-  n1 = (l[1] - lgoal + SHARE_LOG2) * pb->ilam[1];
+  if (pbound->nt == 1) return order_ceil(n0);
+  n1 = (l[1] - lgoal + SHARE_LOG2) * pbound->ilam[1];
   n = order_ceil(n0 > n1 ? n0 : n1);
-  if (l[0] - n * pb->lam[0] <= lgoal - 6 || l[1] - n * pb->lam[1] <= lgoal - 6)
+  if (l[0] - n * pbound->lam[0] <= lgoal - 6 || l[1] - n * pbound->lam[1] <= lgoal - 6)
     return n;
-  n0 = (l[0] - lgoal + 1) / pb->lam[0];
-  n1 = (l[1] - lgoal + 1) / pb->lam[1];
+  n0 = (l[0] - lgoal + 1) / pbound->lam[0];
+  n1 = (l[1] - lgoal + 1) / pbound->lam[1];
   return order_ceil(n0 > n1 ? n0 : n1);
 }
 
 static ALWAYS_INLINE int order_of(const arclen_cut_curve *cc,
-                                  const arclen_cut_piece *pb, double lgoal,
+                                  const arclen_cut_piece *pbound, double lgoal,
                                   int nmax, double *ratio) {
   int j, n, m;
-  if (pb->inside) return 0;
-  if (pb->nt == 0) {                     /* a polynomial: exact from n = 2 */
+  if (pbound->inside) return 0;
+  if (pbound->nt == 0) {                     /* a polynomial: exact from n = 2 */
     if (ratio) *ratio = 0;
     return 2;
   }
-  for (j = 0; j < pb->nt; j++)
-    if (!(pb->lam[j] > 0)) return 0;     /* rho ~ 1: no order will do */
+  for (j = 0; j < pbound->nt; j++)
+    if (!(pbound->lam[j] > 0)) return 0;     /* rho ~ 1: no order will do */
   /* From the reference order down by halves: an estimate n >= m is a
   ** bound and too high by about 1.5 log2(n/m) / lam points. */
-  n = order_at(pb, pb->lref, lgoal);
+  n = order_at(pbound, pbound->lref, lgoal);
   for (m = REF_ORDER / 2; n < 2 * m && m >= 4; m /= 2) {
     double l[2] = {0, 0};   /* l[1] is read only when nt = 2 */
-    for (j = 0; j < pb->nt; j++) l[j] = term_log2(cc, pb, j, m);
-    n = order_at(pb, l, lgoal);
+    for (j = 0; j < pbound->nt; j++) l[j] = term_log2(cc, pbound, j, m);
+    n = order_at(pbound, l, lgoal);
   }
   if (n < 2 * m)                         /* below all: the sum itself */
-    while (n < 2 * m && arclen_cut_ratio(cc, pb, lgoal, n) > 1) n++;
+    while (n < 2 * m && arclen_cut_ratio(cc, pbound, lgoal, n) > 1) n++;
   if (n > nmax) return 0;
-  if (ratio) *ratio = arclen_cut_ratio(cc, pb, lgoal, n);
+  if (ratio) *ratio = arclen_cut_ratio(cc, pbound, lgoal, n);
   return n;
 }
 
-int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
+int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pbound,
                      double lgoal, int nmax, double *ratio) {
-  return order_of(cc, pb, lgoal, nmax, ratio);
+  return order_of(cc, pbound, lgoal, nmax, ratio);
 }
 
 /* arclen_cut_prepare for the common case (two complex pairs within reach,
@@ -395,10 +395,10 @@ int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
 ** arclen_cut_order for each piece, in one frame: the records stay local,
 ** and the compiler keeps most of them in registers. */
 static ALWAYS_INLINE int orders_of(const arclen_branch *br, int np,
-                                   const double *c, const double *hh,
+                                   const double *c, const double *half_width,
                                    double lgoal, int nmax, int *n) {
   arclen_cut_curve cc;
-  arclen_cut_piece pb[ARCLEN_CUT_PIECES];
+  arclen_cut_piece pbound[ARCLEN_CUT_PIECES];
   double qx[2];
   int i;
   if (br->n != 4 || !(br->im[0] > 0 && br->im[2] > 0)) return 0;
@@ -411,21 +411,21 @@ static ALWAYS_INLINE int orders_of(const arclen_branch *br, int np,
   set_pair(&cc, 0, br->re[0], br->im[0], qx);
   set_pair(&cc, 1, br->re[2], br->im[2], qx);
   for (i = 0; i < np; i++) {      /* the pieces' chains side by side */
-    double inv = inverse_of(hh[i]), sqrthh = sqrt_of(hh[i]);
-    pb[i].nt = 2;
-    pb[i].inside = 0;
-    pair_bound(&cc, 0, c[i], hh[i], inv, sqrthh, &pb[i]);
-    pair_bound(&cc, 1, c[i], hh[i], inv, sqrthh, &pb[i]);
+    double inv = inverse_of(half_width[i]), sqrthh = sqrt_of(half_width[i]);
+    pbound[i].nt = 2;
+    pbound[i].inside = 0;
+    pair_bound(&cc, 0, c[i], half_width[i], inv, sqrthh, &pbound[i]);
+    pair_bound(&cc, 1, c[i], half_width[i], inv, sqrthh, &pbound[i]);
   }
   for (i = 0; i < np; i++)
-    if (!(n[i] = order_of(&cc, &pb[i], lgoal, nmax, NULL))) return 0;
+    if (!(n[i] = order_of(&cc, &pbound[i], lgoal, nmax, NULL))) return 0;
   return 1;
 }
 
 int arclen_cut_orders(const arclen_branch *br, int np, const double *c,
-                      const double *hh, double lgoal, int nmax, int *n) {
+                      const double *half_width, double lgoal, int nmax, int *n) {
   if (np == 1)            /* the commonest case: the loops unrolled */
-    return orders_of(br, 1, c, hh, lgoal, nmax, n);
+    return orders_of(br, 1, c, half_width, lgoal, nmax, n);
   return np > 1 && np <= ARCLEN_CUT_PIECES &&
-         orders_of(br, np, c, hh, lgoal, nmax, n);
+         orders_of(br, np, c, half_width, lgoal, nmax, n);
 }

@@ -53,9 +53,9 @@ typedef struct arclen_cut_curve {
 
 void arclen_cut_prepare(const arclen_branch *br, arclen_cut_curve *cc);
 
-/* The bound of one piece [c - hh, c + hh] as a function of the order n:
+/* The bound of one piece [c - half_width, c + half_width] as a function of the order n:
 **     sum_j 2^(-n lam_j) C_j(n) sum_i sym_j[i] Z_j^(i+1) beta[i][n]
-** times the common factor lead 4/pi (and hh); see gauss_bound.c. */
+** times the common factor lead 4/pi (and half_width); see gauss_bound.c. */
 typedef struct arclen_cut_piece {
   int nt;                   /* terms: one per branch pair */
   int inside;               /* a real root strictly inside: must split */
@@ -66,15 +66,15 @@ typedef struct arclen_cut_piece {
   double cref[2];           /* C_j(REF_ORDER), from that order on */
 } arclen_cut_piece;
 
-void arclen_cut_bound(const arclen_cut_curve *cc, double c, double hh,
-                      arclen_cut_piece *pb);
+void arclen_cut_bound(const arclen_cut_curve *cc, double c, double half_width,
+                      arclen_cut_piece *pbound);
 /* The bound at order n (2 <= n <= ARCLEN_GAUSS_MAX) over 2^lgoal. */
-double arclen_cut_ratio(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
+double arclen_cut_ratio(const arclen_cut_curve *cc, const arclen_cut_piece *pbound,
                         double lgoal, int n);
 /* An order n in [2, nmax] whose bound is at most 2^lgoal (lgoal includes
 ** log2 of the common factor), the least or within a point of it; 0 if
 ** none.  When ratio is not NULL it gets the bound over 2^lgoal there. */
-int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
+int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pbound,
                      double lgoal, int nmax, double *ratio);
 /* The same orders for np <= ARCLEN_CUT_PIECES pieces [c_i - hh_i, c_i +
 ** hh_i] between the branch points br, as arclen_cut_prepare,
@@ -85,6 +85,6 @@ int arclen_cut_order(const arclen_cut_curve *cc, const arclen_cut_piece *pb,
 ** then takes the three. */
 #define ARCLEN_CUT_PIECES 3
 int arclen_cut_orders(const arclen_branch *br, int np, const double *c,
-                      const double *hh, double lgoal, int nmax, int *n);
+                      const double *half_width, double lgoal, int nmax, int *n);
 
 #endif

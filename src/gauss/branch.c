@@ -110,7 +110,7 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
 ** t* +- i |h(t*)| / |h'(t*)| (to first order, exact enough to tell a cusp
 ** from a near-cusp of 1e-9). */
 static double complex near_cusp(const arclen_hodo *h, double complex z) {
-  double t = creal(z), hv[3], d1[3], d2[3], g, dg, hh, dd;
+  double t = creal(z), hv[3], d1[3], d2[3], g, dg, half_width, dd;
   int it, k;
   if (!(fabs(cimag(z)) < 1e-3 * (1 + fabs(t))) || !(fabs(t) < 1e6)) return z;
   for (it = 0; it < 20; it++) {
@@ -126,15 +126,15 @@ static double complex near_cusp(const arclen_hodo *h, double complex z) {
     t -= g / dg;
     if (fabs(g / dg) <= 1e-16 * (1 + fabs(t))) break;
   }
-  hh = dd = 0;
+  half_width = dd = 0;
   for (k = 0; k < 3; k++) {
     hv[k] = (h->a2[k] * t + h->a1[k]) * t + h->a0[k];
     d1[k] = 2 * h->a2[k] * t + h->a1[k];
-    hh += hv[k] * hv[k];
+    half_width += hv[k] * hv[k];
     dd += d1[k] * d1[k];
   }
   if (!(dd > 0) || !(fabs(t - creal(z)) < 1e-3 * (1 + fabs(t)))) return z;
-  return t + I * sqrt(hh / dd);
+  return t + I * sqrt(half_width / dd);
 }
 
 /* Representatives of two roots of Q this close (relative) are a cluster:

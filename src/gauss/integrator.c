@@ -13,22 +13,22 @@ static double log_rho2_below(double g) {
                     : arclen_rough_log2(1 + g) - ARCLEN_LOG2_ERR;
 }
 
-void arclen_bound_piece(const arclen_branch *br, double c, double hh,
-                        piece_bound *pb) {
-  double e = E_CAP, inv = 1 / hh, d[4], a, g, prod, rho2;
+void arclen_bound_piece(const arclen_branch *br, double c, double half_width,
+                        piece_bound *pbound) {
+  double e = E_CAP, inv = 1 / half_width, d[4], a, g, prod, rho2;
   int k, np = 0;
-  pb->inside = 0;
+  pbound->inside = 0;
   for (k = 0; k < br->n; k += 2) {     /* roots come in conjugate pairs */
     double dr = br->re[k] - c, im = br->im[k];
-    if (fabs(dr) + im > 1e100 * hh) {  /* far: squares would overflow */
+    if (fabs(dr) + im > 1e100 * half_width) {  /* far: squares would overflow */
       d[np++] = fabs(dr) + im;         /* >= the distance */
       continue;
     }
     d[np++] = sqrt(dr * dr + im * im);
     if (im == 0) {                     /* no branch point, but a kink */
-      if (fabs(dr) < hh * (1 - 1e-12)) pb->inside = 1;
+      if (fabs(dr) < half_width * (1 - 1e-12)) pbound->inside = 1;
     } else {
-      /* in units of hh (no underflow for tiny pieces); both forms are
+      /* in units of half_width (no underflow for tiny pieces); both forms are
       ** computed and chosen by arithmetic: the sign of p is random, and a
       ** branch on it mispredicted a third of the time */
       double u = dr * inv, v = im * inv, p = u * u + v * v - 1;
@@ -40,34 +40,34 @@ void arclen_bound_piece(const arclen_branch *br, double c, double hh,
   }
   g = 2 * e + 2 * sqrt(e * (1 + e));          /* rho^2 - 1 */
   rho2 = 1 + g;
-  a = hh * sqrt(1 + e);                        /* semi-major axis, t units */
+  a = half_width * sqrt(1 + e);                        /* semi-major axis, t units */
   prod = sqrt(br->lead2);
   for (k = 0; k < np; k++) prod *= d[k] + a;
-  pb->m = prod;
-  pb->e = e;
-  pb->log_rho2 = log_rho2_below(g);
-  /* log2(C / target), C = hh (64/15) M rho^2 / (rho^2 - 1) and target =
-  ** rtol lest 2 hh / width, but for logk, the factors common to all pieces
+  pbound->m = prod;
+  pbound->e = e;
+  pbound->log_rho2 = log_rho2_below(g);
+  /* log2(C / target), C = half_width (64/15) M rho^2 / (rho^2 - 1) and target =
+  ** rtol len_lower 2 half_width / width, but for logk, the factors common to all pieces
   ** (arclen_integ_start()); the product is taken whole when it is a normal number. */
   prod *= rho2 / g;
   if (prod > 1e-300 && prod < 1e300) {
-    pb->logc = arclen_rough_log2(prod) + ARCLEN_LOG2_ERR;
+    pbound->logc = arclen_rough_log2(prod) + ARCLEN_LOG2_ERR;
   } else {                                     /* huge or tiny parts */
-    pb->logc = 0.5 * log2(br->lead2) + log2(rho2) - log2(g);
-    for (k = 0; k < np; k++) pb->logc += log2(d[k] + a);
+    pbound->logc = 0.5 * log2(br->lead2) + log2(rho2) - log2(g);
+    for (k = 0; k < np; k++) pbound->logc += log2(d[k] + a);
   }
 }
 
 /* The smallest order whose bound C rho^(-2n) is <= the target, or NULL
 ** past NMAX.  logc is an upper bound and log_rho2 a lower bound (their
 ** rough logs carry ARCLEN_LOG2_ERR), so n is never too small. */
-static const arclen_gauss_rule *choose_rule(const piece_bound *pb,
+static const arclen_gauss_rule *choose_rule(const piece_bound *pbound,
                                             double logk) {
-  double n, logc = pb->logc + logk;
-  if (pb->inside) return NULL;
+  double n, logc = pbound->logc + logk;
+  if (pbound->inside) return NULL;
   if (logc <= 0) return arclen_rule_at_least(2);       /* C <= target already */
-  if (!(pb->log_rho2 > 0)) return NULL;         /* rho ~ 1: no order will do */
-  n = logc / pb->log_rho2;
+  if (!(pbound->log_rho2 > 0)) return NULL;         /* rho ~ 1: no order will do */
+  n = logc / pbound->log_rho2;
   if (!(n <= NMAX)) return NULL;                /* also catches NaN */
   return arclen_rule_at_least(n < 2 ? 2 : (int)ceil(n));
 }
@@ -82,7 +82,7 @@ static void bound_span(const integrator *in, span *s, double a, double b,
   if (in->cc.ok)
     arclen_cut_bound(&in->cc, a + (b - a) / 2, (b - a) / 2, &s->u.cut);
   else
-    arclen_bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &s->u.pb);
+    arclen_bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &s->u.pbound);
 }
 
 /* Push [a, b] with its bound.  The bound is taken here, not when the piece
@@ -101,7 +101,7 @@ static void push(integrator *in, double a, double b, int depth) {
 ** so these are the speed's minima that matter -- the roots of Q'.Q'' that
 ** lie under no nearby branch point cost a piece and gain nothing.  L is
 ** bounded below by the sum of chords between cuts, so every piece's share
-** of the tolerance, rtol lest w / width for width w, is safe.  Returns 0
+** of the tolerance, rtol len_lower w / width for width w, is safe.  Returns 0
 ** when there is nothing to integrate (a point, or a zero speed). */
 int arclen_integ_start(integrator *in, const double *c, int dim, double t0,
                  double t1, double rtol, double share) {
@@ -109,7 +109,7 @@ int arclen_integ_start(integrator *in, const double *c, int dim, double t0,
   double iw;
   /* h, br and cc are filled below; the stack is filled by push() before
   ** pop reads it */
-  in->lest = in->logk = in->lgoal = in->err = 0;
+  in->len_lower = in->logk = in->lgoal = in->err = 0;
   in->nmin = in->top = in->depth = in->want_err = in->prepared = 0;
   in->evals = in->pieces = in->splits = 0;
   in->unit = 1;
@@ -129,17 +129,17 @@ int arclen_integ_start(integrator *in, const double *c, int dim, double t0,
   in->t0 = t0;
   in->t1 = t1;
   for (i = 0; i <= in->nmin; i++)
-    in->lest += arclen_hodo_chord(&in->h, arclen_first_from(in, i), arclen_first_to(in, i));
+    in->len_lower += arclen_hodo_chord(&in->h, arclen_first_from(in, i), arclen_first_to(in, i));
   /* Zero chords between every pair of cuts but a moving point: the curve
   ** returns to where it was; bound L below by a coarse rule. */
-  if (!(in->lest > 0))
-    in->lest = 0.5 * arclen_apply_rule(&in->h, arclen_rule_at_least(8), t0 + in->width / 2,
+  if (!(in->len_lower > 0))
+    in->len_lower = 0.5 * arclen_apply_rule(&in->h, arclen_rule_at_least(8), t0 + in->width / 2,
                                 in->width / 2);
-  if (!(in->lest > 0)) return 0;
+  if (!(in->len_lower > 0)) return 0;
   /* 1/width (1 or 1/2) goes into the log: a division fewer */
-  in->lkl = arclen_lead_log2(in->br.lead2);
+  in->lead_log = arclen_lead_log2(in->br.lead2);
   iw = in->width == 1 ? 1 : in->width == 2 ? 0.5 : 1 / in->width;
-  in->lgoal = arclen_goal_log2(in->rtol, in->lest, iw, in->lkl);
+  in->lgoal = arclen_goal_log2(in->rtol, in->len_lower, iw, in->lead_log);
   return 1;
 }
 
@@ -153,7 +153,7 @@ void arclen_integ_prepare_bounds(integrator *in) {
   arclen_cut_prepare(&in->br, &in->cc);
   if (!in->cc.ok)
     in->logk = arclen_rough_log2((32.0 / 15.0) * in->width / in->rtol) -
-              arclen_rough_log2(in->lest) + 2 * ARCLEN_LOG2_ERR;   /* an upper bound */
+              arclen_rough_log2(in->len_lower) + 2 * ARCLEN_LOG2_ERR;   /* an upper bound */
 }
 
 /* Where to cut a piece: at a foot of a branch point inside it (the one
@@ -198,12 +198,12 @@ static const arclen_gauss_rule *span_rule(const integrator *in,
                              in->want_err ? &ratio : NULL);
     if (n) r = arclen_rule_at_least(n);
   } else {
-    r = choose_rule(&s->u.pb, in->logk);
+    r = choose_rule(&s->u.pbound, in->logk);
   }
   if (r && in->want_err)
-    *err = in->rtol * in->lest * ((s->b - s->a) / in->width) *
-           (in->cc.ok ? ratio : exp2(s->u.pb.logc + in->logk -
-                                     r->n * s->u.pb.log_rho2));
+    *err = in->rtol * in->len_lower * ((s->b - s->a) / in->width) *
+           (in->cc.ok ? ratio : exp2(s->u.pbound.logc + in->logk -
+                                     r->n * s->u.pbound.log_rho2));
   return r;
 }
 
@@ -239,10 +239,10 @@ int arclen_integ_next_piece(integrator *in, double *from, double *to, double *le
       }
     }
     if (r == NULL) {          /* bisection floor: a piece of ~1e-18 width */
-      piece_bound eb;
-      arclen_bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &eb);
+      piece_bound ebound;
+      arclen_bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &ebound);
       r = arclen_rule_at_least(FLOOR_ORDER);
-      err = 2 * (b - a) * eb.m;      /* crude: the rule and the integral */
+      err = 2 * (b - a) * ebound.m;      /* crude: the rule and the integral */
     }                                /* are each at most width x M */
     *len = accept(in, s, r, err);
     *from = a;
@@ -263,23 +263,23 @@ void arclen_integ_push_initial(integrator *in) {
 /* sum plus a first piece that no order up to NMAX meets, cut on the
 ** stack (its pieces added one by one, in increasing t). */
 static double integrate_cut(integrator *in, const span *s, double sum) {
-  double pa, pb, piece;
+  double pa, pbound, piece;
   in->stack[in->top++] = *s;
-  while (arclen_integ_next_piece(in, &pa, &pb, &piece, NULL)) sum += piece;
+  while (arclen_integ_next_piece(in, &pa, &pbound, &piece, NULL)) sum += piece;
   return sum;
 }
 
-/* The first pieces' middles c and half-widths hh, and their orders n
+/* The first pieces' middles c and half-widths half_width, and their orders n
 ** straight from the branch points (arclen_cut_orders): 1, or 0 when those
 ** are not to be had (a real or far root, a piece to cut). */
-int arclen_integ_first_orders(const integrator *in, double *c, double *hh,
+int arclen_integ_first_orders(const integrator *in, double *c, double *half_width,
                         int *n) {
   int i;
   for (i = 0; i <= in->nmin; i++) {
-    hh[i] = (arclen_first_to(in, i) - arclen_first_from(in, i)) / 2;
-    c[i] = arclen_first_from(in, i) + hh[i];
+    half_width[i] = (arclen_first_to(in, i) - arclen_first_from(in, i)) / 2;
+    c[i] = arclen_first_from(in, i) + half_width[i];
   }
-  return arclen_cut_orders(&in->br, in->nmin + 1, c, hh, in->lgoal, NMAX, n);
+  return arclen_cut_orders(&in->br, in->nmin + 1, c, half_width, in->lgoal, NMAX, n);
 }
 
 /* The whole integral.  The first pieces (at most three, between the feet)
@@ -294,13 +294,13 @@ double arclen_integ_integrate(integrator *in) {
   const arclen_gauss_rule *r[ARCLEN_CUT_PIECES];
   int i;
   if (!in->want_err) {
-    double c[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES];
+    double c[ARCLEN_CUT_PIECES], half_width[ARCLEN_CUT_PIECES];
     int n[ARCLEN_CUT_PIECES];
-    if (arclen_integ_first_orders(in, c, hh, n)) {
+    if (arclen_integ_first_orders(in, c, half_width, n)) {
       for (i = 0; i <= in->nmin; i++) {
         in->evals += n[i];
         in->pieces++;
-        sum += arclen_apply_rule(&in->h, arclen_rule_at_least(n[i]), c[i], hh[i]);
+        sum += arclen_apply_rule(&in->h, arclen_rule_at_least(n[i]), c[i], half_width[i]);
       }
       return sum;
     }

@@ -28,6 +28,7 @@
 
 #include "arclen.h"
 #include "curve/cubic.h"
+#include "curve/numeric.h"
 #include "gauss/bound.h"
 #include "gauss/gauss_tables.h"
 #include "gauss/speed_sum.h"
@@ -80,20 +81,20 @@ static inline double arclen_apply_rule(const arclen_hodo *h,
   return half * arclen_speed_pairs(h, r->x, r->w, 0, r->half, c, half, 0);
 }
 
-/* The bound for one piece [c - hh, c + hh], in units of hh (u = (t - c)/hh).
+/* The bound for one piece [c - half_width, c + half_width], in units of half_width (u = (t - c)/half_width).
 ** For a branch point z = u + iv the Bernstein ellipse through it has
 ** semi-axes a, b with a^2 - 1 = b^2 = e, where (|z|^2 - 1 = p)
 **     e = (p + sqrt(p^2 + 4 v^2)) / 2 = 2 v^2 / (sqrt(p^2 + 4 v^2) - p),
 ** the second form for p < 0 (no cancellation next to the interval); then
 ** rho = a + b and rho^2 - 1 = 2 e + 2 sqrt(e (1 + e)), also cancellation
 ** free.  The nearest branch point (least e) sets the ellipse.  On it every
-** |z - r_k| <= |c - r_k| + hh a, so M <= lead prod (|c - r_k| + hh a). */
+** |z - r_k| <= |c - r_k| + half_width a, so M <= lead prod (|c - r_k| + half_width a). */
 typedef struct piece_bound {
   double logc;        /* log2 of the bound's constant over the target, but
                       ** for the factors common to all pieces (logk) */
   double log_rho2;    /* a lower bound of log2(rho^2): what a point gains */
   double m;           /* M >= |f| on the ellipse (scaled units) */
-  double e;           /* the ellipse's b^2 / hh^2, e as above */
+  double e;           /* the ellipse's b^2 / half_width^2, e as above */
   int inside;         /* a real (double) root strictly inside: must split */
 } piece_bound;
 
@@ -104,7 +105,7 @@ typedef struct span {
   int depth;
   union {
     arclen_cut_piece cut;     /* in->cc.ok */
-    piece_bound pb;           /* otherwise */
+    piece_bound pbound;           /* otherwise */
   } u;
 } span;
 
@@ -113,12 +114,12 @@ typedef struct integrator {
   arclen_hodo h;
   arclen_branch br;
   arclen_cut_curve cc;
-  double rtol, lest, width;   /* tolerance, lower bound of L, t1 - t0 */
+  double rtol, len_lower, width;   /* tolerance, lower bound of L, t1 - t0 */
   double t0, t1;              /* the range, [-1, 1] for a sub-range */
   double unit;                /* dt/ds: the result's factor (sub-ranges) */
-  double logk;                /* log2((32/15) width / (rtol lest)) */
-  double lgoal;               /* log2(2 rtol lest / (width lead 4/pi)) */
-  double lkl;                 /* log2(lead 4/pi), rounded up */
+  double logk;                /* log2((32/15) width / (rtol len_lower)) */
+  double lgoal;               /* log2(2 rtol len_lower / (width lead 4/pi)) */
+  double lead_log;                 /* log2(lead 4/pi), rounded up */
   double mins[ARCLEN_CUT_PIECES - 1];  /* feet of near branch points */
   int nmin;
   int top;
@@ -158,16 +159,15 @@ static HOT_INLINE int arclen_feet_of(const arclen_branch *br, double t0, double 
 /* log2(lead 4/pi), rounded up, from the lead's square: its square root
 ** goes into the log, a square root fewer. */
 static HOT_INLINE double arclen_lead_log2(double lead2) {
-  return 0.5 * arclen_rough_log2(lead2 * (16 / (3.14159265358979323846 *
-                                         3.14159265358979323846))) +
+  return 0.5 * arclen_rough_log2(lead2 * (16 / (ARCLEN_PI * ARCLEN_PI))) +
          ARCLEN_LOG2_ERR;
 }
 
-/* log2 of the pieces' common target, 2 rtol lest / (width lead 4/pi),
-** from below; iw = 1/width, lkl = lead_log2(). */
-static HOT_INLINE double arclen_goal_log2(double rtol, double lest, double iw,
-                                   double lkl) {
-  return arclen_rough_log2(2 * rtol * lest * iw) - lkl - ARCLEN_LOG2_ERR;
+/* log2 of the pieces' common target, 2 rtol len_lower / (width lead 4/pi),
+** from below; iw = 1/width, lead_log = lead_log2(). */
+static HOT_INLINE double arclen_goal_log2(double rtol, double len_lower, double iw,
+                                   double lead_log) {
+  return arclen_rough_log2(2 * rtol * len_lower * iw) - lead_log - ARCLEN_LOG2_ERR;
 }
 
 /* x 2^e, as ldexp(x, e) but for the common e without a call: 2^e is then
@@ -192,9 +192,9 @@ static inline double arclen_truncation_budget(double rtol) {
   return rtol - (rtol / 2 < ROUNDING_RESERVE ? rtol / 2 : ROUNDING_RESERVE);
 }
 
-/* integrator.c: the ellipse bound of [c - hh, c + hh] (see piece_bound). */
-void arclen_bound_piece(const arclen_branch *br, double c, double hh,
-                        piece_bound *pb);
+/* integrator.c: the ellipse bound of [c - half_width, c + half_width] (see piece_bound). */
+void arclen_bound_piece(const arclen_branch *br, double c, double half_width,
+                        piece_bound *pbound);
 /* Set up in over [t0, t1] with the truncation budget rtol and the feet cut
 ** within share of the width; 0 when there is nothing to integrate. */
 int arclen_integ_start(integrator *in, const double *c, int dim, double t0,
@@ -202,7 +202,7 @@ int arclen_integ_start(integrator *in, const double *c, int dim, double t0,
 /* The bounds' records (cut bounds, or the ellipse bound's target). */
 void arclen_integ_prepare_bounds(integrator *in);
 /* The first pieces' middles, half-widths and orders; 0: not to be had. */
-int arclen_integ_first_orders(const integrator *in, double *c, double *hh,
+int arclen_integ_first_orders(const integrator *in, double *c, double *half_width,
                               int *n);
 /* The first pieces onto the stack; then next_piece pops them in order. */
 void arclen_integ_push_initial(integrator *in);

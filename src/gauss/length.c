@@ -15,9 +15,9 @@
 static int length_fast(const double *c, double rtol, double *len) {
   arclen_hodo h;
   arclen_branch br;
-  double mid[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES];
+  double mid[ARCLEN_CUT_PIECES], half_width[ARCLEN_CUT_PIECES];
   double mins[ARCLEN_CUT_PIECES - 1];
-  double lest = 0, lgoal, sum = 0;
+  double len_lower = 0, lgoal, sum = 0;
   int n[ARCLEN_CUT_PIECES], nmin, i;
   if (!arclen_hodo_quick(c, 2, &h)) return 0;
   arclen_branch_points(&h, &br);
@@ -25,15 +25,15 @@ static int length_fast(const double *c, double rtol, double *len) {
   nmin = arclen_feet_of(&br, 0, 1, arclen_footcut(rtol), mins);
   for (i = 0; i <= nmin; i++) {
     double a = i ? mins[i - 1] : 0, b = i < nmin ? mins[i] : 1;
-    lest += arclen_hodo_chord(&h, a, b);
-    hh[i] = (b - a) / 2;
-    mid[i] = a + hh[i];
+    len_lower += arclen_hodo_chord(&h, a, b);
+    half_width[i] = (b - a) / 2;
+    mid[i] = a + half_width[i];
   }
-  if (!(lest > 0)) return 0;
-  lgoal = arclen_goal_log2(rtol, lest, 1, arclen_lead_log2(br.lead2));   /* width 1 */
-  if (!arclen_cut_orders(&br, nmin + 1, mid, hh, lgoal, NMAX, n)) return 0;
+  if (!(len_lower > 0)) return 0;
+  lgoal = arclen_goal_log2(rtol, len_lower, 1, arclen_lead_log2(br.lead2));   /* width 1 */
+  if (!arclen_cut_orders(&br, nmin + 1, mid, half_width, lgoal, NMAX, n)) return 0;
   for (i = 0; i <= nmin; i++)
-    sum += arclen_apply_rule(&h, arclen_rule_at_least(n[i]), mid[i], hh[i]);
+    sum += arclen_apply_rule(&h, arclen_rule_at_least(n[i]), mid[i], half_width[i]);
   *len = arclen_times_pow2(sum, h.exp);
   return 1;
 }

@@ -6,7 +6,7 @@
 ** or eight of them in one packed instruction about as often as one: SSE2
 ** (every x86-64) puts the two points of a pair in one register, AVX two
 ** pairs, AVX-512 four.  Each lane does the scalar code's operations in its
-** order (c + (-hh) x is c - hh x exactly; no FMA contraction, see the
+** order (c + (-half_width) x is c - half_width x exactly; no FMA contraction, see the
 ** Makefile) and each pair's two speeds are added as the scalar code adds
 ** them.  The pairs go to four sums in turn, added up as (s0 + s1) + (s2 +
 ** s3) at the end -- one sum in a chain of additions would bound the wide
@@ -29,15 +29,15 @@
 #define HAVE_AVX_KERNEL 1
 #endif
 
-/* Pair i: w_i (f(c - hh x_i) + f(c + hh x_i)). */
+/* Pair i: w_i (f(c - half_width x_i) + f(c + half_width x_i)). */
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
 static inline double pair_scalar(const arclen_hodo *h, const double *x,
                                  const double *w, int i, double c,
-                                 double hh) {
-  return w[i] * (arclen_hodo_speed(h, c - hh * x[i]) +
-                 arclen_hodo_speed(h, c + hh * x[i]));
+                                 double half_width) {
+  return w[i] * (arclen_hodo_speed(h, c - half_width * x[i]) +
+                 arclen_hodo_speed(h, c + half_width * x[i]));
 }
 
 /* The pairs from i (a multiple of 4 after i0) to half, into acc[0..] in
@@ -47,25 +47,25 @@ __attribute__((always_inline))
 #endif
 static inline double finish(const arclen_hodo *h, const double *x,
                             const double *w, int i, int half, double c,
-                            double hh, double acc[4]) {
+                            double half_width, double acc[4]) {
   int k;
-  for (k = 0; i < half; i++, k++) acc[k] += pair_scalar(h, x, w, i, c, hh);
+  for (k = 0; i < half; i++, k++) acc[k] += pair_scalar(h, x, w, i, c, half_width);
   return (acc[0] + acc[1]) + (acc[2] + acc[3]);
 }
 
 static double pairs_scalar(const arclen_hodo *h, const double *x,
                            const double *w, int i, int half, double c,
-                           double hh, double s) {
+                           double half_width, double s) {
   double acc[4];
   acc[0] = s;
   acc[1] = acc[2] = acc[3] = 0;
   for (; i + 3 < half; i += 4) {
-    acc[0] += pair_scalar(h, x, w, i, c, hh);
-    acc[1] += pair_scalar(h, x, w, i + 1, c, hh);
-    acc[2] += pair_scalar(h, x, w, i + 2, c, hh);
-    acc[3] += pair_scalar(h, x, w, i + 3, c, hh);
+    acc[0] += pair_scalar(h, x, w, i, c, half_width);
+    acc[1] += pair_scalar(h, x, w, i + 1, c, half_width);
+    acc[2] += pair_scalar(h, x, w, i + 2, c, half_width);
+    acc[3] += pair_scalar(h, x, w, i + 3, c, half_width);
   }
-  return finish(h, x, w, i, half, c, hh, acc);
+  return finish(h, x, w, i, half, c, half_width, acc);
 }
 
 #if defined(__SSE2__)
@@ -93,7 +93,7 @@ static inline void broadcast2(const arclen_hodo *h, coef2 *k) {
   k->z0 = _mm_set1_pd(h->a0[2]);
 }
 
-/* Pair i in the two lanes, c - hh x_i in the low one; dim3 is a constant
+/* Pair i in the two lanes, c - half_width x_i in the low one; dim3 is a constant
 ** in each caller. */
 #if defined(__GNUC__)
 __attribute__((always_inline))
@@ -115,8 +115,8 @@ __attribute__((always_inline))
 #endif
 static inline double pairs_sse2_dim(const arclen_hodo *h, const double *x,
                                     const double *w, int i, int half,
-                                    double c, double hh, double s, int dim3) {
-  const __m128d cc = _mm_set1_pd(c), lanes = _mm_set_pd(hh, -hh);
+                                    double c, double half_width, double s, int dim3) {
+  const __m128d cc = _mm_set1_pd(c), lanes = _mm_set_pd(half_width, -half_width);
   coef2 k;
   double acc[4];
   broadcast2(h, &k);
@@ -128,14 +128,14 @@ static inline double pairs_sse2_dim(const arclen_hodo *h, const double *x,
     acc[2] += pair_sse2(&k, cc, lanes, x, w, i + 2, dim3);
     acc[3] += pair_sse2(&k, cc, lanes, x, w, i + 3, dim3);
   }
-  return finish(h, x, w, i, half, c, hh, acc);
+  return finish(h, x, w, i, half, c, half_width, acc);
 }
 
 static double pairs_sse2(const arclen_hodo *h, const double *x,
                          const double *w, int i, int half, double c,
-                         double hh, double s) {
-  return h->dim == 3 ? pairs_sse2_dim(h, x, w, i, half, c, hh, s, 1)
-                     : pairs_sse2_dim(h, x, w, i, half, c, hh, s, 0);
+                         double half_width, double s) {
+  return h->dim == 3 ? pairs_sse2_dim(h, x, w, i, half, c, half_width, s, 1)
+                     : pairs_sse2_dim(h, x, w, i, half, c, half_width, s, 0);
 }
 #else
 #define pairs_sse2 pairs_scalar
@@ -152,8 +152,8 @@ static double pairs_sse2(const arclen_hodo *h, const double *x,
 /* The coefficients of the hodograph, each broadcast to all lanes. */
 typedef struct coef4 { __m256d x2, x1, x0, y2, y1, y0, z2, z1, z0; } coef4;
 
-/* Pairs i and i + 1 in one register -- lanes c - hh x_i, c - hh x_i+1,
-** c + hh x_i, c + hh x_i+1 -- so that adding its halves gives both pairs'
+/* Pairs i and i + 1 in one register -- lanes c - half_width x_i, c - half_width x_i+1,
+** c + half_width x_i, c + half_width x_i+1 -- so that adding its halves gives both pairs'
 ** sums at once. */
 __attribute__((target("avx"), always_inline))
 static inline __m128d two_pairs_avx(const coef4 *k, __m256d cc,
@@ -175,9 +175,9 @@ static inline __m128d two_pairs_avx(const coef4 *k, __m256d cc,
 __attribute__((target("avx"), always_inline))
 static inline double pairs_avx_dim(const arclen_hodo *h, const double *x,
                                    const double *w, int i, int half,
-                                   double c, double hh, double s, int dim3) {
+                                   double c, double half_width, double s, int dim3) {
   const __m256d cc = _mm256_set1_pd(c);
-  const __m256d lanes = _mm256_set_pd(hh, hh, -hh, -hh);
+  const __m256d lanes = _mm256_set_pd(half_width, half_width, -half_width, -half_width);
   __m128d s01 = _mm_set_pd(0, s), s23 = _mm_setzero_pd();
   coef4 k;
   double acc[4];
@@ -196,15 +196,15 @@ static inline double pairs_avx_dim(const arclen_hodo *h, const double *x,
   }
   _mm_storeu_pd(acc, s01);
   _mm_storeu_pd(acc + 2, s23);
-  return finish(h, x, w, i, half, c, hh, acc);
+  return finish(h, x, w, i, half, c, half_width, acc);
 }
 
 __attribute__((target("avx")))
 static double pairs_avx(const arclen_hodo *h, const double *x,
                         const double *w, int i, int half, double c,
-                        double hh, double s) {
-  return h->dim == 3 ? pairs_avx_dim(h, x, w, i, half, c, hh, s, 1)
-                     : pairs_avx_dim(h, x, w, i, half, c, hh, s, 0);
+                        double half_width, double s) {
+  return h->dim == 3 ? pairs_avx_dim(h, x, w, i, half, c, half_width, s, 1)
+                     : pairs_avx_dim(h, x, w, i, half, c, half_width, s, 0);
 }
 
 #define SQUARE8(a2, a1, a0, t)                                              \
@@ -214,15 +214,15 @@ static double pairs_avx(const arclen_hodo *h, const double *x,
       _mm512_add_pd(_mm512_mul_pd(_mm512_add_pd(_mm512_mul_pd(a2, t), a1),  \
                                   t), a0))
 
-/* Four pairs in one register, the c - hh x half below, and the four sums
+/* Four pairs in one register, the c - half_width x half below, and the four sums
 ** in the lanes of one accumulator. */
 __attribute__((target("avx512f"), always_inline))
 static inline double pairs_avx512_dim(const arclen_hodo *h, const double *x,
                                       const double *w, int i, int half,
-                                      double c, double hh, double s,
+                                      double c, double half_width, double s,
                                       int dim3) {
   const __m512d cc = _mm512_set1_pd(c);
-  const __m512d lanes = _mm512_set_pd(hh, hh, hh, hh, -hh, -hh, -hh, -hh);
+  const __m512d lanes = _mm512_set_pd(half_width, half_width, half_width, half_width, -half_width, -half_width, -half_width, -half_width);
   const __m512d x2 = _mm512_set1_pd(h->a2[0]), x1 = _mm512_set1_pd(h->a1[0]);
   const __m512d x0 = _mm512_set1_pd(h->a0[0]), y2 = _mm512_set1_pd(h->a2[1]);
   const __m512d y1 = _mm512_set1_pd(h->a1[1]), y0 = _mm512_set1_pd(h->a0[1]);
@@ -242,15 +242,15 @@ static inline double pairs_avx512_dim(const arclen_hodo *h, const double *x,
                       _mm512_extractf64x4_pd(f, 1))));
   }
   _mm256_storeu_pd(acc, sums);
-  return finish(h, x, w, i, half, c, hh, acc);
+  return finish(h, x, w, i, half, c, half_width, acc);
 }
 
 __attribute__((target("avx512f")))
 static double pairs_avx512(const arclen_hodo *h, const double *x,
                            const double *w, int i, int half, double c,
-                           double hh, double s) {
-  return h->dim == 3 ? pairs_avx512_dim(h, x, w, i, half, c, hh, s, 1)
-                     : pairs_avx512_dim(h, x, w, i, half, c, hh, s, 0);
+                           double half_width, double s) {
+  return h->dim == 3 ? pairs_avx512_dim(h, x, w, i, half, c, half_width, s, 1)
+                     : pairs_avx512_dim(h, x, w, i, half, c, half_width, s, 0);
 }
 
 static int have_avx(void) {
@@ -267,22 +267,22 @@ static int have_avx512(void) {
 
 double arclen_speed_pairs_by(int kernel, const arclen_hodo *h,
                              const double *x, const double *w, int i0,
-                             int half, double c, double hh, double s) {
+                             int half, double c, double half_width, double s) {
   switch (kernel) {
     case ARCLEN_KERNEL_SCALAR:
-      return pairs_scalar(h, x, w, i0, half, c, hh, s);
+      return pairs_scalar(h, x, w, i0, half, c, half_width, s);
     case ARCLEN_KERNEL_SSE2:
-      return pairs_sse2(h, x, w, i0, half, c, hh, s);
+      return pairs_sse2(h, x, w, i0, half, c, half_width, s);
 #if defined(HAVE_AVX_KERNEL)
     case ARCLEN_KERNEL_AVX:
-      if (have_avx()) return pairs_avx(h, x, w, i0, half, c, hh, s);
-      return pairs_sse2(h, x, w, i0, half, c, hh, s);
+      if (have_avx()) return pairs_avx(h, x, w, i0, half, c, half_width, s);
+      return pairs_sse2(h, x, w, i0, half, c, half_width, s);
     case ARCLEN_KERNEL_AVX512:
-      if (have_avx512()) return pairs_avx512(h, x, w, i0, half, c, hh, s);
-      return pairs_sse2(h, x, w, i0, half, c, hh, s);
+      if (have_avx512()) return pairs_avx512(h, x, w, i0, half, c, half_width, s);
+      return pairs_sse2(h, x, w, i0, half, c, half_width, s);
 #endif
     default:
-      return arclen_speed_pairs(h, x, w, i0, half, c, hh, s);
+      return arclen_speed_pairs(h, x, w, i0, half, c, half_width, s);
   }
 }
 
@@ -300,10 +300,10 @@ const char *arclen_speed_kernel(void) {
 
 double arclen_speed_pairs(const arclen_hodo *h, const double *x,
                           const double *w, int i0, int half, double c,
-                          double hh, double s) {
+                          double half_width, double s) {
 #if defined(HAVE_AVX_KERNEL)
-  if (have_avx512()) return pairs_avx512(h, x, w, i0, half, c, hh, s);
-  if (have_avx()) return pairs_avx(h, x, w, i0, half, c, hh, s);
+  if (have_avx512()) return pairs_avx512(h, x, w, i0, half, c, half_width, s);
+  if (have_avx()) return pairs_avx(h, x, w, i0, half, c, half_width, s);
 #endif
-  return pairs_sse2(h, x, w, i0, half, c, hh, s);
+  return pairs_sse2(h, x, w, i0, half, c, half_width, s);
 }

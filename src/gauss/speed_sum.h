@@ -16,13 +16,13 @@ enum {
   ARCLEN_KERNEL_AVX512     /* four pairs per packed square root */
 };
 
-/* s + sum over i in [i0, half) of w[i] (f(c - hh x[i]) + f(c + hh x[i])),
+/* s + sum over i in [i0, half) of w[i] (f(c - half_width x[i]) + f(c + half_width x[i])),
 ** f the speed on h (arclen_hodo_speed): each pair's two speeds added
 ** first, pair i into sum (i - i0) mod 4 (s starts the first), and the
 ** sums added up as (s0 + s1) + (s2 + s3). */
 double arclen_speed_pairs(const arclen_hodo *h, const double *x,
                           const double *w, int i0, int half, double c,
-                          double hh, double s);
+                          double half_width, double s);
 
 /* The name of the kernel arclen_speed_pairs runs here: "avx512", "avx",
 ** "sse2" or "scalar". */
@@ -32,6 +32,6 @@ const char *arclen_speed_kernel(void);
 ** this build or machine lacks falls back to a narrower one. */
 double arclen_speed_pairs_by(int kernel, const arclen_hodo *h,
                              const double *x, const double *w, int i0,
-                             int half, double c, double hh, double s);
+                             int half, double c, double half_width, double s);
 
 #endif

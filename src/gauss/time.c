@@ -10,15 +10,15 @@
 ** rule error of g, which the tolerance's other half covers), and Taylor
 ** gives |R| <= max |f'| d^2 / 2.  On the piece f is analytic inside its
 ** Bernstein ellipse with |f| <= M, which holds a disc of radius
-** r = a_semi - 1 = e / (sqrt(1 + e) + 1) (times hh) about every point of
+** r = a_semi - 1 = e / (sqrt(1 + e) + 1) (times half_width) about every point of
 ** the piece, so |f'| <= M / r (Cauchy's estimate). */
-static double disc_radius(const piece_bound *pb, double hh) {
-  return hh * pb->e / (sqrt(1 + pb->e) + 1);
+static double disc_radius(const piece_bound *pbound, double half_width) {
+  return half_width * pbound->e / (sqrt(1 + pbound->e) + 1);
 }
 
-static int newton_certified(const piece_bound *pb, double hh, double d,
+static int newton_certified(const piece_bound *pbound, double half_width, double d,
                             double tol) {
-  return pb->m * d * d <= 2 * tol * disc_radius(pb, hh);
+  return pbound->m * d * d <= 2 * tol * disc_radius(pbound, half_width);
 }
 
 /* The speed's first and second derivatives at t, where it is f > 0:
@@ -44,11 +44,11 @@ static void speed_slopes(const arclen_hodo *h, double t, double f,
 ** (Cauchy, as for newton_certified).  Returns e when the two are within
 ** tol (1/1024 of it kept for rounding), else 0 (e = 0 means g = 0, which
 ** the caller has taken already). */
-static double second_order_step(const piece_bound *pb, double hh, double d,
+static double second_order_step(const piece_bound *pbound, double half_width, double d,
                                 double f, double f1, double tol) {
-  double r = disc_radius(pb, hh), c = f1 * d * d / (2 * f), e = d - c;
+  double r = disc_radius(pbound, half_width), c = f1 * d * d / (2 * f), e = d - c;
   double res = fabs(f1 / 2 * c * (c - 2 * d)) +
-               pb->m * fabs(e * e * e) / (3 * r * r);
+               pbound->m * fabs(e * e * e) / (3 * r * r);
   return res <= tol * (1 - 1.0 / 1024) ? e : 0;
 }
 
@@ -104,7 +104,7 @@ static double refine_guess(integrator *in, double a, double b, double plen,
 }
 
 /* The integral over [x, y] inside an accepted piece to within target
-** (scaled units).  The piece's Bernstein ellipse (eb, half-width hp) holds
+** (scaled units).  The piece's Bernstein ellipse (ebound, half-width hp) holds
 ** the disc of radius r = hp (a_semi - 1) about every point of the piece
 ** (disc_radius), so a short [x, y] of half-width h has the
 ** ellipse of semi-minor axis r inside it, rho = r/h + sqrt(1 + (r/h)^2),
@@ -112,32 +112,32 @@ static double refine_guess(integrator *in, double a, double b, double plen,
 ** rho sets its order, for a few operations.  A longer one takes its own
 ** branch-cut bound, or the piece's rule r when that is not at hand. */
 static double sub_integral(integrator *in, double x, double y, double target,
-                           const piece_bound *eb, double hp,
+                           const piece_bound *ebound, double hp,
                            const arclen_gauss_rule *r) {
   double c = x + (y - x) / 2, h = (y - x) / 2;
-  double rad = disc_radius(eb, hp);
+  double rad = disc_radius(ebound, hp);
   int n = 0;
   if (!(h > 0)) return 0;
   if (h < rad / 2) {
     double beta = rad / h, rho = beta + sqrt(1 + beta * beta);
-    double lnum = arclen_rough_log2(h * (64.0 / 15.0) * eb->m / target) -
+    double lnum = arclen_rough_log2(h * (64.0 / 15.0) * ebound->m / target) -
                   arclen_rough_log2(rho * rho - 1) + 2 * ARCLEN_LOG2_ERR;
     double nn = 1 + lnum / (2 * (arclen_rough_log2(rho) - ARCLEN_LOG2_ERR));
     n = nn <= 2 ? 2 : nn < ARCLEN_GAUSS_MAX ? (int)ceil(nn) : 0;
   }
-  if (!n && !eb->inside && eb->log_rho2 > 0) {
+  if (!n && !ebound->inside && ebound->log_rho2 > 0) {
     /* The piece's own ellipse: [x, y] lies in the piece, so the ellipse of
     ** [x, y] with the piece's rho lies inside the piece's (the Green's
     ** function of a subset is the larger), where |f| <= M: the bound at
     ** the piece's rho, M and 2^logc = M rho^2/(rho^2 - 1), scaled by h. */
     double nn = (arclen_rough_log2(h * (64.0 / 15.0) / target) + ARCLEN_LOG2_ERR +
-                 eb->logc) / eb->log_rho2;
+                 ebound->logc) / ebound->log_rho2;
     n = nn <= 2 ? 2 : nn < ARCLEN_GAUSS_MAX ? (int)ceil(nn) : 0;
   }
   if (!n) arclen_integ_prepare_bounds(in);   /* taken when first needed */
   if (!n && in->cc.ok) {
     arclen_cut_piece cp;
-    double lg = arclen_rough_log2(target) - arclen_rough_log2(h) - in->lkl - 2 * ARCLEN_LOG2_ERR;
+    double lg = arclen_rough_log2(target) - arclen_rough_log2(h) - in->lead_log - 2 * ARCLEN_LOG2_ERR;
     arclen_cut_bound(&in->cc, c, h, &cp);
     n = arclen_cut_order(&in->cc, &cp, lg, ARCLEN_GAUSS_MAX, NULL);
   }
@@ -147,12 +147,12 @@ static double sub_integral(integrator *in, double x, double y, double target,
 }
 
 /* An accepted piece [a, b] (half-width hp), its length plen and rule r
-** (scaled units), and its Bernstein ellipse eb (M and e for Cauchy's
+** (scaled units), and its Bernstein ellipse ebound (M and e for Cauchy's
 ** estimates), shared by every search inside it. */
 typedef struct piece_search {
   double a, b, plen, hp;
   const arclen_gauss_rule *r;
-  piece_bound eb;
+  piece_bound ebound;
 } piece_search;
 
 static void search_piece(integrator *in, piece_search *p, double a, double b,
@@ -162,7 +162,7 @@ static void search_piece(integrator *in, piece_search *p, double a, double b,
   p->plen = plen;
   p->hp = (b - a) / 2;
   p->r = r;
-  arclen_bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &p->eb);
+  arclen_bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &p->ebound);
   in->evals += 2;
 }
 
@@ -188,9 +188,9 @@ static double newton_search(integrator *in, const piece_search *p,
   for (it = 0; it < 100; it++) {
     double g, f, next;
     if (t - lo <= hi - t)
-      g = slo + sub_integral(in, lo, t, share, &p->eb, p->hp, p->r) - goal;
+      g = slo + sub_integral(in, lo, t, share, &p->ebound, p->hp, p->r) - goal;
     else
-      g = shi - sub_integral(in, t, hi, share, &p->eb, p->hp, p->r) - goal;
+      g = shi - sub_integral(in, t, hi, share, &p->ebound, p->hp, p->r) - goal;
     share /= 2;
     f = arclen_hodo_speed(&in->h, t);
     in->evals++;
@@ -205,13 +205,13 @@ static double newton_search(integrator *in, const piece_search *p,
     next = f > 0 ? t - g / f : lo + (hi - lo) / 2;
     if (!(f > 0 && next > lo && next < hi)) {   /* a Newton step only */
       next = lo + (hi - lo) / 2;
-    } else if (newton_certified(&p->eb, p->hp, next - t, tol)) {
+    } else if (newton_certified(&p->ebound, p->hp, next - t, tol)) {
       t = next;
       break;
     } else {
       double f1, f2, e;
       speed_slopes(&in->h, t, f, &f1, &f2);
-      e = second_order_step(&p->eb, p->hp, -g / f, f, f1, tol);
+      e = second_order_step(&p->ebound, p->hp, -g / f, f, f1, tol);
       if (e != 0 && t + e > lo && t + e < hi) {
         t = t + e;
         break;
@@ -257,18 +257,18 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
 ** nothing done, when those orders are not to be had (a piece to cut, a
 ** real or far root): the caller then takes the stack. */
 static int time_first_pieces(integrator *in, double goal, double *t) {
-  double c[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES], cum = 0;
+  double c[ARCLEN_CUT_PIECES], half_width[ARCLEN_CUT_PIECES], cum = 0;
   int n[ARCLEN_CUT_PIECES], i;
-  if (!arclen_integ_first_orders(in, c, hh, n)) return 0;
+  if (!arclen_integ_first_orders(in, c, half_width, n)) return 0;
   for (i = 0; i <= in->nmin; i++) {
     const arclen_gauss_rule *r = arclen_rule_at_least(n[i]);
-    double piece = arclen_apply_rule(&in->h, r, c[i], hh[i]);
+    double piece = arclen_apply_rule(&in->h, r, c[i], half_width[i]);
     in->evals += r->n;
     in->pieces++;
     if (cum + piece >= goal) {
       if (i == in->nmin && goal >= cum + piece) return 1;   /* t = 1 */
       *t = solve_in_piece(in, arclen_first_from(in, i), arclen_first_to(in, i), piece,
-                          goal - cum, in->rtol * in->lest, r);
+                          goal - cum, in->rtol * in->len_lower, r);
       return 1;
     }
     cum += piece;
@@ -279,7 +279,7 @@ static int time_first_pieces(integrator *in, double goal, double *t) {
 int arclen_time_gauss(const double *c, int dim, double s,
                       const arclen_opts *o, double *t, arclen_info *info) {
   integrator in;
-  double cum = 0, pa, pb, piece, goal;
+  double cum = 0, pa, pbound, piece, goal;
   const arclen_gauss_rule *r;
   int e;
   e = arclen_integ_check_args(c, dim, o->rtol, 0, 1);   /* time ignores o->t0, t1 */
@@ -301,11 +301,11 @@ int arclen_time_gauss(const double *c, int dim, double s,
   }
   arclen_integ_prepare_bounds(&in);
   arclen_integ_push_initial(&in);
-  while (arclen_integ_next_piece(&in, &pa, &pb, &piece, &r)) {
+  while (arclen_integ_next_piece(&in, &pa, &pbound, &piece, &r)) {
     if (cum + piece >= goal) {
       if (in.top == 0 && goal >= cum + piece) break;   /* s >= L: t = 1 */
-      *t = solve_in_piece(&in, pa, pb, piece, goal - cum,
-                          o->rtol * 0.25 * in.lest, r);
+      *t = solve_in_piece(&in, pa, pbound, piece, goal - cum,
+                          o->rtol * 0.25 * in.len_lower, r);
       break;
     }
     cum += piece;
@@ -319,7 +319,7 @@ int arclen_time_gauss(const double *c, int dim, double s,
 ** time_first_pieces), else the integrator's stack (as arclen_time_gauss). */
 typedef struct piece_walk {
   int fast, k;
-  double c[ARCLEN_CUT_PIECES], hh[ARCLEN_CUT_PIECES];
+  double c[ARCLEN_CUT_PIECES], half_width[ARCLEN_CUT_PIECES];
   int n[ARCLEN_CUT_PIECES];
 } piece_walk;
 
@@ -328,7 +328,7 @@ static int walk_next(integrator *in, piece_walk *w, double *a, double *b,
   if (w->fast) {
     if (w->k > in->nmin) return 0;
     *r = arclen_rule_at_least(w->n[w->k]);
-    *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->hh[w->k]);
+    *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->half_width[w->k]);
     *a = arclen_first_from(in, w->k);
     *b = arclen_first_to(in, w->k);
     in->evals += (*r)->n;
@@ -395,21 +395,21 @@ int arclen_times(const double *c, int dim, const double *s, long n,
   for (j = i; j < n; j++) t[j] = 1;
   if (i < n && arclen_integ_start(&in, c, dim, 0, 1, rtol * 0.25,
                                   TIME_FOOTCUT)) {
-    w.fast = arclen_integ_first_orders(&in, w.c, w.hh, w.n);
+    w.fast = arclen_integ_first_orders(&in, w.c, w.half_width, w.n);
     w.k = 0;
     if (!w.fast) {
       arclen_integ_prepare_bounds(&in);
       arclen_integ_push_initial(&in);
     }
-    tol = in.rtol * in.lest;
+    tol = in.rtol * in.len_lower;
     while (i < n) {
-      double pa, pb, plen;
+      double pa, pbound, plen;
       const arclen_gauss_rule *r;
       int last;
       long m, q;
       piece_search p;
       bracket bk;
-      if (!walk_next(&in, &w, &pa, &pb, &plen, &r, &last)) break;
+      if (!walk_next(&in, &w, &pa, &pbound, &plen, &r, &last)) break;
       m = goals_in_piece(s, i, n, -in.h.exp, cum, plen, last);
       if (m > 0) {
         /* A chain of searches, each from the bracket the last one left,
@@ -418,7 +418,7 @@ int arclen_times(const double *c, int dim, const double *s, long n,
         ** that the s values err by less than tol, as one search's do, and
         ** the chain's roundings stay within CHAIN additions. */
         double budget = tol / (double)(m < CHAIN ? m : CHAIN);
-        search_piece(&in, &p, pa, pb, plen, r);
+        search_piece(&in, &p, pa, pbound, plen, r);
         for (q = 0; q < m; q++, i++) {
           double goal = ldexp(s[i], -in.h.exp) - cum, guess;
           if (q > 0 && s[i] == s[i - 1]) {
@@ -426,7 +426,7 @@ int arclen_times(const double *c, int dim, const double *s, long n,
             continue;
           }
           if (q % CHAIN == 0 || goal >= bk.shi) {   /* the piece's end */
-            bk.hi = pb;
+            bk.hi = pbound;
             bk.shi = plen;
           }
           if (q % CHAIN == 0) {
@@ -434,8 +434,8 @@ int arclen_times(const double *c, int dim, const double *s, long n,
             bk.slo = 0;
           }
           if (bk.lo == pa) {
-            guess = refine_guess(&in, pa, pb, plen, goal, r,
-                                 hermite_guess(&in.h, pa, pb, plen, goal));
+            guess = refine_guess(&in, pa, pbound, plen, goal, r,
+                                 hermite_guess(&in.h, pa, pbound, plen, goal));
           } else {
             guess = chained_guess(&in, &bk, goal);
           }
