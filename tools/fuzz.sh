@@ -13,7 +13,12 @@
 #                                        20261122), from the committed seeds
 #                                        only: the same inputs on every
 #                                        machine (CI's pass)
+#   Harnesses named in fuzz/known/OPEN have found a bug that is not fixed
+#   yet (CHANGELOG, "Known limitations"; the input is in fuzz/known/): the
+#   fixed pass says so and leaves them out until the fix; timed runs keep
+#   them.
 cd "$(dirname "$0")/.." || exit 2
+OPEN=$(grep -v '^#' fuzz/known/OPEN 2>/dev/null)
 SECONDS_EACH=${FUZZ_SECONDS:-15}
 OUT=build/fuzz
 make -s -C fuzz >/dev/null || { echo "fuzz: build failed"; echo "0 passed, 1 failed"; exit 1; }
@@ -23,6 +28,10 @@ TOTAL=0
 for bin in "$OUT"/fuzz_*; do
   h=$(basename "$bin")
   [ -x "$bin" ] || continue
+  if [ -n "$FUZZ_RUNS" ] && echo " $OPEN " | grep -q " $h "; then
+    echo "open $h: left out of the fixed pass, a known bug (fuzz/known/OPEN)"
+    continue
+  fi
   seeds=fuzz/corpus/$h
   work=build/fuzz/corpus/$h
   crashes=$OUT/crashes/$h
