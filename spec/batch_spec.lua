@@ -9,13 +9,7 @@ local function same(a, b)
   return a == b and (a ~= 0 or 1 / a == 1 / b)
 end
 
-local function rng(seed)
-  local x = seed
-  return function()
-    x = (16807 * x) % 2147483647
-    return x / 2147483647
-  end
-end
+local rng = require("helpers").rng
 
 describe("arclen.lengths", function()
   for _, dim in ipairs({2, 3}) do

@@ -7,14 +7,7 @@
 -- to the bit -- lengths (2D, 3D, sub-ranges) and times.
 local arclen = require("arclen")
 
--- Park-Miller: the same curves under every Lua (products < 2^46, exact).
-local function rng(seed)
-  local x = seed
-  return function()
-    x = (16807 * x) % 2147483647
-    return x / 2147483647
-  end
-end
+local rng = require("helpers").rng   -- the same curves under every Lua
 
 local function curves(n, dim, seed)
   local r, out = rng(seed), {}

@@ -106,4 +106,14 @@ function helpers.error_of(f, ...)
   return tostring(msg)
 end
 
+-- Park-Miller's minimal standard generator: the same numbers in [0, 1)
+-- under every Lua (the products stay below 2^46, exact in doubles).
+function helpers.rng(seed)
+  local x = seed
+  return function()
+    x = (16807 * x) % 2147483647
+    return x / 2147483647
+  end
+end
+
 return helpers

@@ -23,13 +23,7 @@ local function ds(c, t, T)
   return math.abs(t - T) * math.max(speed(c, t), speed(c, T))
 end
 
-local function rng(seed)
-  local x = seed
-  return function()
-    x = (16807 * x) % 2147483647
-    return x / 2147483647
-  end
-end
+local rng = require("helpers").rng
 
 for _, file in ipairs({"curves2d.tsv", "curves3d.tsv"}) do
   describe("arclen.times against mpmath (" .. file .. ")", function()
