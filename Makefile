@@ -63,6 +63,7 @@ $(OUT)/%.o: src/%.c $(HEADERS)
 	$(CC) $(CFLAGS) $(CORE_FLAGS) -Isrc -I$(LUA_INC) -c $< -o $@
 
 $(BUILD)/libarclen.a: $(CORE_OBJ)
+	rm -f $@
 	ar rcs $@ $^
 
 $(MODULE): $(CORE_OBJ) $(BIND_OBJ)

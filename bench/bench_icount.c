@@ -6,12 +6,13 @@
 ** machine's state as times do, and they tell where a method's time goes
 ** when its code is bound by how many instructions issue, not by latency.
 **
-**   bench_icount gl24 | one | multi | all | all15
+**   bench_icount gl24 | one | multi | all | all15 | time | time15
 **
 ** gl24: the fixed 24-point rule on every curve; one, multi: the default
 ** method at tol 1e-12 on the curves it integrates in one piece, in more;
-** all, all15: on every curve at tol 1e-12, 1e-15.  Prints the number of
-** calls measured.
+** all, all15: on every curve at tol 1e-12, 1e-15; time, time15:
+** arclen_time at L/2 (as bench_length asks) at tol 1e-12, 1e-15.  Prints
+** the number of calls measured.
 */
 #include <stdio.h>
 #include <string.h>
@@ -28,7 +29,8 @@ static volatile double sink;
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
-static double measured(const double *c, int gl24, double rtol) {
+static double measured(const double *c, int gl24, double rtol, double half) {
+  if (half > 0) return arclen_time(c, half, rtol);
   return gl24 ? arclen_length_gl(c, 2, 24) : arclen_length(c, rtol);
 }
 
@@ -45,16 +47,20 @@ int main(int argc, char **argv) {
   const char *mode = argc > 1 ? argv[1] : "";
   int gl24 = strcmp(mode, "gl24") == 0, one = strcmp(mode, "one") == 0;
   int multi = strcmp(mode, "multi") == 0, all15 = strcmp(mode, "all15") == 0;
+  int time15 = strcmp(mode, "time15") == 0, time = time15 || strcmp(mode, "time") == 0;
   int i, calls = 0;
-  if (!gl24 && !one && !multi && !all15 && strcmp(mode, "all") != 0) {
-    fprintf(stderr, "usage: bench_icount gl24|one|multi|all|all15\n");
+  if (!gl24 && !one && !multi && !all15 && !time && strcmp(mode, "all") != 0) {
+    fprintf(stderr, "usage: bench_icount gl24|one|multi|all|all15|time|time15\n");
     return 2;
   }
   bench_random_curves(curves, NCURVES, 20261121);
   for (i = 0; i < NCURVES; i++) {
     const double *c = curves + 8 * i;
     if ((one || multi) && (pieces_of(c) > 1) != multi) continue;
-    sink = measured(c, gl24, all15 ? 1e-15 : 1e-12);
+    double rtol = all15 || time15 ? 1e-15 : 1e-12;
+    /* L/2 outside the collected function, as bench_length's halves */
+    double half = time ? arclen_length(c, 1e-15) / 2 : 0;
+    sink = measured(c, gl24, rtol, half);
     calls++;
   }
   printf("%d\n", calls);
