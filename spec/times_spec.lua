@@ -251,3 +251,58 @@ describe("arclen.path: the one-pass walk", function()
     assert.matches("distance 1 must be finite", msg)
   end)
 end)
+
+-- Cubics whose speed nearly stops deeper than doubles resolve (z'' ~ 2^-530
+-- of z' after scaling: a root of z' at ~2^530 and one 2^-530 off the axis
+-- at t ~ 1/2), from tools/ref_stops.py: the far root once went missing
+-- from the inverse's bound of the speed, which then certified Newton steps
+-- 2e-4 L off.  Coordinates to 2^1001: the speed is taken scaled.
+describe("arclen.time and arclen.times where the speed nearly stops", function()
+  local rows = H.tsv("deep_stops.tsv")
+  local function cubic(row)
+    local c = {}
+    for i = 0, 4 * tonumber(row.dim) - 1 do c[#c + 1] = tonumber(row["c" .. i]) end
+    return c
+  end
+  local function scaled_speed(c, t)
+    local d, m, s = {arclen.derivative(c, t)}, 0, 0
+    for _, v in ipairs(d) do m = math.max(m, math.abs(v)) end
+    if m == 0 then return 0 end
+    for _, v in ipairs(d) do s = s + (v / m) ^ 2 end
+    return m * math.sqrt(s)
+  end
+  local curves = {}
+  for _, row in ipairs(rows) do
+    local cv = curves[#curves]
+    if not cv or cv.id ~= row.id then
+      cv = {id = row.id, c = cubic(row), L = tonumber(row.L), u = {}, T = {}}
+      curves[#curves + 1] = cv
+    end
+    cv.u[#cv.u + 1] = tonumber(row.u)
+    cv.T[#cv.T + 1] = tonumber(row.T)
+  end
+  it("the reference holds the curves and the distances", function()
+    assert.are.equal(9, #curves)
+    assert.are.equal(9 * 15, #rows)
+  end)
+  for _, tol in ipairs({1e-6, 1e-9, 1e-12, 1e-15}) do
+    it(("every distance within %g L (tol %g), one at a time and in one pass"):format(bound(tol), tol), function()
+      local worst = H.worst()
+      for _, cv in ipairs(curves) do
+        local s = {}
+        for q, u in ipairs(cv.u) do s[q] = u * cv.L end
+        local ts = arclen.times(cv.c, s, {tol = tol})
+        for q = 1, #s do
+          local t = arclen.time(cv.c, s[q], {tol = tol})
+          local T = cv.T[q]
+          for _, got in ipairs({t, ts[q]}) do
+            local e = math.abs(got - T) * math.max(scaled_speed(cv.c, got), scaled_speed(cv.c, T))
+            worst:add(e / cv.L, cv.id .. " u " .. cv.u[q])
+          end
+        end
+      end
+      assert.is_true(worst.err <= bound(tol),
+        ("worst %s: %.3g > %.3g"):format(tostring(worst.id), worst.err, bound(tol)))
+    end)
+  end
+end)

@@ -80,11 +80,21 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
       add_pair(b, 0, REAL_ROOT_RTOL2);
       return;
     }
-    /* q / A2 = q conj(A2) / |A2|^2 and A0 / q = A0 conj(q) / |q|^2 */
-    sr = (qr * x2 + qi * y2) * inv2;
-    si = (qi * x2 - qr * y2) * inv2;
-    add_pair(b, sr + I * si, REAL_ROOT_RTOL2);
-    nq = 1 / (qr * qr + qi * qi);
+    nq = qr * qr + qi * qi;
+    if (nq * 0x1p-700 > n2) {
+      /* s1 = q / A2 is beyond 2^350 (1/|A2|^2 may overflow, |A2|^2 may be
+      ** subnormal): on any piece |A2| |t - s1| = |A2 t - q| is |q| to
+      ** within 2^-340, so Q = |q|^2 |t - s2|^2 with s1 dropped, and the
+      ** lead is |q|^2, rounded up, not |A2|^2 (which would leave M short
+      ** by |s1|^2: a false certificate for the inverse) */
+      b->lead2 = nq * (1 + 0x1p-50);
+    } else {
+      /* q / A2 = q conj(A2) / |A2|^2 and A0 / q = A0 conj(q) / |q|^2 */
+      sr = (qr * x2 + qi * y2) * inv2;
+      si = (qi * x2 - qr * y2) * inv2;
+      add_pair(b, sr + I * si, REAL_ROOT_RTOL2);
+    }
+    nq = 1 / nq;
     sr = (x0 * qr + y0 * qi) * nq;
     si = (y0 * qr - x0 * qi) * nq;
     add_pair(b, sr + I * si, REAL_ROOT_RTOL2);
