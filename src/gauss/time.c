@@ -209,13 +209,18 @@ static double newton_search(integrator *in, const piece_search *p,
       t = next;
       break;
     } else {
-      double f1, f2, e;
+      double f1, f2, e, d = -g / f, e3;
       speed_slopes(&in->h, t, f, &f1, &f2);
-      e = second_order_step(&p->ebound, p->hp, -g / f, f, f1, tol);
+      e = second_order_step(&p->ebound, p->hp, d, f, f1, tol);
       if (e != 0 && t + e > lo && t + e < hi) {
         t = t + e;
         break;
       }
+      /* not certified: the next point from the third-order step (series
+      ** reversion, as refine_guess), nearer than Newton's for the same
+      ** slopes */
+      e3 = d + d * d * (-f1 / (2 * f) + d * (f1 * f1 / (2 * f * f) - f2 / (6 * f)));
+      if (t + e3 > lo && t + e3 < hi) next = t + e3;
     }
     if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) break;
     t = next;
