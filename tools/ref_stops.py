@@ -69,30 +69,6 @@ GL_N = 40
 CHECK_N = 56
 
 
-def gl_nodes(n):
-    xs, ws = [], []
-    for i in range(1, n + 1):
-        x = mp.cos(mp.pi * (4 * i - 1) / (4 * n + 2))
-        for _ in range(100):
-            p0, p1 = mpf(1), x
-            for k in range(2, n + 1):
-                p0, p1 = p1, ((2 * k - 1) * x * p1 - (k - 1) * p0) / k
-            dp = n * (x * p1 - p0) / (x * x - 1)
-            dx = p1 / dp
-            x -= dx
-            if abs(dx) < mpf(10) ** -(DPS - 8):
-                break
-        else:
-            raise SystemExit("Legendre nodes: no convergence")
-        p0, p1 = mpf(1), x
-        for k in range(2, n + 1):
-            p0, p1 = p1, ((2 * k - 1) * x * p1 - (k - 1) * p0) / k
-        dp = n * (x * p1 - p0) / (x * x - 1)
-        xs.append(x)
-        ws.append(2 / ((1 - x * x) * dp * dp))
-    return xs, ws
-
-
 class Cubic:
     """The speed |z'(t)| from the exact Bernstein differences."""
 
@@ -132,7 +108,7 @@ def times(coords, dim):
     """L and [(u, T)] for the fractions U."""
     with mp.workdps(DPS):
         cv = Cubic(coords, dim)
-        xs, ws = gl_nodes(GL_N)
+        xs, ws = ref_lengths.gl_nodes(GL_N, DPS)
 
         def gl(a, b):
             h, m = (b - a) / 2, (a + b) / 2
@@ -150,7 +126,7 @@ def times(coords, dim):
             cum.append(cum[-1] + gl(a, b))
         L = cum[-1]
         # the check: its own mesh and rule, compared at each of its points
-        cx, cw = gl_nodes(CHECK_N)
+        cx, cw = ref_lengths.gl_nodes(CHECK_N, DPS)
         three = mpf(3)
         m3 = [mpf(0)] + [ts * (1 - three ** -k) for k in range(1, MESH_K * 2 // 3)]
         m3 += [ts] + [ts + (1 - ts) * three ** -k for k in range(MESH_K * 2 // 3 - 1, 0, -1)]
