@@ -272,14 +272,24 @@ static double integrate_cut(integrator *in, const span *s, double sum) {
 /* The first pieces' middles c and half-widths half_width, and their orders n
 ** straight from the branch points (arclen_cut_orders): 1, or 0 when those
 ** are not to be had (a real or far root, a piece to cut). */
-int arclen_integ_first_orders(const integrator *in, double *c, double *half_width,
-                        int *n) {
+void arclen_integ_first_pieces(const integrator *in, double *c, double *half_width) {
   int i;
   for (i = 0; i <= in->nmin; i++) {
     half_width[i] = (arclen_first_to(in, i) - arclen_first_from(in, i)) / 2;
     c[i] = arclen_first_from(in, i) + half_width[i];
   }
-  return arclen_cut_orders(&in->br, in->nmin + 1, c, half_width, in->lgoal, NMAX, n);
+}
+
+int arclen_integ_orders_of(const integrator *in, int i0, int i1, const double *c,
+                           const double *half_width, int *n) {
+  return arclen_cut_orders(&in->br, i1 - i0, c + i0, half_width + i0, in->lgoal, NMAX,
+                           n + i0);
+}
+
+int arclen_integ_first_orders(const integrator *in, double *c, double *half_width,
+                        int *n) {
+  arclen_integ_first_pieces(in, c, half_width);
+  return arclen_integ_orders_of(in, 0, in->nmin + 1, c, half_width, n);
 }
 
 /* The whole integral.  The first pieces (at most three, between the feet)

@@ -204,6 +204,11 @@ void arclen_integ_prepare_bounds(integrator *in);
 /* The first pieces' middles, half-widths and orders; 0: not to be had. */
 int arclen_integ_first_orders(const integrator *in, double *c, double *half_width,
                               int *n);
+/* The same in two steps: the middles and half-widths of the first pieces,
+** then the orders of pieces i0 <= i < i1 into n[i] (0: not to be had). */
+void arclen_integ_first_pieces(const integrator *in, double *c, double *half_width);
+int arclen_integ_orders_of(const integrator *in, int i0, int i1, const double *c,
+                           const double *half_width, int *n);
 /* The first pieces onto the stack; then next_piece pops them in order. */
 void arclen_integ_push_initial(integrator *in);
 /* The next accepted piece [*from, *to] in increasing t, its length and

@@ -258,14 +258,20 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
 
 /* time's common case, as arclen_integ_integrate() takes it: the first pieces' orders
 ** straight from the branch points (arclen_cut_orders), then their rules in
-** increasing t up to the piece that holds the goal.  Returns 0, with
-** nothing done, when those orders are not to be had (a piece to cut, a
-** real or far root): the caller then takes the stack. */
+** increasing t up to the piece that holds the goal.  The first piece's
+** order comes alone, the others' only when the goal lies past it: at L/2
+** a third of the orders went to pieces never reached.  Returns 0 when
+** those orders are not to be had (a piece to cut, a real or far root):
+** the caller then takes the stack, whose pieces and rules before the
+** goal are the same, so the answer does not depend on where it failed. */
 static int time_first_pieces(integrator *in, double goal, double *t) {
   double c[ARCLEN_CUT_PIECES], half_width[ARCLEN_CUT_PIECES], cum = 0;
   int n[ARCLEN_CUT_PIECES], i;
-  if (!arclen_integ_first_orders(in, c, half_width, n)) return 0;
+  arclen_integ_first_pieces(in, c, half_width);
+  if (!arclen_integ_orders_of(in, 0, 1, c, half_width, n)) return 0;
   for (i = 0; i <= in->nmin; i++) {
+    if (i == 1 && !arclen_integ_orders_of(in, 1, in->nmin + 1, c, half_width, n))
+      return 0;
     const arclen_gauss_rule *r = arclen_rule_at_least(n[i]);
     double piece = arclen_apply_rule(&in->h, r, c[i], half_width[i]);
     in->evals += r->n;
