@@ -80,6 +80,7 @@ local VALID = {
   ["ellipse_arc"] = {arclen.ellipse_arc, {0, 0, 2, 1, 0.3, 0, 2}},
   ["ellipse_conics"] = {arclen.ellipse_conics, {0, 0, 2, 1, 0.3, 0, 2}},
   ["svg_arc"] = {arclen.svg_arc, {0, 0, 5, 3, 30, 0, 1, 8, 2}},
+  ["svg_pathdata"] = {arclen.svg_pathdata, {"M0 0 L1 1 A1 1 0 0 1 2 2", 1e-12, {1, 0, 0, 1, 0, 0}}},
   ["fullcircle"] = {arclen.fullcircle, {}},
   ["fit"] = {arclen.fit, {C2}},
   ["gauss_legendre"] = {arclen.gauss_legendre, {5}},
