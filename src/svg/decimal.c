@@ -4,6 +4,7 @@
 ** by one multiplication or division (Clinger's fast path), the rest by
 ** strtod on a terminated copy.
 */
+#include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -90,4 +91,12 @@ int arclen_decimal_value(const char *s, size_t len, double *v) {
   *v = strtod(p, NULL);
   if (p != buf) free(p);
   return 0;
+}
+
+size_t arclen_decimal_scan(const char *s, size_t n, size_t i, double *v) {
+  size_t exp_at, e = arclen_decimal_mantissa(s, n, i, &exp_at);
+  if (e == i) return i;
+  if (exp_at < n) e = arclen_decimal_exponent(s, n, exp_at);
+  if (arclen_decimal_value(s + i, e - i, v) != 0) return i;
+  return *v > -HUGE_VAL && *v < HUGE_VAL ? e : i;
 }

@@ -22,4 +22,9 @@ size_t arclen_decimal_exponent(const char *s, size_t n, size_t i);
 ** -1 when memory for a very long number ran out. */
 int arclen_decimal_value(const char *s, size_t len, double *v);
 
+/* The number at s[i] with its value in *v: returns the end, or i when
+** there is none, when it is beyond the doubles, or without memory.  An
+** 'e' without digits ends the number before it. */
+size_t arclen_decimal_scan(const char *s, size_t n, size_t i, double *v);
+
 #endif

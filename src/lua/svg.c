@@ -1,16 +1,23 @@
 /*
-** pathdata.c -- the Lua binding of SVG path data (svg/pathdata.c):
+** svg.c -- the Lua binding of the svg area: path data (svg/pathdata.c)
+** and the numbers of SVG's attributes (svg/decimal.c).
 **   arclen.svg_pathdata(d, arc_tol [, T]) -> subpaths
 **                                         or nil, message [, position]
+**   arclen.svg_number(s, i) -> value, next position; or nil
+**   arclen.svg_numbers(s, cap) -> list [, position of the first bad byte];
+**                                 nil when more than cap numbers
+** Positions are 1-based, as string.find's.
 ** subpaths is a list of {x = x0, y = y0, closed = bool, [i] = cubic} with
 ** every cubic a table of 8 numbers (arclen.path builds a path from it).
 ** Bad data is a result, not an error: the message and the 1-based byte
 ** position (none for the transform's overflow), which arclen.svgpath
 ** raises for arclen.path to turn into a "bad argument" message.
 */
+#include <ctype.h>
 #include <math.h>
 
 #include "lua/binding.h"
+#include "svg/decimal.h"
 #include "svg/pathdata.h"
 
 #define BOX "arclen.pathdata"    /* the result's memory, freed by __gc too */
@@ -191,16 +198,69 @@ static int l_svg_pathdata(lua_State *L) {
   return 1;
 }
 
-static const luaL_Reg pathdata_funcs[] = {
+/* ---- numbers of attributes ---------------------------------------------- */
+
+/* Lua's %s (isspace), for the separators of number lists. */
+static int is_lua_space(unsigned char c) { return isspace(c) != 0; }
+
+/* arclen.svg_number(s, i) -> value, next: the number of SVG's grammar (an
+** exponent only when complete) at byte i, or nil when there is none or it
+** is beyond the doubles. */
+static int l_svg_number(lua_State *L) {
+  size_t n, e;
+  const char *s = luaL_checklstring(L, 1, &n);
+  lua_Integer i = luaL_checkinteger(L, 2);
+  double v;
+  if (i < 1 || (size_t)i > n) return lua_pushnil(L), 1;
+  e = arclen_decimal_scan(s, n, (size_t)i - 1, &v);
+  if (e == (size_t)i - 1) return lua_pushnil(L), 1;
+  lua_pushnumber(L, v);
+  lua_pushinteger(L, (lua_Integer)e + 1);
+  return 2;
+}
+
+/* arclen.svg_numbers(s, cap) -> list [, bad]: numbers separated by
+** whitespace and at most one comma (points, viewBox), leading whitespace
+** and commas skipped; bad is the position of the first byte that starts
+** no number.  nil when more than cap numbers would be read. */
+static int l_svg_numbers(lua_State *L) {
+  size_t n, i = 0, count = 0;
+  const char *s = luaL_checklstring(L, 1, &n);
+  lua_Integer cap = luaL_checkinteger(L, 2);
+  lua_newtable(L);
+  while (i < n && (is_lua_space((unsigned char)s[i]) || s[i] == ','))
+    i++;
+  while (i < n) {
+    double v;
+    size_t e;
+    if ((lua_Integer)++count > cap) return lua_pushnil(L), 1;
+    e = arclen_decimal_scan(s, n, i, &v);
+    if (e == i) {
+      lua_pushinteger(L, (lua_Integer)i + 1);
+      return 2;
+    }
+    lua_pushnumber(L, v);
+    lua_rawseti(L, -2, (int)count);
+    i = e;
+    while (i < n && is_lua_space((unsigned char)s[i])) i++;
+    if (i < n && s[i] == ',') i++;
+    while (i < n && is_lua_space((unsigned char)s[i])) i++;
+  }
+  return 1;
+}
+
+static const luaL_Reg svg_funcs[] = {
   {"svg_pathdata", l_svg_pathdata},
+  {"svg_number", l_svg_number},
+  {"svg_numbers", l_svg_numbers},
   {NULL, NULL}
 };
 
-void arclen_open_pathdata(lua_State *L) {
+void arclen_open_svg(lua_State *L) {
   if (luaL_newmetatable(L, BOX)) {
     lua_pushcfunction(L, box_gc);
     lua_setfield(L, -2, "__gc");
   }
   lua_pop(L, 1);
-  luaL_setfuncs(L, pathdata_funcs, 0);
+  luaL_setfuncs(L, svg_funcs, 0);
 }
