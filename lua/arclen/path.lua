@@ -204,12 +204,13 @@ end
 -- chord / 2); default: tol), transform ({a, b, c, d, e, f}: the path's
 -- points mapped by SVG's matrix(a b c d e f); arcs keep their tolerance
 -- after the mapping, relative to the size of the arc's image).
+local SVG_OPTS = {tol = true, method = true, arc_tol = true, transform = true}
 local function from_svg(d, opts)
   local fname = "arclen.path.svg"
   if type(d) ~= "string" then
     argerror(1, fname, "path data (a string) expected, got " .. type(d))
   end
-  local o, msg = read_opts(opts, {tol = true, method = true, arc_tol = true, transform = true})
+  local o, msg = read_opts(opts, SVG_OPTS)
   if not o then argerror(2, fname, msg) end
   local subpaths = parse_with(fname, svgpath.parse, d, o.arc_tol or o.tol, o.transform)
   return build(subpaths, o)

@@ -71,17 +71,9 @@ end
 -- ---- numbers, lengths ------------------------------------------------------
 
 -- A number of SVG's grammar (SVG 2 section 4.2: CSS number syntax, an
--- exponent allowed) at position i of s; value and position after, or nil.
-local function scan_number(s, i)
-  local _, e = find(s, "^[+-]?%d+%.?%d*", i)
-  if not e then _, e = find(s, "^[+-]?%.%d+", i) end
-  if not e then return nil end
-  local _, x = find(s, "^[eE][+-]?%d+", e + 1)
-  if x then e = x end
-  local v = tonumber(sub(s, i, e))
-  if v == nil or not isfinite(v) then return nil end
-  return v, e + 1
-end
+-- exponent allowed) at position i of s; value and position after, or nil
+-- (also beyond the doubles).  The scanner of path data's numbers, in C.
+local scan_number = core.svg_number
 
 -- A <length> attribute (SVG 2 section 4.3) in user units.  kind: "x",
 -- "y" or "o" (other), for percentages of the viewport vp = {w, h}
@@ -117,24 +109,12 @@ local function len_attr(ctx, attrs, name, kind, vp, default)
   return length(ctx, s, kind, vp, name)
 end
 
--- A list of numbers separated by comma-wsp (points, viewBox).
+-- A list of numbers separated by comma-wsp (points, viewBox), and the
+-- position of the first byte that starts no number (nil when none).
 local function numbers(ctx, s, what, cap)
-  local out, i, n = {}, (find(s, "[^%s,]") or #s + 1), #s
-  local guard = 0
-  while i <= n do
-    guard = guard + 1
-    if guard > cap then fail(ctx.line, ctx.col, what .. ": too many numbers") end
-    local v, j = scan_number(s, i)
-    if not v then
-      return out, i               -- the position of the first bad byte
-    end
-    out[#out + 1] = v
-    i = j
-    local _, e = find(s, "^%s*,?%s*", i)
-    if e >= i and i > n then break end
-    i = e + 1
-  end
-  return out
+  local out, bad = core.svg_numbers(s, cap)
+  if out == nil then fail(ctx.line, ctx.col, what .. ": too many numbers") end
+  return out, bad
 end
 
 -- ---- matrices: {a, b, c, d, e, f} is SVG's matrix(a b c d e f) -------------
@@ -293,15 +273,31 @@ end
 -- font properties.
 local STYLE_PROPS = {"display", "visibility", "stroke", "stroke-width"}
 
+-- Bytes that may not precede a property's name (it must be whole).
+local NAME_BYTE = {}
+for c = 0, 255 do NAME_BYTE[c] = find(string.char(c), "[%w%-]") ~= nil end
+local byte = string.byte
+
 local function parse_style(s)
   if s == nil then return nil end
   local out = nil
   for _, k in ipairs(STYLE_PROPS) do
-    if find(s, k, 1, true) then
-      -- the last declaration wins (CSS); the name must be whole
-      for v in s:gmatch("%f[%w%-]" .. gsub(k, "%-", "%%-") .. "%s*:%s*([^;]*)") do
+    -- every whole occurrence of the name followed by ':' (the last
+    -- declaration wins, as in CSS); the value runs to the next ';'
+    local init = 1
+    for _ = 1, #s do
+      local a, b = find(s, k, init, true)
+      if not a then break end
+      local e, v
+      if a == 1 or not NAME_BYTE[byte(s, a - 1)] then
+        _, e, v = find(s, "^%s*:%s*([^;]*)", b + 1)
+      end
+      if e then
         out = out or {}
         out[k] = gsub(gsub(v, "%s*!%s*important%s*$", ""), "%s+$", "")
+        init = e + 1
+      else
+        init = a + 1
       end
     end
   end
@@ -323,7 +319,7 @@ local function points_data(ctx, attrs, close)
   if #v < 2 then return nil end
   local out = {"M", num(v[1]), num(v[2])}
   for k = 3, #v, 2 do
-    out[#out + 1] = "L" .. num(v[k]) .. " " .. num(v[k + 1])
+    out[#out + 1] = format("L%.17g %.17g", v[k], v[k + 1])    -- num, num
   end
   if close then out[#out + 1] = "Z" end
   return table.concat(out, " ")
@@ -714,6 +710,17 @@ local function run(opts, name, next_chunk, uses)
     if value and may_use(value) then record = true end
   end
   function cb.StartElement(p, qname, attrs)
+    local parent = stack[#stack]
+    -- inside a subtree that draws nothing and is not kept for <use>, only
+    -- the depth counts (the position is asked for by the error alone)
+    if parent and parent.skip and not (record and (rec > 0 or attrs.id)) then
+      if #stack >= r.max_depth then
+        local line, col = p:pos()
+        fail(line, col, format("elements nested deeper than %d", r.max_depth))
+      end
+      stack[#stack + 1] = {skip = true, depth = parent.depth + 1}
+      return
+    end
     local line, col = p:pos()
     local ns, tag = split_name(qname)
     local svgns = ns == SVG_NS or ns == nil

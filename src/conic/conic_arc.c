@@ -141,3 +141,25 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
   c[2] = rx; c[3] = ry; c[4] = phi; c[5] = t1; c[6] = dt;
   return ARCLEN_SVGARC_ARC;
 }
+
+/* The SVG arc as at most four conics (7 numbers each) into c[28], the
+** first starting at (x1, y1) and the last ending at (x2, y2) exactly (the
+** centre form's rounding must not open a gap in the path).  Returns
+** ARCLEN_SVGARC_NONE or ARCLEN_SVGARC_LINE (nothing in c, *n = 0),
+** ARCLEN_SVGARC_ARC with *n conics, or a negative error code (EOVERFLOW:
+** radii, centre or control points beyond DBL_MAX). */
+int arclen_svg_arc_conics(double x1, double y1, double rx, double ry,
+                          double phi_deg, int large, int sweep, double x2,
+                          double y2, double c[28], int *n) {
+  double e[7];
+  int kind = arclen_svg_arc_center(x1, y1, rx, ry, phi_deg, large, sweep, x2,
+                                   y2, e), k;
+  *n = 0;
+  if (kind != ARCLEN_SVGARC_ARC) return kind;
+  k = arclen_ellipse_conics(e[0], e[1], e[2], e[3], e[4], e[5], e[6], c);
+  if (k <= 0) return k == 0 ? ARCLEN_EINVAL : k;
+  c[0] = x1; c[1] = y1;
+  c[7 * (k - 1) + 4] = x2; c[7 * (k - 1) + 5] = y2;
+  *n = k;
+  return ARCLEN_SVGARC_ARC;
+}

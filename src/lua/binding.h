@@ -49,6 +49,7 @@ void arclen_open_elliptic(lua_State *L);
 void arclen_open_fit(lua_State *L);
 void arclen_open_batch(lua_State *L);
 void arclen_open_times(lua_State *L);
+void arclen_open_svg(lua_State *L);
 /* new areas: one line each, above this line */
 
 #endif

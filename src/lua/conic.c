@@ -188,13 +188,6 @@ static int l_conic(lua_State *L) {
   return finish(L, 5, c, 1, &co);
 }
 
-/* Snap the ends of an arc's first and last conic to given points. */
-static void snap_ends(double *c, int n, double x1, double y1, double x2,
-                      double y2) {
-  c[0] = x1; c[1] = y1;
-  c[7 * (n - 1) + 4] = x2; c[7 * (n - 1) + 5] = y2;
-}
-
 /* The arguments 1..7 (cx, cy, rx, ry, rotation, angle1, angle2) of an
 ** elliptic arc, checked, as at most four conics in c[28]; returns how many.
 ** Errors name the argument. */
@@ -250,11 +243,12 @@ static int l_svg_arc(lua_State *L) {
   int sweep = check_flag(L, 7, "sweep");
   double x2 = arclenL_checkfinite(L, 8, "x2");
   double y2 = arclenL_checkfinite(L, 9, "y2");
-  double e[7], c[28];
+  double c[28];
   conic_opts co;
   int kind, n;
   check_conic_opts(L, 10, &co);
-  kind = arclen_svg_arc_center(x1, y1, rx, ry, rot, large, sweep, x2, y2, e);
+  kind = arclen_svg_arc_conics(x1, y1, rx, ry, rot, large, sweep, x2, y2, c,
+                               &n);
   if (kind == ARCLEN_SVGARC_NONE) {       /* F.6.2: the arc is omitted */
     lua_newtable(L);
     lua_pushnumber(L, 0);
@@ -282,12 +276,6 @@ static int l_svg_arc(lua_State *L) {
     luaL_argerror(L, 3, "the arc's radii, centre or control points lie "
                         "beyond the largest double");
   if (kind < 0) return arclenL_argcode(L, 1, kind);
-  n = arclen_ellipse_conics(e[0], e[1], e[2], e[3], e[4], e[5], e[6], c);
-  if (n == ARCLEN_EOVERFLOW)
-    luaL_argerror(L, 3, "the arc's radii, centre or control points lie "
-                        "beyond the largest double");
-  if (n <= 0) return arclenL_argcode(L, 1, n == 0 ? ARCLEN_EINVAL : n);
-  snap_ends(c, n, x1, y1, x2, y2);
   return finish(L, 10, c, n, &co);
 }
 

@@ -395,6 +395,7 @@ int luaopen_arclen_core(lua_State *L) {
   arclen_open_fit(L);
   arclen_open_batch(L);
   arclen_open_times(L);
+  arclen_open_svg(L);
   /* new areas: one line each, above this line */
   return 1;
 }

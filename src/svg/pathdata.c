@@ -1,0 +1,486 @@
+/*
+** pathdata.c -- SVG path data into cubic Bezier segments.
+**
+** The grammar of SVG 1.1 section 8.3.9 as SVG 2 section 9.3.9 reads it:
+** commands M L H V C S Q T A Z (lower case: relative), repeated argument
+** lists (after M they are linetos), numbers separated by whitespace and at
+** most one comma or by their own signs and dots, arc flags as the single
+** bytes 0 and 1.  Every loop advances through the data, so the data's
+** length bounds the work (arcs: at most 4 << ARCLEN_CONIC_MAXLEVEL cubics).
+*/
+#include <math.h>
+#include <stdlib.h>
+
+#include "arclen.h"
+#include "svg/decimal.h"
+#include "svg/pathdata.h"
+
+/* Degrees to radians as Lua's math.rad computes it (one multiplication). */
+#define RADIANS_PER_DEGREE (3.14159265358979323846 / 180.0)
+
+void arclen_pathdata_init(arclen_pathdata *pd) {
+  pd->cubics = NULL;
+  pd->ncubics = pd->cubics_room = 0;
+  pd->subpaths = NULL;
+  pd->nsubpaths = pd->subpaths_room = 0;
+  pd->err.kind = ARCLEN_PD_OK;
+}
+
+void arclen_pathdata_free(arclen_pathdata *pd) {
+  free(pd->cubics);
+  free(pd->subpaths);
+  arclen_pathdata_init(pd);
+}
+
+/* ---- the grammar's pieces ------------------------------------------------ */
+
+static int is_space(unsigned char c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r' || c == '\f';
+}
+
+static int is_alpha(unsigned char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+
+static char upper(unsigned char c) {
+  return (char)(c >= 'a' && c <= 'z' ? c - 'a' + 'A' : c);
+}
+
+/* The number of arguments of a command (upper case), -1 for no command. */
+static int arg_count(char cmd) {
+  switch (cmd) {
+    case 'M': case 'L': case 'T': return 2;
+    case 'H': case 'V': return 1;
+    case 'C': return 6;
+    case 'S': case 'Q': return 4;
+    case 'A': return 7;
+    case 'Z': return 0;
+    default: return -1;
+  }
+}
+
+const char *arclen_pathdata_argname(char cmd, int k) {
+  static const char *const xy[] = {"x", "y"};
+  static const char *const c[] = {"x1", "y1", "x2", "y2", "x", "y"};
+  static const char *const a[] = {"rx", "ry", "x-axis-rotation",
+    "large-arc-flag", "sweep-flag", "x", "y"};
+  if (k < 1 || k > arg_count(cmd)) return "?";
+  switch (cmd) {
+    case 'H': return "x";
+    case 'V': return "y";
+    case 'C': return c[k - 1];
+    case 'S': return c[k + 1];
+    case 'Q': return k <= 2 ? c[k - 1] : xy[k - 3];
+    case 'A': return a[k - 1];
+    default: return xy[k - 1];
+  }
+}
+
+/* The reader's state. */
+typedef struct reader {
+  arclen_pathdata *pd;
+  const char *d;
+  size_t n;
+  double arc_tol;
+  const double *T;
+  long sp;                  /* the open subpath, -1 when none */
+} reader;
+
+static int fail(reader *r, int kind, size_t i) {
+  arclen_pathdata_error *e = &r->pd->err;
+  e->kind = kind;
+  e->pos = i + 1;
+  e->at_end = i >= r->n;
+  e->byte = i < r->n ? (unsigned char)r->d[i] : 0;
+  return kind;
+}
+
+static size_t skip_space(const reader *r, size_t i) {
+  while (i < r->n && is_space((unsigned char)r->d[i])) i++;
+  return i;
+}
+
+/* Whitespace, at most one comma, whitespace (the comma-wsp production). */
+static size_t skip_sep(const reader *r, size_t i) {
+  i = skip_space(r, i);
+  if (i < r->n && r->d[i] == ',') i = skip_space(r, i + 1);
+  return i;
+}
+
+/* The number at *i, argument k of cmd. */
+static int number(reader *r, size_t *i, char cmd, int k, double *v) {
+  size_t s = *i, e, exp_at;
+  e = arclen_decimal_mantissa(r->d, r->n, s, &exp_at);
+  if (e == s) {
+    r->pd->err.cmd = cmd;
+    r->pd->err.arg = k;
+    return fail(r, ARCLEN_PD_NUMBER, s);
+  }
+  if (exp_at < r->n) {
+    size_t x = arclen_decimal_exponent(r->d, r->n, exp_at);
+    if (x == exp_at) return fail(r, ARCLEN_PD_EXPONENT, exp_at);
+    e = x;
+  }
+  if (arclen_decimal_value(r->d + s, e - s, v) != 0)
+    return fail(r, ARCLEN_PD_NOMEM, s);
+  if (!(*v > -HUGE_VAL && *v < HUGE_VAL)) {
+    r->pd->err.tok = s;
+    r->pd->err.toklen = e - s;
+    return fail(r, ARCLEN_PD_RANGE, s);
+  }
+  *i = e;
+  return ARCLEN_PD_OK;
+}
+
+/* The arguments of one command instance into a[]. */
+static int arguments(reader *r, size_t *i, char cmd, double *a) {
+  int k, count = arg_count(cmd), rc;
+  for (k = 1; k <= count; k++) {
+    if (k > 1) *i = skip_sep(r, *i);
+    if (cmd == 'A' && (k == 4 || k == 5)) {    /* a flag needs no separator */
+      char c = *i < r->n ? r->d[*i] : 0;
+      if (c != '0' && c != '1') {
+        r->pd->err.cmd = cmd;
+        r->pd->err.arg = k;
+        return fail(r, ARCLEN_PD_FLAG, *i);
+      }
+      a[k - 1] = c - '0';
+      (*i)++;
+    } else if ((rc = number(r, i, cmd, k, &a[k - 1])) != ARCLEN_PD_OK) {
+      return rc;
+    }
+  }
+  return ARCLEN_PD_OK;
+}
+
+/* ---- the result ---------------------------------------------------------- */
+
+/* Room for k more cubics; returns the first of them, NULL without memory. */
+static double *reserve(reader *r, size_t k) {
+  arclen_pathdata *pd = r->pd;
+  if (pd->ncubics + k > pd->cubics_room) {
+    size_t room = pd->cubics_room ? pd->cubics_room : 16;
+    double *p;
+    while (room < pd->ncubics + k) room *= 2;
+    p = (double *)realloc(pd->cubics, room * 8 * sizeof(double));
+    if (p == NULL) return NULL;
+    pd->cubics = p;
+    pd->cubics_room = room;
+  }
+  return pd->cubics + 8 * pd->ncubics;
+}
+
+/* Count k cubics written at reserve()'s pointer into the open subpath. */
+static void commit(reader *r, size_t k) {
+  r->pd->ncubics += k;
+  r->pd->subpaths[r->sp].n += k;
+}
+
+static int open_subpath(reader *r, double x, double y) {
+  arclen_pathdata *pd = r->pd;
+  arclen_subpath *s;
+  if (pd->nsubpaths == pd->subpaths_room) {
+    size_t room = pd->subpaths_room ? 2 * pd->subpaths_room : 8;
+    arclen_subpath *p = (arclen_subpath *)realloc(pd->subpaths,
+                                                  room * sizeof *p);
+    if (p == NULL) return 0;
+    pd->subpaths = p;
+    pd->subpaths_room = room;
+  }
+  s = &pd->subpaths[pd->nsubpaths];
+  s->x = x;
+  s->y = y;
+  s->first = pd->ncubics;
+  s->n = 0;
+  s->closed = 0;
+  r->sp = (long)pd->nsubpaths++;
+  return 1;
+}
+
+static int cubic(reader *r, double x0, double y0, double x1, double y1,
+                 double x2, double y2, double x3, double y3) {
+  double *c = reserve(r, 1);
+  if (c == NULL) return 0;
+  c[0] = x0; c[1] = y0; c[2] = x1; c[3] = y1;
+  c[4] = x2; c[5] = y2; c[6] = x3; c[7] = y3;
+  commit(r, 1);
+  return 1;
+}
+
+/* A line: the control points at thirds (the same curve, constant speed). */
+static int line(reader *r, double x0, double y0, double x1, double y1) {
+  double dx = x1 - x0, dy = y1 - y0;
+  return cubic(r, x0, y0, x0 + dx / 3, y0 + dy / 3, x1 - dx / 3, y1 - dy / 3,
+               x1, y1);
+}
+
+/* A quadratic, degree-elevated: C1 = Q0 + 2/3 (Q1 - Q0), C2 = Q2 + 2/3
+** (Q1 - Q2) (the same curve). */
+static int quadratic(reader *r, double x0, double y0, double qx, double qy,
+                     double x1, double y1) {
+  return cubic(r, x0, y0, x0 + 2.0 / 3 * (qx - x0), y0 + 2.0 / 3 * (qy - y0),
+               x1 + 2.0 / 3 * (qx - x1), y1 + 2.0 / 3 * (qy - y1), x1, y1);
+}
+
+/* ---- arcs ------------------------------------------------------------------ */
+
+/* The singular values of [[p r] [q s]], largest first. */
+static void singular(double p, double q, double r, double s, double *big,
+                     double *small) {
+  double e = (p + s) / 2, f = (p - s) / 2;
+  double g = (q - r) / 2, h = (q + r) / 2;
+  double u = sqrt(e * e + g * g), v = sqrt(f * f + h * h);
+  *big = u + v;
+  *small = fabs(u - v);
+}
+
+/* The arc's size after T and T's largest singular value: the image of the
+** ellipse is the ellipse of the 2x2 matrix A R(phi) diag(rx, ry), whose
+** semi-axes are that matrix's singular values; the chord maps by A. */
+static void image_scale(const double *T, double rx, double ry, double phi,
+                        double dx, double dy, double *size, double *smax) {
+  double t = phi * RADIANS_PER_DEGREE, c = cos(t), s = sin(t);
+  double A = T[0], B = T[1], C = T[2], D = T[3], s1, cx, cy, half, unused;
+  singular(rx * (A * c + C * s), rx * (B * c + D * s),
+           ry * (-A * s + C * c), ry * (-B * s + D * c), &s1, &unused);
+  cx = A * dx + C * dy;
+  cy = B * dx + D * dy;
+  half = 0.5 * sqrt(cx * cx + cy * cy);
+  *size = s1 < half ? half : s1;
+  singular(A, B, C, D, smax, &unused);
+}
+
+static int arc_fail(reader *r, int why, int code, size_t pos) {
+  r->pd->err.arc = why;
+  r->pd->err.code = code;
+  return fail(r, ARCLEN_PD_ARC, pos);
+}
+
+/* The cubics of an elliptical arc (SVG 1.1 F.6) from (x0, y0) to (x1,
+** y1); a = rx ry rotation large sweep; pos: the command's byte.  The Hausdorff tolerance is arc_tol
+** times the arc's size, max(rx, ry, chord/2); under T the cubics are built
+** in local coordinates at the tolerance that, multiplied by T's largest
+** singular value (the most T can stretch a distance), is arc_tol times the
+** size of the arc's image.  Without a tolerance (a zero radius, a zero
+** size) level 0.  The checks and their order are arclen.svg_arc's. */
+static int arc(reader *r, double x0, double y0, const double *a, double x1,
+               double y1, size_t pos) {
+  double rx = fabs(a[0]), ry = fabs(a[1]), c[28], tol = 0, bound;
+  double hx = x1 - x0, hy = y1 - y0, half = 0.5 * sqrt(hx * hx + hy * hy);
+  double scale = rx;
+  int have_tol, kind, n, k, level = 0;
+  if (scale < ry) scale = ry;
+  if (scale < half) scale = half;
+  if (r->T != NULL && scale > 0) {
+    double size, smax;
+    image_scale(r->T, rx, ry, a[2], x1 - x0, y1 - y0, &size, &smax);
+    scale = smax > 0 ? size / smax : 0;
+  }
+  have_tol = scale > 0 && rx > 0 && ry > 0;
+  if (have_tol) tol = r->arc_tol * scale;
+  if (!isfinite(x0)) return arc_fail(r, ARCLEN_PD_ARC_X1, 0, pos);
+  if (!isfinite(y0)) return arc_fail(r, ARCLEN_PD_ARC_Y1, 0, pos);
+  if (!isfinite(x1)) return arc_fail(r, ARCLEN_PD_ARC_X2, 0, pos);
+  if (!isfinite(y1)) return arc_fail(r, ARCLEN_PD_ARC_Y2, 0, pos);
+  if (have_tol && (!(tol > 0) || !isfinite(tol)))
+    return arc_fail(r, ARCLEN_PD_ARC_TOL, 0, pos);
+  kind = arclen_svg_arc_conics(x0, y0, rx, ry, a[2], a[3] != 0, a[4] != 0,
+                               x1, y1, c, &n);
+  if (kind == ARCLEN_SVGARC_NONE) return ARCLEN_PD_OK;   /* F.6.2: omitted */
+  if (kind == ARCLEN_SVGARC_LINE)                        /* F.6.2: a line */
+    return line(r, x0, y0, x1, y1) ? ARCLEN_PD_OK
+                                   : fail(r, ARCLEN_PD_NOMEM, pos);
+  if (kind == ARCLEN_EOVERFLOW) return arc_fail(r, ARCLEN_PD_ARC_OVERFLOW, 0, pos);
+  if (kind < 0) return arc_fail(r, ARCLEN_PD_ARC_CODE, kind, pos);
+  for (k = 0; have_tol && k < n; k++) {       /* the level all pieces meet */
+    int lk, rc = arclen_conic_level(c + 7 * k, c[7 * k + 6],
+                                    ARCLEN_CONIC_MIDPOINT, tol, &lk, &bound);
+    if (rc == ARCLEN_ENOCONV) {
+      r->pd->err.bound = bound;
+      return arc_fail(r, ARCLEN_PD_ARC_LEVEL, 0, pos);
+    }
+    if (rc != ARCLEN_OK) return arc_fail(r, ARCLEN_PD_ARC_CODE, rc, pos);
+    if (lk > level) level = lk;
+  }
+  for (k = 0; k < n; k++) {
+    size_t per = (size_t)1 << level;
+    double *out = reserve(r, per);
+    int rc;
+    if (out == NULL) return fail(r, ARCLEN_PD_NOMEM, pos);
+    /* a conic that rounding made degenerate leaves out unwritten */
+    rc = arclen_conic_cubics(c + 7 * k, c[7 * k + 6], ARCLEN_CONIC_MIDPOINT,
+                             level, out, &bound);
+    if (rc == ARCLEN_EOVERFLOW) return arc_fail(r, ARCLEN_PD_ARC_CUBICS, 0, pos);
+    if (rc != ARCLEN_OK) return arc_fail(r, ARCLEN_PD_ARC_DEGENERATE, 0, pos);
+    commit(r, per);
+  }
+  return ARCLEN_PD_OK;
+}
+
+/* ---- the transform --------------------------------------------------------- */
+
+/* Map every point by T (exact for cubics: an affine image of a Bezier
+** curve is the Bezier curve of the images of its control points); a
+** control point that overflows is an error. */
+static int transform(arclen_pathdata *pd, const double *T) {
+  double A = T[0], B = T[1], C = T[2], D = T[3], E = T[4], F = T[5];
+  size_t k;
+  int ok = 1;
+  for (k = 0; k < pd->nsubpaths; k++) {
+    arclen_subpath *s = &pd->subpaths[k];
+    double x = s->x, y = s->y;
+    s->x = A * x + C * y + E;
+    s->y = B * x + D * y + F;
+  }
+  for (k = 0; k < 4 * pd->ncubics; k++) {
+    double x = pd->cubics[2 * k], y = pd->cubics[2 * k + 1];
+    double u = A * x + C * y + E, v = B * x + D * y + F;
+    if (!(u > -HUGE_VAL && u < HUGE_VAL && v > -HUGE_VAL && v < HUGE_VAL))
+      ok = 0;
+    pd->cubics[2 * k] = u;
+    pd->cubics[2 * k + 1] = v;
+  }
+  if (ok) return ARCLEN_PD_OK;
+  pd->err.kind = ARCLEN_PD_TRANSFORM;
+  pd->err.pos = 0;
+  return ARCLEN_PD_TRANSFORM;
+}
+
+/* ---- the reader ------------------------------------------------------------ */
+
+/* One command instance (cmd's arguments at *i); updates the current point
+** (cur), the subpath's start (start) and the reflected control point
+** (ctl, valid after C/S or Q/T as *last says). */
+typedef struct state {
+  double cx, cy, sx, sy;
+  double lcx, lcy, lqx, lqy;
+  int lastc, lastq;
+} state;
+
+static int draw(reader *r, state *st, char cmd, int rel, const double *a,
+                size_t cmdpos) {
+  double ox = rel ? st->cx : 0, oy = rel ? st->cy : 0, x, y;
+  double cx = st->cx, cy = st->cy;
+  int ok = 1;
+  if (r->sp < 0 && !open_subpath(r, cx, cy))   /* drawing after Z */
+    return fail(r, ARCLEN_PD_NOMEM, cmdpos);
+  switch (cmd) {
+  case 'L':
+    x = a[0] + ox; y = a[1] + oy;
+    ok = line(r, cx, cy, x, y);
+    break;
+  case 'H':
+    x = a[0] + (rel ? cx : 0); y = cy;
+    ok = line(r, cx, cy, x, y);
+    break;
+  case 'V':
+    x = cx; y = a[0] + (rel ? cy : 0);
+    ok = line(r, cx, cy, x, y);
+    break;
+  case 'C': case 'S': {
+    double x1, y1, x2, y2;
+    if (cmd == 'C') {
+      x1 = a[0] + ox; y1 = a[1] + oy; x2 = a[2] + ox; y2 = a[3] + oy;
+      x = a[4] + ox; y = a[5] + oy;
+    } else {
+      if (st->lastc) { x1 = 2 * cx - st->lcx; y1 = 2 * cy - st->lcy; }
+      else { x1 = cx; y1 = cy; }
+      x2 = a[0] + ox; y2 = a[1] + oy; x = a[2] + ox; y = a[3] + oy;
+    }
+    ok = cubic(r, cx, cy, x1, y1, x2, y2, x, y);
+    st->lcx = x2; st->lcy = y2;
+    break;
+  }
+  case 'Q': case 'T': {
+    double qx, qy;
+    if (cmd == 'Q') {
+      qx = a[0] + ox; qy = a[1] + oy; x = a[2] + ox; y = a[3] + oy;
+    } else {
+      if (st->lastq) { qx = 2 * cx - st->lqx; qy = 2 * cy - st->lqy; }
+      else { qx = cx; qy = cy; }
+      x = a[0] + ox; y = a[1] + oy;
+    }
+    ok = quadratic(r, cx, cy, qx, qy, x, y);
+    st->lqx = qx; st->lqy = qy;
+    break;
+  }
+  default: {                                   /* 'A' */
+    int rc;
+    x = a[5] + ox; y = a[6] + oy;
+    rc = arc(r, cx, cy, a, x, y, cmdpos);
+    if (rc != ARCLEN_PD_OK) return rc;
+    break;
+  }
+  }
+  if (!ok) return fail(r, ARCLEN_PD_NOMEM, cmdpos);
+  st->lastc = cmd == 'C' || cmd == 'S';
+  st->lastq = cmd == 'Q' || cmd == 'T';
+  st->cx = x;
+  st->cy = y;
+  return ARCLEN_PD_OK;
+}
+
+int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
+                          double arc_tol, const double *T) {
+  reader r;
+  state st = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
+  double a[7];
+  char cmd = 0;                   /* the current command, 0 before any */
+  int rel = 0, rc;
+  size_t i;
+  r.pd = pd; r.d = d; r.n = n; r.arc_tol = arc_tol; r.T = T; r.sp = -1;
+  pd->ncubics = pd->nsubpaths = 0;
+  pd->err.kind = ARCLEN_PD_OK;
+  pd->err.pos = 0;
+  i = skip_space(&r, 0);
+  if (i >= n) return fail(&r, ARCLEN_PD_EMPTY, 0);
+  while (i < n) {
+    unsigned char c = (unsigned char)d[i];
+    char up = upper(c);
+    size_t cmdpos = i;
+    if (is_alpha(c) && arg_count(up) >= 0) {
+      if (cmd == 0 && up != 'M') return fail(&r, ARCLEN_PD_NO_MOVETO, i);
+      cmd = up;
+      rel = c != (unsigned char)up;
+      i = skip_space(&r, i + 1);
+    } else if (cmd == 0) {
+      return fail(&r, ARCLEN_PD_NO_MOVETO, i);
+    } else if (cmd == 'Z') {
+      return fail(&r, ARCLEN_PD_AFTER_Z, i);
+    } else if (!((c >= '0' && c <= '9') || c == '.' || c == '+' || c == '-')) {
+      return fail(&r, ARCLEN_PD_UNKNOWN, i);
+    }
+    if (cmd == 'Z') {
+      if (r.sp < 0) return fail(&r, ARCLEN_PD_CLOSE_FIRST, cmdpos);
+      if ((st.cx != st.sx || st.cy != st.sy) &&
+          !line(&r, st.cx, st.cy, st.sx, st.sy))
+        return fail(&r, ARCLEN_PD_NOMEM, cmdpos);
+      pd->subpaths[r.sp].closed = 1;
+      st.cx = st.sx;
+      st.cy = st.sy;
+      r.sp = -1;              /* a drawing command opens a new subpath here */
+      st.lastc = st.lastq = 0;
+      i = skip_space(&r, i);
+      continue;
+    }
+    if ((rc = arguments(&r, &i, cmd, a)) != ARCLEN_PD_OK) return rc;
+    if (cmd == 'M') {
+      double ox = rel ? st.cx : 0, oy = rel ? st.cy : 0;
+      st.cx = a[0] + ox;
+      st.cy = a[1] + oy;
+      st.sx = st.cx;
+      st.sy = st.cy;
+      if (!open_subpath(&r, st.cx, st.cy))
+        return fail(&r, ARCLEN_PD_NOMEM, cmdpos);
+      cmd = 'L';              /* further pairs are implicit linetos */
+      st.lastc = st.lastq = 0;
+    } else if ((rc = draw(&r, &st, cmd, rel, a, cmdpos)) != ARCLEN_PD_OK) {
+      return rc;
+    }
+    i = skip_sep(&r, i);
+    /* a trailing comma must be followed by another argument list */
+    if (d[i - 1] == ',' && (i >= n || is_alpha((unsigned char)d[i])))
+      return fail(&r, ARCLEN_PD_COMMA, i - 1);
+  }
+  return T != NULL ? transform(pd, T) : ARCLEN_PD_OK;
+}

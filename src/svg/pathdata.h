@@ -1,0 +1,87 @@
+/*
+** pathdata.h -- SVG path data (the `d` attribute, SVG 1.1 section 8.3 and
+** SVG 2 section 9.3) read into cubic Bezier segments, optionally mapped by
+** a 2x3 transform.  No Lua dependency: the binding (lua/pathdata.c) turns
+** the result into tables and the error into its message.
+*/
+#ifndef ARCLEN_PATHDATA_H
+#define ARCLEN_PATHDATA_H
+
+#include <stddef.h>
+
+/* A subpath: its start point, whether Z closed it, and its cubics
+** cubics[8 * first .. 8 * (first + n) - 1] of the result. */
+typedef struct arclen_subpath {
+  double x, y;
+  size_t first, n;
+  int closed;
+} arclen_subpath;
+
+/* The first error met, in the order a left-to-right reader meets them
+** (the transform's overflow is found after the whole data is read). */
+enum {
+  ARCLEN_PD_OK,
+  ARCLEN_PD_EMPTY,        /* only whitespace */
+  ARCLEN_PD_NO_MOVETO,    /* the first command is not M/m (byte) */
+  ARCLEN_PD_AFTER_Z,      /* arguments after Z (byte) */
+  ARCLEN_PD_UNKNOWN,      /* a byte that is no command (byte) */
+  ARCLEN_PD_CLOSE_FIRST,  /* Z with no subpath open (Z Z) */
+  ARCLEN_PD_NUMBER,       /* argument arg of cmd missing (byte, or the end) */
+  ARCLEN_PD_EXPONENT,     /* 'e' without digits */
+  ARCLEN_PD_RANGE,        /* a number beyond the doubles (token) */
+  ARCLEN_PD_FLAG,         /* an arc flag that is not 0 or 1 (cmd, arg) */
+  ARCLEN_PD_COMMA,        /* a comma before a command or the end */
+  ARCLEN_PD_ARC,          /* the arc conversion failed (arc, code, bound) */
+  ARCLEN_PD_TRANSFORM,    /* a mapped coordinate overflows (no position) */
+  ARCLEN_PD_NOMEM
+};
+
+/* Why an arc failed (ARCLEN_PD_ARC), in arclen.svg_arc's terms. */
+enum {
+  ARCLEN_PD_ARC_X1, ARCLEN_PD_ARC_Y1,   /* the start is not finite */
+  ARCLEN_PD_ARC_X2, ARCLEN_PD_ARC_Y2,   /* the end is not finite */
+  ARCLEN_PD_ARC_TOL,          /* the scaled tolerance is 0 or inf */
+  ARCLEN_PD_ARC_OVERFLOW,     /* radii, centre or conics beyond DBL_MAX */
+  ARCLEN_PD_ARC_CODE,         /* code: an arclen error code */
+  ARCLEN_PD_ARC_LEVEL,        /* tol not reached by MAXLEVEL (bound) */
+  ARCLEN_PD_ARC_CUBICS,       /* a cubic's control point beyond DBL_MAX */
+  ARCLEN_PD_ARC_DEGENERATE    /* a conic rounding made degenerate */
+};
+
+typedef struct arclen_pathdata_error {
+  int kind;
+  size_t pos;           /* 1-based byte position; 0: none */
+  int at_end;           /* NUMBER: the data ended where a number was due */
+  unsigned char byte;   /* the offending byte */
+  char cmd;             /* NUMBER, FLAG: the command (upper case) */
+  int arg;              /* NUMBER, FLAG: its argument, from 1 */
+  size_t tok, toklen;   /* RANGE: the number's text, d[tok .. tok+toklen-1] */
+  int arc, code;        /* ARC: why (ARCLEN_PD_ARC_*), an error code */
+  double bound;         /* ARC_LEVEL: the bound at the last level */
+} arclen_pathdata_error;
+
+typedef struct arclen_pathdata {
+  double *cubics;                     /* 8 numbers per cubic */
+  size_t ncubics, cubics_room;
+  arclen_subpath *subpaths;
+  size_t nsubpaths, subpaths_room;
+  arclen_pathdata_error err;
+} arclen_pathdata;
+
+void arclen_pathdata_init(arclen_pathdata *pd);
+void arclen_pathdata_free(arclen_pathdata *pd);
+
+/* Read d[0 .. n-1] into pd (initialised; previous contents are dropped).
+** Lines are cubics with control points at thirds, quadratics are degree-
+** elevated, arcs become cubics within arc_tol times the arc's size (SVG
+** 1.1 F.6, Floater's mid-point scheme; see doc/svg.md).  T (NULL: none)
+** is {a, b, c, d, e, f} as SVG's matrix(a b c d e f).  Returns the error
+** kind (ARCLEN_PD_OK on success; then pd->err.kind is OK too). */
+int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
+                          double arc_tol, const double *T);
+
+/* The name of argument k (from 1) of command cmd (upper case), as the
+** specification calls it ("x1", "large-arc-flag"); "?" when none. */
+const char *arclen_pathdata_argname(char cmd, int k);
+
+#endif
