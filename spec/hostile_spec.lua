@@ -73,6 +73,7 @@ local VALID = {
   ["lengths3"] = {arclen.lengths3, {C3}},
   ["times"] = {arclen.times, {C2, {1, 5}, {points = true, tangents = true}}},
   ["_segment_times"] = {arclen._segment_times, {C2, {1, 5}, 1, 2, 0, 14, 1e-12, {}}},
+  ["_array"] = {arclen._array, {4}},
   ["_segment_samples"] = {arclen._segment_samples, {C2, {1, 5}, 1, 2, 0, 14, 1e-12, 1, {}, {}, {}}},
   ["conic"] = {arclen.conic, {{1, 0}, {1, 1}, {0, 1}, 0.7}},
   ["conic_length"] = {arclen.conic_length, {{1, 0}, {1, 1}, {0, 1}, 0.7}},

@@ -321,6 +321,7 @@ end
 -- ---- many distances in one walk -------------------------------------------
 
 local segment_times, segment_samples = arclen._segment_times, arclen._segment_samples
+local new_array = arclen._array      -- a table with room for n items
 
 -- Whether distances go through the one-pass walk (arclen.times per
 -- segment): the default method's paths; others take one time per distance.
@@ -604,13 +605,14 @@ function Path:resample(spec)
   check_self(self, "resample")
   local fname = "resample"
   local L = usable(self, fname)
-  local dists = {}
+  local dists
   if type(spec) == "number" then
     local n = spec
     local low = self.cyclic and 1 or 2
     if n ~= floor(n) or n < low or n > MAX_POINTS then
       argerror(1, fname, format("n must be an integer in [%d, %d]", low, MAX_POINTS))
     end
+    dists = new_array(n)
     local div = self.cyclic and n or n - 1
     for i = 0, n - 1 do dists[i + 1] = i == div and L or L * i / div end
   elseif type(spec) == "table" then
@@ -625,6 +627,7 @@ function Path:resample(spec)
       argerror(1, fname, format("step too small: more than %d points", MAX_POINTS))
     end
     local m = floor(L / h)
+    dists = new_array(m + 1)
     for i = 0, m do
       local s = i * h
       if s > L then s = L end
@@ -633,7 +636,7 @@ function Path:resample(spec)
   else
     argerror(1, fname, "a count n or {step = h} expected, got " .. type(spec))
   end
-  local out = {}
+  local out = new_array(#dists)
   if self.n == 0 then
     for i = 1, #dists do
       out[i] = {x = self.x0, y = self.y0, z = self.z0, s = 0, time = 0,
@@ -660,15 +663,22 @@ local function read_queries(self, ds, fname, L)
   if type(ds) ~= "table" then
     argerror(1, fname, "a list of distances expected, got " .. type(ds))
   end
-  local r, ascending = {}, true
-  for i = 1, #ds do
+  local n = #ds
+  local r, ascending, prev = new_array(n), true, -huge
+  local wrap = self.cyclic and L > 0
+  for i = 1, n do
     local s = ds[i]
     if type(s) ~= "number" then
       argerror(1, fname, format("distance %d must be a number, got %s", i, type(s)))
     end
     if not isfinite(s) then argerror(1, fname, format("distance %d must be finite", i)) end
-    r[i] = (reduce(self, s, L))
-    if i > 1 and r[i] < r[i - 1] then ascending = false end
+    -- reduce(self, s, L), inline: this loop runs once per distance
+    if wrap then s = s - floor(s / L) * L
+    elseif s < 0 then s = 0
+    elseif s > L then s = L end
+    r[i] = s
+    if s < prev then ascending = false end
+    prev = s
   end
   if ascending then return r, nil end
   local order = {}
@@ -726,7 +736,7 @@ function Path:samples(ds)
   check_self(self, "samples")
   local L = usable(self, "samples")
   local r, order = read_queries(self, ds, "samples", L)
-  local out = {}
+  local out = new_array(#r)
   fill_samples(self, r, out)
   if not order then return out end
   local res = {}
@@ -755,10 +765,12 @@ function Path:points(ds, opts)
   end
   local L = usable(self, fname)
   local r, order = read_queries(self, ds, fname, L)
-  local pts, tans, times = {}, want_tans and {} or false, want_times and {} or false
+  local d = self.dim
+  local pts = new_array(d * #r)
+  local tans, times = want_tans and new_array(d * #r) or false, want_times and new_array(#r) or false
   fill_samples(self, r, nil, pts, tans, times)
   if order then
-    local d, p2, v2, t2 = self.dim, {}, tans and {}, times and {}
+    local p2, v2, t2 = new_array(d * #r), tans and new_array(d * #r), times and new_array(#r)
     for q = 1, #r do
       local i = order[q]
       for c = 1, d do

@@ -20,16 +20,6 @@
 #define CHUNK 256      /* curves per buffer: 24 KB of stack in 3D */
 #define BLOCK 48       /* numbers on the Lua stack at once (4 curves in 3D) */
 
-/* lua_rawgeti returning the value's type, as it does from 5.3 on. */
-#if defined(LUA_VERSION_NUM) && LUA_VERSION_NUM >= 503
-#define rawgeti_type(L, t, k) lua_rawgeti(L, (t), (k))
-#else
-static int rawgeti_type(lua_State *L, int t, int k) {
-  lua_rawgeti(L, t, k);
-  return lua_type(L, -1);
-}
-#endif
-
 /* The first bad number of a block of b on the stack top, coordinate
 ** first + 1 being at -b: raises its error. */
 static int bad_coordinate(lua_State *L, const double *v, long first, int b) {

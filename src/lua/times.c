@@ -18,8 +18,7 @@
 /* ds[i] as a number, not NaN (arg names the table). */
 static double distance_at(lua_State *L, int arg, int ds, long i) {
   double v;
-  lua_rawgeti(L, ds, (int)i);
-  if (lua_type(L, -1) != LUA_TNUMBER)
+  if (rawgeti_type(L, ds, (int)i) != LUA_TNUMBER)
     return luaL_argerror(L, arg, lua_pushfstring(L,
         "distance %d must be a number, got %s", (int)i,
         luaL_typename(L, -1))), 0;
@@ -157,6 +156,9 @@ static int l_segment_times(lua_State *L) {
   return 0;
 }
 
+/* _segment_samples' upvalues: the sample tables' keys. */
+enum { KEY_X = 1, KEY_TX = 4, KEY_S = 7, KEY_TIME = 8, KEYS = 8 };
+
 /* arclen._segment_samples(c, ds, i, j, shift, seglen, tol, k, out
 ** [, tans, times]): with tans absent or nil, out[q] = {x =, y =[, z =],
 ** s =, time = k - 1 + t, tx =, ty =[, tz =]}; with tans a table or
@@ -167,7 +169,6 @@ static int l_segment_samples(lua_State *L) {
   double t[CHUNK], p[3 * CHUNK], v[3 * CHUNK], prev = -HUGE_VAL, base;
   long i, q;
   int flat = !lua_isnoneornil(L, 10), want_v, want_t;
-  static const char *const pn[3] = {"x", "y", "z"}, *const vn[3] = {"tx", "ty", "tz"};
   check_run(L, &r);
   base = (double)luaL_checkinteger(L, 8) - 1;
   luaL_checktype(L, 9, LUA_TTABLE);
@@ -187,30 +188,51 @@ static int l_segment_samples(lua_State *L) {
         if (want_t) set_number(L, 11, i + q, base + t[q]);
         continue;
       }
+      /* the keys are the closure's upvalues (KEY_X ..): rawset with
+      ** them skips lua_setfield's lookup of the C string each time */
       lua_createtable(L, 0, 2 * r.dim + 2);
       for (k = 0; k < r.dim; k++) {
+        lua_pushvalue(L, lua_upvalueindex(KEY_X + k));
         lua_pushnumber(L, p[r.dim * q + k]);
-        lua_setfield(L, -2, pn[k]);
+        lua_rawset(L, -3);
+        lua_pushvalue(L, lua_upvalueindex(KEY_TX + k));
         lua_pushnumber(L, v[r.dim * q + k]);
-        lua_setfield(L, -2, vn[k]);
+        lua_rawset(L, -3);
       }
+      lua_pushvalue(L, lua_upvalueindex(KEY_S));
       lua_rawgeti(L, 2, (int)(i + q));
-      lua_setfield(L, -2, "s");
+      lua_rawset(L, -3);
+      lua_pushvalue(L, lua_upvalueindex(KEY_TIME));
       lua_pushnumber(L, base + t[q]);
-      lua_setfield(L, -2, "time");
+      lua_rawset(L, -3);
       lua_rawseti(L, 9, (int)(i + q));
     }
   }
   return 0;
 }
 
+/* arclen._array(n) -> an empty table with room for n array items, for
+** the path layer's results (Lua 5.1-5.4 have no table.create). */
+static int l_array(lua_State *L) {
+  double n = luaL_checknumber(L, 1);
+  luaL_argcheck(L, n >= 0 && n <= 0x7fffffff / 3 && n == floor(n), 1,
+                "size must be an integer in [0, 715827882]");
+  lua_createtable(L, (int)n, 0);
+  return 1;
+}
+
 static const luaL_Reg times_funcs[] = {
   {"times", l_times},
   {"_segment_times", l_segment_times},
-  {"_segment_samples", l_segment_samples},
+  {"_array", l_array},
   {NULL, NULL}
 };
 
 void arclen_open_times(lua_State *L) {
+  static const char *const keys[KEYS] = {"x", "y", "z", "tx", "ty", "tz", "s", "time"};
+  int k;
   luaL_setfuncs(L, times_funcs, 0);
+  for (k = 0; k < KEYS; k++) lua_pushstring(L, keys[k]);
+  lua_pushcclosure(L, l_segment_samples, KEYS);
+  lua_setfield(L, -2, "_segment_samples");
 }
