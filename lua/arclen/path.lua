@@ -320,8 +320,9 @@ end
 
 -- ---- many distances in one walk -------------------------------------------
 
-local segment_times, segment_samples = arclen._segment_times, arclen._segment_samples
+local segment_times = arclen._segment_times
 local new_array = arclen._array      -- a table with room for n items
+local walk_samples = arclen._walk_samples   -- walk + _segment_samples, in C
 
 -- Whether distances go through the one-pass walk (arclen.times per
 -- segment): the default method's paths; others take one time per distance.
@@ -645,11 +646,7 @@ function Path:resample(spec)
     return out
   end
   if walks(self) then
-    local cum, segs, tol = self.cum, self.segs, self.tol
-    walk(self, dists, 1, #dists, false, function(k, i, j)
-      segment_samples(segs[k], dists, i, j, cum[k - 1], cum[k] - cum[k - 1],
-                      tol, k, out)
-    end)
+    walk_samples(self.segs, self.cum, dists, self.tol, out)
     return out
   end
   for i, s in ipairs(dists) do out[i] = sample(self, s) end
@@ -707,11 +704,8 @@ local function fill_samples(self, ds, out, pts, tans, times)
       end
     end
   elseif walks(self) then
-    local cum, segs, tol = self.cum, self.segs, self.tol
-    walk(self, ds, 1, #ds, false, function(k, i, j)
-      segment_samples(segs[k], ds, i, j, cum[k - 1], cum[k] - cum[k - 1], tol,
-                      k, pts or out, pts and (tans or false), pts and (times or false))
-    end)
+    walk_samples(self.segs, self.cum, ds, self.tol, pts or out,
+                 pts and (tans or false), pts and (times or false))
   else
     for q = 1, #ds do
       local smp = sample(self, ds[q])
