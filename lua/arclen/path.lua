@@ -506,26 +506,36 @@ function Path:tangent(s)
   return unpack_dim(direction(self, k, t), self.dim)
 end
 
--- A new path with the same options from a list of segments with gap marks.
+-- A new path with the same options from a fresh list of segments (its
+-- own: it becomes the path's segment list) with gap marks pieces.gap[k]
+-- (nil when there are none).  Three tables a path: dash makes one a dash.
 local function from_pieces(self, pieces, x0, y0, z0)
-  local p = setmetatable({n = #pieces, dim = self.dim, cyclic = false,
-    tol = self.tol, method = self.method, segs = {}, first = {}, nsub = 0,
-    x0 = x0, y0 = y0, z0 = z0}, Path)
-  for k, c in ipairs(pieces) do
-    p.segs[k] = c
-    if k == 1 or pieces.gap[k] then
-      p.nsub = p.nsub + 1
-      p.first[p.nsub] = k
+  local n, gap = #pieces, pieces.gap
+  pieces.gap = nil
+  local first, nsub
+  if n == 0 then
+    first, nsub = {1}, 0
+  elseif not gap then
+    first, nsub = {1, n + 1}, 1
+  else
+    first, nsub = {}, 0
+    for k = 1, n do
+      if k == 1 or gap[k] then
+        nsub = nsub + 1
+        first[nsub] = k
+      end
     end
+    first[nsub + 1] = n + 1
   end
-  p.first[p.nsub + 1] = p.n + 1
-  return p
+  return setmetatable({n = n, dim = self.dim, cyclic = false,
+    tol = self.tol, method = self.method, segs = pieces, first = first, nsub = nsub,
+    x0 = x0, y0 = y0, z0 = z0}, Path)
 end
 
 -- The segments from (k0, t0) to (k1, t1) -- distances a <= b (in [0, L])
 -- located -- as a list with gap marks, and the start point.
 local function pieces_located(self, k0, t0, k1, t1)
-  local out = {gap = {}}
+  local out = {}                 -- out.gap made at the first gap
   local d = self.dim
   if k1 < k0 or (k1 == k0 and t1 <= t0) then
     local x, y, z = arclen.point(self.segs[k0], t0)
@@ -543,7 +553,10 @@ local function pieces_located(self, k0, t0, k1, t1)
     if ta ~= 0 or tb ~= 1 then c = arclen.subcurve(c, ta, tb) end
     if tb > ta or (ta == 0 and tb == 1) then
       out[#out + 1] = c
-      if isgap[k] and k > k0 then out.gap[#out] = true end
+      if isgap[k] and k > k0 then
+        out.gap = out.gap or {}
+        out.gap[#out] = true
+      end
     end
   end
   if #out == 0 then
@@ -567,7 +580,7 @@ function Path:sub(s0, s1)
   check_number(s0, 1, "sub", "s0")
   check_number(s1, 2, "sub", "s1")
   local L = usable(self, "sub")
-  if self.n == 0 then return from_pieces(self, {gap = {}}, self.x0, self.y0, self.z0) end
+  if self.n == 0 then return from_pieces(self, {}, self.x0, self.y0, self.z0) end
   local a = s0 < 0 and 0 or (s0 > L and L or s0)
   local b = s1 < 0 and 0 or (s1 > L and L or s1)
   return from_pieces(self, pieces_between(self, a, b))
@@ -579,9 +592,8 @@ function Path:split(s)
   check_number(s, 1, "split", "distance")
   local L = usable(self, "split")
   if self.n == 0 then
-    local e = {gap = {}}
-    return from_pieces(self, e, self.x0, self.y0, self.z0),
-           from_pieces(self, e, self.x0, self.y0, self.z0)
+    return from_pieces(self, {}, self.x0, self.y0, self.z0),
+           from_pieces(self, {}, self.x0, self.y0, self.z0)
   end
   local a = s < 0 and 0 or (s > L and L or s)
   return from_pieces(self, pieces_between(self, 0, a)),
