@@ -323,6 +323,7 @@ end
 local segment_times = arclen._segment_times
 local new_array = arclen._array      -- a table with room for n items
 local walk_samples = arclen._walk_samples   -- walk + _segment_samples, in C
+local reduce_queries = arclen._queries      -- read_queries' loop, in C
 
 -- Whether distances go through the one-pass walk (arclen.times per
 -- segment): the default method's paths; others take one time per distance.
@@ -672,23 +673,13 @@ local function read_queries(self, ds, fname, L)
   if type(ds) ~= "table" then
     argerror(1, fname, "a list of distances expected, got " .. type(ds))
   end
-  local n = #ds
-  local r, ascending, prev = new_array(n), true, -huge
-  local wrap = self.cyclic and L > 0
-  for i = 1, n do
-    local s = ds[i]
-    if type(s) ~= "number" then
-      argerror(1, fname, format("distance %d must be a number, got %s", i, type(s)))
-    end
-    if not isfinite(s) then argerror(1, fname, format("distance %d must be finite", i)) end
-    -- reduce(self, s, L), inline: this loop runs once per distance
-    if wrap then s = s - floor(s / L) * L
-    elseif s < 0 then s = 0
-    elseif s > L then s = L end
-    r[i] = s
-    if s < prev then ascending = false end
-    prev = s
+  if getmetatable(ds) ~= nil then         -- the C loop reads raw: copy a proxy
+    local plain = {}
+    for i = 1, #ds do plain[i] = ds[i] end
+    ds = plain
   end
+  local r, ascending = reduce_queries(ds, L, self.cyclic and L > 0)
+  if not r then argerror(1, fname, ascending) end
   if ascending then return r, nil end
   local order = {}
   for i = 1, #r do order[i] = i end

@@ -6,6 +6,7 @@
 **   arclen._segment_times(c, ds, i, j, shift, seglen, tol, ts)
 **   arclen._segment_samples(c, ds, i, j, shift, seglen, tol, k, out [, tans, times])
 **   arclen._walk_samples(segs, cum, ds, tol, out [, tans, times])  (the walk too)
+**   arclen._queries(ds, L, wrap)  (a query list read, checked and reduced)
 ** The distances are read in chunks into C buffers (one set-up per chunk),
 ** so a long run pays neither a Lua call nor a table per distance.
 */
@@ -333,7 +334,61 @@ static int l_array(lua_State *L) {
   return 1;
 }
 
+/* arclen._queries(ds, L, wrap) -> r, ascending | nil, message: path.lua's
+** query list read: each ds[i] a finite number, reduced into [0, L] --
+** wrapped (s - floor(s / L) L) when wrap, else clamped (to the integer 0
+** below, to the value L above); an unchanged distance is copied as it is
+** (an integer stays one).  ascending: whether r is. */
+static int l_queries(lua_State *L) {
+  double len, prev = -HUGE_VAL;
+  long n, i;
+  int wrap, ascending = 1;
+  luaL_checktype(L, 1, LUA_TTABLE);
+  len = luaL_checknumber(L, 2);
+  wrap = lua_toboolean(L, 3);
+  if (lua_rawlen(L, 1) > 0x7fffffff / 3)
+    return luaL_argerror(L, 1, "too many distances");
+  n = (long)lua_rawlen(L, 1);
+  lua_settop(L, 2);
+  lua_createtable(L, (int)n, 0);                            /* 3: r */
+  for (i = 1; i <= n; i++) {
+    double v, r;
+    if (rawgeti_type(L, 1, (int)i) != LUA_TNUMBER) {
+      lua_pushnil(L);
+      lua_pushfstring(L, "distance %d must be a number, got %s", (int)i,
+                      luaL_typename(L, -2));
+      return 2;
+    }
+    v = lua_tonumber(L, -1);
+    if (!isfinite(v)) {
+      lua_pushnil(L);
+      lua_pushfstring(L, "distance %d must be finite", (int)i);
+      return 2;
+    }
+    r = v;
+    if (wrap) {
+      r = v - floor(v / len) * len;
+      lua_pop(L, 1);
+      lua_pushnumber(L, r);
+    } else if (v < 0) {
+      r = 0;
+      lua_pop(L, 1);
+      lua_pushinteger(L, 0);
+    } else if (v > len) {
+      r = len;
+      lua_pop(L, 1);
+      lua_pushvalue(L, 2);
+    }
+    lua_rawseti(L, 3, (int)i);
+    if (r < prev) ascending = 0;
+    prev = r;
+  }
+  lua_pushboolean(L, ascending);
+  return 2;
+}
+
 static const luaL_Reg times_funcs[] = {
+  {"_queries", l_queries},
   {"times", l_times},
   {"_segment_times", l_segment_times},
   {"_array", l_array},
