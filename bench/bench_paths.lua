@@ -123,10 +123,21 @@ do
       if #runs[seg] > 0 then arclen.times(P.segs[seg], runs[seg], opts) end
     end
   end) / k
+  -- and what a 6-field table costs by itself, made k at a time in Lua
+  -- (the C API's createtable and rawsets cost the same within noise)
+  local t_tab = timed(function()
+    local out = {}
+    for i = 1, k do
+      local v = i + 0.5
+      out[i] = {x = v, y = v, s = v, time = v, tx = v, ty = v}
+    end
+  end) / k
   print()
   print(("the core's share, n = %d, k = %d: arclen.times on each segment's run %.3f us/pt (%.2f length calls); "
     .. "resample %.2f and points %.2f length calls beyond it"):format(n, k, t_times * 1e6, t_times / t_len,
     (per[n][k] - t_times) / t_len, (per_pts[n][k] - t_times) / t_len))
+  print(("a 6-field table, %d made in a Lua loop: %.3f us each (%.2f length calls): resample's floor is about "
+    .. "%.2f length calls a point"):format(k, t_tab * 1e6, t_tab / t_len, (per_pts[n][k] + t_tab) / t_len))
 end
 
 -- Growth: resample's time per point against n = 10 at the largest k.
