@@ -160,9 +160,15 @@ bench-paths: $(MODULE)
 	@mkdir -p $(BUILD)/peers/paths
 	PEERS_OUT=$(BUILD)/peers/paths LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_paths.lua
 
-bench-scale: $(MODULE) $(BUILD)/libarclen.a
+# The floor: the binding with no lengths measured (bench/bench_scale_floor.c).
+FLOOR = $(OUT)/bench_scale_floor.so
+$(FLOOR): bench/bench_scale_floor.c src/lua/batch.c $(HEADERS) $(BIND_OBJ) $(BUILD)/libarclen.a
+	$(CC) $(CFLAGS) $(CORE_FLAGS) -Isrc -I$(LUA_INC) -shared -o $@ $< \
+	  $(filter-out %/batch.o,$(BIND_OBJ)) $(BUILD)/libarclen.a -lm
+
+bench-scale: $(MODULE) $(BUILD)/libarclen.a $(FLOOR)
 	$(MAKE) -s -C bench bin/bench_scale_c
-	C_LOOP=bench/bin/bench_scale_c LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_scale.lua
+	FLOOR=$(FLOOR) C_LOOP=bench/bin/bench_scale_c LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_scale.lua
 
 # ---- LuaTeX and MetaPost documents -------------------------------------
 #   make luatex   the example documents in real LuaLaTeX and LuaTeX runs

@@ -70,14 +70,14 @@ end
 print()
 print("| n segments | k points | resample us/pt | ratio | points us/pt | ratio | dash us/dash | ratio | point(s) us/pt | ratio |")
 print("|---|---|---|---|---|---|---|---|---|---|")
-local per = {}
+local per, per_pts = {}, {}
 local paths = {}
 for _, n in ipairs(NS) do
   local segs = random_segments(n)
   local p = path(segs, {tol = TOL})
   local L = p:length()                     -- the segments' lengths, cached
   paths[n] = {p = p, segs = segs, L = L}
-  per[n] = {}
+  per[n], per_pts[n] = {}, {}
   for _, k in ipairs(KS) do
     local ds = distances(L, k)
     local t_res = timed(function() p:resample(k) end) / k
@@ -91,11 +91,53 @@ for _, n in ipairs(NS) do
       end) / k
     end
     per[n][k] = t_res
+    per_pts[n][k] = t_pts
     print(("| %d | %d | %.3f | %.2f | %.3f | %.2f | %.3f | %.2f | %s | %s |"):format(
       n, k, t_res * 1e6, t_res / t_len, t_pts * 1e6, t_pts / t_len, t_dash * 1e6,
       t_dash / t_len, t_one < math.huge and ("%.3f"):format(t_one * 1e6) or "-",
       t_one < math.huge and ("%.2f"):format(t_one / t_len) or "-"))
   end
+end
+
+-- The core's share at n = 100, k = 1000: arclen.times (times only, flat)
+-- on each segment's run of the same distances, as the walk hands them
+-- over -- the time finding that resample and points both pay, set-up a
+-- segment included; what they cost beyond it is the binding's.
+do
+  local n, k = 100, 1000
+  local P = paths[n]
+  local cum = {[0] = 0}
+  for i = 1, n do cum[i] = cum[i - 1] + arclen.length(P.segs[i], opts) end
+  local ds, runs, j = distances(P.L, k), {}, 1
+  for seg = 1, n do
+    local r = {}
+    while j <= k and (seg == n or ds[j] < cum[seg]) do
+      local s = ds[j] - cum[seg - 1]
+      r[#r + 1] = s < 0 and 0 or s
+      j = j + 1
+    end
+    runs[seg] = r
+  end
+  local t_times = timed(function()
+    for seg = 1, n do
+      if #runs[seg] > 0 then arclen.times(P.segs[seg], runs[seg], opts) end
+    end
+  end) / k
+  -- and what a 6-field table costs by itself, made k at a time in Lua
+  -- (the C API's createtable and rawsets cost the same within noise)
+  local t_tab = timed(function()
+    local out = {}
+    for i = 1, k do
+      local v = i + 0.5
+      out[i] = {x = v, y = v, s = v, time = v, tx = v, ty = v}
+    end
+  end) / k
+  print()
+  print(("the core's share, n = %d, k = %d: arclen.times on each segment's run %.3f us/pt (%.2f length calls); "
+    .. "resample %.2f and points %.2f length calls beyond it"):format(n, k, t_times * 1e6, t_times / t_len,
+    (per[n][k] - t_times) / t_len, (per_pts[n][k] - t_times) / t_len))
+  print(("a 6-field table, %d made in a Lua loop: %.3f us each (%.2f length calls): resample's floor is about "
+    .. "%.2f length calls a point"):format(k, t_tab * 1e6, t_tab / t_len, (per_pts[n][k] + t_tab) / t_len))
 end
 
 -- Growth: resample's time per point against n = 10 at the largest k.

@@ -61,22 +61,49 @@ per = nil
 collectgarbage()
 
 -- batch, in turn with the C loop over the same curves (bench_scale_c.c,
--- when C_LOOP names it): three rounds, the least of each
-local C_LOOP = os.getenv("C_LOOP")
-local batch, t_batch, c_ns, ratios = nil, math.huge, {}, {}
-for round = 1, 3 do
-  if C_LOOP then
-    local f = io.popen(C_LOOP .. " " .. N)
-    local out = f and f:read("*a") or ""
-    if f then f:close() end
-    c_ns[round] = tonumber(out:match("(%d+) ns/curve"))
-  end
+-- when C_LOOP names it: one pass of arclen_length per curve, as
+-- arclen.lengths calls it) and with the floor (bench_scale_floor.c, when
+-- FLOOR names it: the binding measuring no length).  Five rounds, one run
+-- of each a round, the order turning; ratios within a round.
+local C_LOOP, FLOOR = os.getenv("C_LOOP"), os.getenv("FLOOR")
+local floor_lengths
+if FLOOR then
+  local open = assert(package.loadlib(FLOOR, "luaopen_bench_scale_floor"))
+  floor_lengths = open().lengths
+end
+local ROUNDS = 5
+local batch, t_batch = nil, math.huge
+local c_ns, b_ns, f_ns, ratios, fratios = {}, {}, {}, {}, {}
+local function run_c(round)
+  if not C_LOOP then return end
+  local f = io.popen(C_LOOP .. " " .. N .. " 1")
+  local out = f and f:read("*a") or ""
+  if f then f:close() end
+  c_ns[round] = tonumber(out:match("(%d+) ns/curve"))
+end
+local function run_batch(round)
   collectgarbage()
   t0 = clock()
   batch = arclen.lengths(coords, opts)
   local t = clock() - t0
   if t < t_batch then t_batch = t end
-  if c_ns[round] then ratios[round] = t / N * 1e9 / c_ns[round] end
+  b_ns[round] = t / N * 1e9
+end
+local function run_floor(round)
+  if not floor_lengths then return end
+  collectgarbage()
+  t0 = clock()
+  local r = floor_lengths(coords, opts)
+  f_ns[round] = (clock() - t0) / N * 1e9
+  assert(#r == N)
+end
+local steps = {run_c, run_batch, run_floor}
+for round = 1, ROUNDS do
+  for s = 0, 2 do steps[(s + round) % 3 + 1](round) end
+  if c_ns[round] then
+    ratios[round] = b_ns[round] / c_ns[round]
+    if f_ns[round] then fratios[round] = (c_ns[round] + f_ns[round]) / c_ns[round] end
+  end
 end
 
 -- the results agree exactly (same method, same options)
@@ -99,13 +126,29 @@ row("arclen.length, 8 numbers per call", t_call)
 row("arclen.length, a table per call", t_tab)
 row("arclen.lengths (batch, one flat array)", t_batch)
 print(("batch / per-call time: %.3f (8 numbers), %.3f (table)"):format(t_batch / t_call, t_batch / t_tab))
+local function fmt(t)
+  local r = {}
+  for i, v in ipairs(t) do r[i] = ("%.2f"):format(v) end
+  return table.concat(r, ", ")
+end
+local function median(t)
+  local c = {}
+  for i, v in ipairs(t) do c[i] = v end
+  table.sort(c)
+  return c[math.floor((#c + 1) / 2)]
+end
 if #ratios > 0 then
-  table.sort(ratios)
-  local lo, hi = math.huge, 0
-  for _, v in ipairs(c_ns) do lo, hi = math.min(lo, v), math.max(hi, v) end
-  print(("C loop (arclen_length over the same array, CPU time): %.0f-%.0f ns/curve; " ..
-    "arclen.lengths / C loop, in turn: %s"):format(lo, hi,
-    table.concat((function() local t = {} for i, r in ipairs(ratios) do t[i] = ("%.2f"):format(r) end return t end)(), ", ")))
+  print(("C loop (arclen_length over the same array, CPU time, one pass a round): %.0f ns/curve (median)"):format(
+    median(c_ns)))
+  print(("arclen.lengths / C loop, round by round: %s; median %.2f"):format(fmt(ratios), median(ratios)))
+end
+if #f_ns > 0 then
+  print(("floor (the binding measuring no length: reading, checks, result): %.0f ns/curve (median)"):format(
+    median(f_ns)))
+  if #fratios > 0 then
+    print(("(C loop + floor) / C loop, round by round: %s; median %.2f -- the least ratio the public API allows"):format(
+      fmt(fratios), median(fratios)))
+  end
 end
 print(("batch equals per-call: max |difference| %g on 100 samples; sum of lengths %.10g (tables: %.10g)")
   :format(worst, sum, sum_tab))

@@ -2,7 +2,10 @@
 ** bench_scale_c.c -- the C loop that make bench-scale holds arclen.lengths
 ** to: arclen_length over the same N curves as bench/bench_scale.lua (its
 ** Park-Miller generator, seed 20261121, coordinates 10 u in [0, 10)), from
-** one flat array.  Prints ns per curve (the least of 3 runs), in CPU time
+** one flat array, one arclen_length call per curve (the call that
+** arclen.lengths makes for the default method).  Prints ns per curve, the
+** least of RUNS passes (second argument, 3 by default; bench_scale.lua
+** asks for 1, to pair one pass with one arclen.lengths call), in CPU time
 ** as the Lua script's os.clock: on a shared machine wall time counts the
 ** other processes' turns.
 */
@@ -20,6 +23,7 @@ static double cpu_now(void) {
 
 int main(int argc, char **argv) {
   long n = argc > 1 ? atol(argv[1]) : 1000000, i;
+  int runs = argc > 2 ? atoi(argv[2]) : 3;
   double *c = malloc(sizeof *c * 8 * (size_t)n), best = 1e300, sum = 0;
   long long seed = 20261121 % 2147483647;
   int r;
@@ -28,7 +32,7 @@ int main(int argc, char **argv) {
     seed = (seed * 48271) % 2147483647;
     c[i] = 10 * ((double)seed / 2147483647);
   }
-  for (r = 0; r < 3; r++) {
+  for (r = 0; r < runs; r++) {
     double t0 = cpu_now(), t;
     sum = 0;
     for (i = 0; i < n; i++) sum += arclen_length(c + 8 * i, 1e-12);

@@ -321,7 +321,10 @@ end
 
 -- ---- many distances in one walk -------------------------------------------
 
-local segment_times, segment_samples = arclen._segment_times, arclen._segment_samples
+local segment_times = arclen._segment_times
+local new_array = arclen._array      -- a table with room for n items
+local walk_samples = arclen._walk_samples   -- walk + _segment_samples, in C
+local reduce_queries = arclen._queries      -- read_queries' loop, in C
 
 -- Whether distances go through the one-pass walk (arclen.times per
 -- segment): the default method's paths; others take one time per distance.
@@ -505,26 +508,36 @@ function Path:tangent(s)
   return unpack_dim(direction(self, k, t), self.dim)
 end
 
--- A new path with the same options from a list of segments with gap marks.
+-- A new path with the same options from a fresh list of segments (its
+-- own: it becomes the path's segment list) with gap marks pieces.gap[k]
+-- (nil when there are none).  Three tables a path: dash makes one a dash.
 local function from_pieces(self, pieces, x0, y0, z0)
-  local p = setmetatable({n = #pieces, dim = self.dim, cyclic = false,
-    tol = self.tol, method = self.method, segs = {}, first = {}, nsub = 0,
-    x0 = x0, y0 = y0, z0 = z0}, Path)
-  for k, c in ipairs(pieces) do
-    p.segs[k] = c
-    if k == 1 or pieces.gap[k] then
-      p.nsub = p.nsub + 1
-      p.first[p.nsub] = k
+  local n, gap = #pieces, pieces.gap
+  pieces.gap = nil
+  local first, nsub
+  if n == 0 then
+    first, nsub = {1}, 0
+  elseif not gap then
+    first, nsub = {1, n + 1}, 1
+  else
+    first, nsub = {}, 0
+    for k = 1, n do
+      if k == 1 or gap[k] then
+        nsub = nsub + 1
+        first[nsub] = k
+      end
     end
+    first[nsub + 1] = n + 1
   end
-  p.first[p.nsub + 1] = p.n + 1
-  return p
+  return setmetatable({n = n, dim = self.dim, cyclic = false,
+    tol = self.tol, method = self.method, segs = pieces, first = first, nsub = nsub,
+    x0 = x0, y0 = y0, z0 = z0}, Path)
 end
 
 -- The segments from (k0, t0) to (k1, t1) -- distances a <= b (in [0, L])
 -- located -- as a list with gap marks, and the start point.
 local function pieces_located(self, k0, t0, k1, t1)
-  local out = {gap = {}}
+  local out = {}                 -- out.gap made at the first gap
   local d = self.dim
   if k1 < k0 or (k1 == k0 and t1 <= t0) then
     local x, y, z = arclen.point(self.segs[k0], t0)
@@ -542,7 +555,10 @@ local function pieces_located(self, k0, t0, k1, t1)
     if ta ~= 0 or tb ~= 1 then c = arclen.subcurve(c, ta, tb) end
     if tb > ta or (ta == 0 and tb == 1) then
       out[#out + 1] = c
-      if isgap[k] and k > k0 then out.gap[#out] = true end
+      if isgap[k] and k > k0 then
+        out.gap = out.gap or {}
+        out.gap[#out] = true
+      end
     end
   end
   if #out == 0 then
@@ -566,7 +582,7 @@ function Path:sub(s0, s1)
   check_number(s0, 1, "sub", "s0")
   check_number(s1, 2, "sub", "s1")
   local L = usable(self, "sub")
-  if self.n == 0 then return from_pieces(self, {gap = {}}, self.x0, self.y0, self.z0) end
+  if self.n == 0 then return from_pieces(self, {}, self.x0, self.y0, self.z0) end
   local a = s0 < 0 and 0 or (s0 > L and L or s0)
   local b = s1 < 0 and 0 or (s1 > L and L or s1)
   return from_pieces(self, pieces_between(self, a, b))
@@ -578,9 +594,8 @@ function Path:split(s)
   check_number(s, 1, "split", "distance")
   local L = usable(self, "split")
   if self.n == 0 then
-    local e = {gap = {}}
-    return from_pieces(self, e, self.x0, self.y0, self.z0),
-           from_pieces(self, e, self.x0, self.y0, self.z0)
+    return from_pieces(self, {}, self.x0, self.y0, self.z0),
+           from_pieces(self, {}, self.x0, self.y0, self.z0)
   end
   local a = s < 0 and 0 or (s > L and L or s)
   return from_pieces(self, pieces_between(self, 0, a)),
@@ -605,13 +620,14 @@ function Path:resample(spec)
   check_self(self, "resample")
   local fname = "resample"
   local L = usable(self, fname)
-  local dists = {}
+  local dists
   if type(spec) == "number" then
     local n = spec
     local low = self.cyclic and 1 or 2
     if n ~= floor(n) or n < low or n > MAX_POINTS then
       argerror(1, fname, format("n must be an integer in [%d, %d]", low, MAX_POINTS))
     end
+    dists = new_array(n)
     local div = self.cyclic and n or n - 1
     for i = 0, n - 1 do dists[i + 1] = i == div and L or L * i / div end
   elseif type(spec) == "table" then
@@ -626,6 +642,7 @@ function Path:resample(spec)
       argerror(1, fname, format("step too small: more than %d points", MAX_POINTS))
     end
     local m = floor(L / h)
+    dists = new_array(m + 1)
     for i = 0, m do
       local s = i * h
       if s > L then s = L end
@@ -634,7 +651,7 @@ function Path:resample(spec)
   else
     argerror(1, fname, "a count n or {step = h} expected, got " .. type(spec))
   end
-  local out = {}
+  local out = new_array(#dists)
   if self.n == 0 then
     for i = 1, #dists do
       out[i] = {x = self.x0, y = self.y0, z = self.z0, s = 0, time = 0,
@@ -643,11 +660,7 @@ function Path:resample(spec)
     return out
   end
   if walks(self) then
-    local cum, segs, tol = self.cum, self.segs, self.tol
-    walk(self, dists, 1, #dists, false, function(k, i, j)
-      segment_samples(segs[k], dists, i, j, cum[k - 1], cum[k] - cum[k - 1],
-                      tol, k, out)
-    end)
+    walk_samples(self.segs, self.cum, dists, self.tol, out)
     return out
   end
   for i, s in ipairs(dists) do out[i] = sample(self, s) end
@@ -661,16 +674,13 @@ local function read_queries(self, ds, fname, L)
   if type(ds) ~= "table" then
     argerror(1, fname, "a list of distances expected, got " .. type(ds))
   end
-  local r, ascending = {}, true
-  for i = 1, #ds do
-    local s = ds[i]
-    if type(s) ~= "number" then
-      argerror(1, fname, format("distance %d must be a number, got %s", i, type(s)))
-    end
-    if not isfinite(s) then argerror(1, fname, format("distance %d must be finite", i)) end
-    r[i] = (reduce(self, s, L))
-    if i > 1 and r[i] < r[i - 1] then ascending = false end
+  if getmetatable(ds) ~= nil then         -- the C loop reads raw: copy a proxy
+    local plain = {}
+    for i = 1, #ds do plain[i] = ds[i] end
+    ds = plain
   end
+  local r, ascending = reduce_queries(ds, L, self.cyclic and L > 0)
+  if not r then argerror(1, fname, ascending) end
   if ascending then return r, nil end
   local order = {}
   for i = 1, #r do order[i] = i end
@@ -698,11 +708,8 @@ local function fill_samples(self, ds, out, pts, tans, times)
       end
     end
   elseif walks(self) then
-    local cum, segs, tol = self.cum, self.segs, self.tol
-    walk(self, ds, 1, #ds, false, function(k, i, j)
-      segment_samples(segs[k], ds, i, j, cum[k - 1], cum[k] - cum[k - 1], tol,
-                      k, pts or out, pts and (tans or false), pts and (times or false))
-    end)
+    walk_samples(self.segs, self.cum, ds, self.tol, pts or out,
+                 pts and (tans or false), pts and (times or false))
   else
     for q = 1, #ds do
       local smp = sample(self, ds[q])
@@ -727,7 +734,7 @@ function Path:samples(ds)
   check_self(self, "samples")
   local L = usable(self, "samples")
   local r, order = read_queries(self, ds, "samples", L)
-  local out = {}
+  local out = new_array(#r)
   fill_samples(self, r, out)
   if not order then return out end
   local res = {}
@@ -756,10 +763,12 @@ function Path:points(ds, opts)
   end
   local L = usable(self, fname)
   local r, order = read_queries(self, ds, fname, L)
-  local pts, tans, times = {}, want_tans and {} or false, want_times and {} or false
+  local d = self.dim
+  local pts = new_array(d * #r)
+  local tans, times = want_tans and new_array(d * #r) or false, want_times and new_array(#r) or false
   fill_samples(self, r, nil, pts, tans, times)
   if order then
-    local d, p2, v2, t2 = self.dim, {}, tans and {}, times and {}
+    local p2, v2, t2 = new_array(d * #r), tans and new_array(d * #r), times and new_array(#r)
     for q = 1, #r do
       local i = order[q]
       for c = 1, d do

@@ -2,33 +2,66 @@
 ** batch.c -- arclen.lengths(coords [, opts]) and arclen.lengths3: the
 ** length of every cubic in a flat array of numbers (8 per curve in 2D, 12
 ** in 3D) in one call, returned as an array.  The curves are read in
-** chunks into a C buffer and measured by arclen_lengths (batch.c), so a
-** large set pays neither a Lua call nor a table per curve.
+** chunks into a C buffer and measured there, so a large set pays neither
+** a Lua call nor a table per curve.
 ** opts as arclen.length's (tol, method, t0, t1, steps); info does not
 ** apply.  Errors name the argument and the coordinate's index.
+**
+** Where the time goes (doc/benchmarks.md, "Many curves from Lua"): the
+** public API reads a number in two calls (lua_rawgeti, lua_tonumber), so
+** the loop below does only that per number -- the type and finiteness
+** checks are folded into one test per block -- and the default method
+** measures each curve as arclen_length does, the call a C loop makes.
 */
 #include <math.h>
 
 #include "lua/binding.h"
 
 #define CHUNK 256      /* curves per buffer: 24 KB of stack in 3D */
+#define BLOCK 48       /* numbers on the Lua stack at once (4 curves in 3D) */
 
-/* lua_rawgeti returning the value's type, as it does from 5.3 on. */
-#if defined(LUA_VERSION_NUM) && LUA_VERSION_NUM >= 503
-#define rawgeti_type(L, t, k) lua_rawgeti(L, (t), (k))
-#else
-static int rawgeti_type(lua_State *L, int t, int k) {
-  lua_rawgeti(L, t, k);
-  return lua_type(L, -1);
+/* The first bad number of a block of b on the stack top, coordinate
+** first + 1 being at -b: raises its error. */
+static int bad_coordinate(lua_State *L, const double *v, long first, int b) {
+  int j;
+  for (j = 0; j < b; j++) {
+    int idx = j - b;
+    long k = first + j + 1;
+    if (lua_type(L, idx) != LUA_TNUMBER)
+      return luaL_argerror(L, 1, lua_pushfstring(L,
+          "coordinate %d must be a number, got %s", (int)k,
+          luaL_typename(L, idx)));
+    if (!isfinite(v[j]))
+      return luaL_argerror(L, 1, lua_pushfstring(L,
+          "coordinate %d must be finite", (int)k));
+  }
+  return 0;
 }
-#endif
+
+/* coords[first + 1 .. first + count] into buf, each a finite number. */
+static void read_numbers(lua_State *L, long first, long count, double *buf) {
+  long i;
+  for (i = 0; i < count; i += BLOCK) {
+    int b = count - i < BLOCK ? (int)(count - i) : BLOCK, j, bad = 0;
+    int k0 = (int)(first + i);
+    double z = 0, *v = buf + i;
+    for (j = 0; j < b; j++)
+      bad |= rawgeti_type(L, 1, k0 + j + 1) ^ LUA_TNUMBER;
+    for (j = 0; j < b; j++) v[j] = lua_tonumber(L, j - b);
+    /* x - x is 0 for a finite x, NaN for inf and NaN: one test a block,
+    ** in a loop of its own (no call in it to keep z in memory) */
+    for (j = 0; j < b; j++) z += v[j] - v[j];
+    if (bad || z != 0) bad_coordinate(L, v, first + i, b);
+    lua_pop(L, b);
+  }
+}
 
 static int lengths(lua_State *L, int dim, const char *fname) {
   double buf[CHUNK * 12], out[CHUNK];
   arclenL_opts lo;
   size_t len;
   long n, done, i, failed;
-  int stride = 4 * dim;
+  int stride = 4 * dim, plain;
   if (lua_type(L, 1) != LUA_TTABLE)
     return luaL_argerror(L, 1, lua_pushfstring(L,
         "table of coordinates expected (%d numbers per curve), got %s",
@@ -45,36 +78,28 @@ static int lengths(lua_State *L, int dim, const char *fname) {
   if (len > 0x7fffffff)
     return luaL_argerror(L, 1, "too many coordinates");
   n = (long)(len / (size_t)stride);
+  /* The default method on checked numbers and options: arclen_length's
+  ** own call (the same result to the bit as the method table's entry,
+  ** without its second check of each curve and the indirect call). */
+  plain = lo.method == arclen_find_method("gauss");
+  luaL_checkstack(L, BLOCK + 4, "too many coordinates");
   lua_createtable(L, (int)n, 0);
   for (done = 0; done < n; done += CHUNK) {
     long m = n - done < CHUNK ? n - done : CHUNK;
-    int rc;
-    for (i = 0; i < m * stride; i += stride) {
-      int k0 = (int)(done * stride + i), j, bad = 0;
-      /* a curve's numbers pushed at once, read in place and popped at
-      ** once: half the API calls of one push, check and pop per number */
-      for (j = 0; j < stride; j++)
-        bad |= rawgeti_type(L, 1, k0 + j + 1) != LUA_TNUMBER;
-      for (j = 0; j < stride; j++) {
-        double v = lua_tonumber(L, j - stride);
-        bad |= !isfinite(v);
-        buf[i + j] = v;
+    int rc = ARCLEN_OK;
+    read_numbers(L, done * stride, m * stride, buf);
+    if (plain) {
+      for (i = 0; i < m; i++) {
+        const double *c = buf + i * stride;
+        out[i] = dim == 2 ? arclen_length_range(c, lo.o.t0, lo.o.t1, lo.o.rtol)
+                          : arclen_length3_range(c, lo.o.t0, lo.o.t1, lo.o.rtol);
+        if (isnan(out[i])) break;   /* not expected: the method's code says why */
       }
-      if (bad) {                  /* which one, for the message */
-        for (j = 0; j < stride; j++) {
-          int idx = j - stride, k = k0 + j + 1;
-          if (lua_type(L, idx) != LUA_TNUMBER)
-            return luaL_argerror(L, 1, lua_pushfstring(L,
-                "coordinate %d must be a number, got %s", k,
-                luaL_typename(L, idx)));
-          if (!isfinite(buf[i + j]))
-            return luaL_argerror(L, 1, lua_pushfstring(L,
-                "coordinate %d must be finite", k));
-        }
-      }
-      lua_pop(L, stride);
+      if (i < m)
+        rc = arclen_lengths(buf, m, dim, lo.method, &lo.o, out, &failed);
+    } else {
+      rc = arclen_lengths(buf, m, dim, lo.method, &lo.o, out, &failed);
     }
-    rc = arclen_lengths(buf, m, dim, lo.method, &lo.o, out, &failed);
     if (rc == ARCLEN_EDIM)
       return luaL_argerror(L, 2, lua_pushfstring(L,
           "method '%s' does not support this dimension", lo.method->name));

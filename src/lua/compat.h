@@ -26,4 +26,15 @@ static inline void luaL_setfuncs(lua_State *L, const luaL_Reg *l, int nup) {
 }
 #endif
 
+/* lua_rawgeti returning the value's type, as it does from 5.3 on: one
+** API call per number read from an array where 5.1/5.2 need two. */
+#if defined(LUA_VERSION_NUM) && LUA_VERSION_NUM >= 503
+#define rawgeti_type(L, t, k) lua_rawgeti(L, (t), (k))
+#else
+static inline int rawgeti_type(lua_State *L, int t, int k) {
+  lua_rawgeti(L, t, k);
+  return lua_type(L, -1);
+}
+#endif
+
 #endif

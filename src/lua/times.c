@@ -5,6 +5,8 @@
 ** segment the run of sorted distances that falls in it:
 **   arclen._segment_times(c, ds, i, j, shift, seglen, tol, ts)
 **   arclen._segment_samples(c, ds, i, j, shift, seglen, tol, k, out [, tans, times])
+**   arclen._walk_samples(segs, cum, ds, tol, out [, tans, times])  (the walk too)
+**   arclen._queries(ds, L, wrap)  (a query list read, checked and reduced)
 ** The distances are read in chunks into C buffers (one set-up per chunk),
 ** so a long run pays neither a Lua call nor a table per distance.
 */
@@ -18,8 +20,7 @@
 /* ds[i] as a number, not NaN (arg names the table). */
 static double distance_at(lua_State *L, int arg, int ds, long i) {
   double v;
-  lua_rawgeti(L, ds, (int)i);
-  if (lua_type(L, -1) != LUA_TNUMBER)
+  if (rawgeti_type(L, ds, (int)i) != LUA_TNUMBER)
     return luaL_argerror(L, arg, lua_pushfstring(L,
         "distance %d must be a number, got %s", (int)i,
         luaL_typename(L, -1))), 0;
@@ -122,15 +123,14 @@ static void check_run(lua_State *L, segment_run *r) {
     luaL_argerror(L, 3, "distances out of range");
 }
 
-/* The times of ds[i .. i + m - 1] in this segment: 0 at or before its
-** start, 1 at or past its length (as path.lua's locate), else
-** arclen_times on what lies between. */
-static void run_chunk(lua_State *L, const segment_run *r, long i, long m,
-                      double *prev, double *t, double *p, double *v) {
-  double s[CHUNK];
+/* The times of the distances s[0 .. m - 1] (less the shift) in this
+** segment: 0 at or before its start, 1 at or past its length (as
+** path.lua's locate), else arclen_times on what lies between; with p
+** and v, the points and unit tangents there. */
+static void times_of(lua_State *L, const segment_run *r, const double *s,
+                     long m, double *t, double *p, double *v) {
   long q, a, b;
   int rc;
-  read_chunk(L, 2, 2, i, m, r->shift, prev, s);
   for (a = 0; a < m && s[a] <= 0; a++) t[a] = 0;
   for (b = m; b > a && s[b - 1] >= r->seglen; b--) t[b - 1] = 1;
   rc = arclen_times(r->c, r->dim, s + a, b - a, r->rtol, t + a, NULL, NULL);
@@ -139,6 +139,14 @@ static void run_chunk(lua_State *L, const segment_run *r, long i, long m,
     if (p) arclen_point(r->c, r->dim, t[q], p + r->dim * q);
     if (v) arclen_unit_tangent(r->c, r->dim, t[q], v + r->dim * q);
   }
+}
+
+/* times_of on ds[i .. i + m - 1], read from the table at 2. */
+static void run_chunk(lua_State *L, const segment_run *r, long i, long m,
+                      double *prev, double *t, double *p, double *v) {
+  double s[CHUNK];
+  read_chunk(L, 2, 2, i, m, r->shift, prev, s);
+  times_of(L, r, s, m, t, p, v);
 }
 
 /* arclen._segment_times(c, ds, i, j, shift, seglen, tol, ts): ts[q] = the
@@ -157,6 +165,54 @@ static int l_segment_times(lua_State *L) {
   return 0;
 }
 
+/* _segment_samples' upvalues: the sample tables' keys. */
+enum { KEY_X = 1, KEY_TX = 4, KEY_S = 7, KEY_TIME = 8, KEYS = 8 };
+
+/* Where the samples go: the distances' table (for s =), out and, when
+** flat, the tangents' and times' tables (0: not wanted). */
+typedef struct sample_sink {
+  int ds, out, tans, times, flat;
+} sample_sink;
+
+/* The samples of ds[i .. i + m - 1] (times t, points p, tangents v) in
+** segment base + 1: tables {x =, y =[, z =], s =, time =, tx =, ty =[,
+** tz =]} into out[i ..], or flat arrays. */
+static void emit_samples(lua_State *L, const sample_sink *o, int dim,
+                         double base, long i, long m, const double *t,
+                         const double *p, const double *v) {
+  long q;
+  int k;
+  for (q = 0; q < m; q++) {
+    if (o->flat) {
+      for (k = 0; k < dim; k++) {
+        long at = dim * (i + q - 1) + k + 1;
+        set_number(L, o->out, at, p[dim * q + k]);
+        if (o->tans) set_number(L, o->tans, at, v[dim * q + k]);
+      }
+      if (o->times) set_number(L, o->times, i + q, base + t[q]);
+      continue;
+    }
+    /* the keys are the closure's upvalues (KEY_X ..): rawset with them
+    ** skips lua_setfield's lookup of the C string each time */
+    lua_createtable(L, 0, 2 * dim + 2);
+    for (k = 0; k < dim; k++) {
+      lua_pushvalue(L, lua_upvalueindex(KEY_X + k));
+      lua_pushnumber(L, p[dim * q + k]);
+      lua_rawset(L, -3);
+      lua_pushvalue(L, lua_upvalueindex(KEY_TX + k));
+      lua_pushnumber(L, v[dim * q + k]);
+      lua_rawset(L, -3);
+    }
+    lua_pushvalue(L, lua_upvalueindex(KEY_S));
+    lua_rawgeti(L, o->ds, (int)(i + q));
+    lua_rawset(L, -3);
+    lua_pushvalue(L, lua_upvalueindex(KEY_TIME));
+    lua_pushnumber(L, base + t[q]);
+    lua_rawset(L, -3);
+    lua_rawseti(L, o->out, (int)(i + q));
+  }
+}
+
 /* arclen._segment_samples(c, ds, i, j, shift, seglen, tol, k, out
 ** [, tans, times]): with tans absent or nil, out[q] = {x =, y =[, z =],
 ** s =, time = k - 1 + t, tx =, ty =[, tz =]}; with tans a table or
@@ -164,53 +220,189 @@ static int l_segment_times(lua_State *L) {
 ** unit tangents, times the path times (each when a table). */
 static int l_segment_samples(lua_State *L) {
   segment_run r;
+  sample_sink o;
   double t[CHUNK], p[3 * CHUNK], v[3 * CHUNK], prev = -HUGE_VAL, base;
-  long i, q;
-  int flat = !lua_isnoneornil(L, 10), want_v, want_t;
-  static const char *const pn[3] = {"x", "y", "z"}, *const vn[3] = {"tx", "ty", "tz"};
+  long i;
   check_run(L, &r);
   base = (double)luaL_checkinteger(L, 8) - 1;
   luaL_checktype(L, 9, LUA_TTABLE);
-  want_v = flat && lua_istable(L, 10);
-  want_t = flat && lua_istable(L, 11);
+  o.ds = 2;
+  o.out = 9;
+  o.flat = !lua_isnoneornil(L, 10);
+  o.tans = o.flat && lua_istable(L, 10) ? 10 : 0;
+  o.times = o.flat && lua_istable(L, 11) ? 11 : 0;
   for (i = r.i; i <= r.j; i += CHUNK) {
     long m = r.j - i + 1 < CHUNK ? r.j - i + 1 : CHUNK;
-    run_chunk(L, &r, i, m, &prev, t, p, (!flat || want_v) ? v : NULL);
-    for (q = 0; q < m; q++) {
-      int k;
-      if (flat) {
-        for (k = 0; k < r.dim; k++) {
-          long at = r.dim * (i + q - 1) + k + 1;
-          set_number(L, 9, at, p[r.dim * q + k]);
-          if (want_v) set_number(L, 10, at, v[r.dim * q + k]);
-        }
-        if (want_t) set_number(L, 11, i + q, base + t[q]);
-        continue;
+    run_chunk(L, &r, i, m, &prev, t, p, (!o.flat || o.tans) ? v : NULL);
+    emit_samples(L, &o, r.dim, base, i, m, t, p, v);
+  }
+  return 0;
+}
+
+/* cum[k] as a number (the path's cumulative lengths, checked when made). */
+static double cum_at(lua_State *L, int cum, long k) {
+  double v;
+  lua_rawgeti(L, cum, (int)k);
+  v = lua_tonumber(L, -1);
+  lua_pop(L, 1);
+  return v;
+}
+
+/* arclen._walk_samples(segs, cum, ds, tol, out [, tans, times]): the
+** samples at the ascending distances ds (in [0, cum[n]]) on the path of
+** segments segs (cumulative lengths cum[0 .. n]), as path.lua's walk
+** calling _segment_samples on each run of ds in one segment would make
+** them (the same runs, the same numbers), in one call: no Lua walk and no
+** call a segment.  out, tans, times as _segment_samples'. */
+static int l_walk_samples(lua_State *L) {
+  segment_run r;
+  sample_sink o;
+  double t[CHUNK], p[3 * CHUNK], v[3 * CHUNK], s[CHUNK], prev = -HUGE_VAL;
+  double *d, lo_cum, hi_cum;
+  long n, nd, i, j, k;
+  luaL_checktype(L, 1, LUA_TTABLE);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  luaL_checktype(L, 3, LUA_TTABLE);
+  r.rtol = arclenL_checktol(L, 4, luaL_checknumber(L, 4));
+  luaL_checktype(L, 5, LUA_TTABLE);
+  o.ds = 3;
+  o.out = 5;
+  o.flat = !lua_isnoneornil(L, 6);
+  o.tans = o.flat && lua_istable(L, 6) ? 6 : 0;
+  o.times = o.flat && lua_istable(L, 7) ? 7 : 0;
+  n = (long)lua_rawlen(L, 1);
+  if (lua_rawlen(L, 3) > 0x7fffffff / 3)
+    return luaL_argerror(L, 3, "too many distances");
+  nd = (long)lua_rawlen(L, 3);
+  if (n == 0 || nd == 0) return 0;
+  lua_settop(L, 7);
+  d = (double *)lua_newuserdata(L, sizeof(double) * (size_t)nd);
+  for (i = 0; i < nd; i += CHUNK) {    /* checked: numbers, ascending */
+    long m = nd - i < CHUNK ? nd - i : CHUNK;
+    read_chunk(L, 3, 3, i + 1, m, 0, &prev, d + i);
+  }
+  k = 1;
+  hi_cum = cum_at(L, 2, 1);
+  for (i = 0; i < nd; i = j + 1) {
+    double x = d[i];
+    if (k < n && hi_cum <= x) {
+      /* gallop, then bisect, as path.lua's walk: O(log gap) a run */
+      long lo = k, step = 1, hi = lo + step;
+      while (hi < n && cum_at(L, 2, hi) <= x) {
+        lo = hi;
+        step *= 2;
+        hi = lo + step;
       }
-      lua_createtable(L, 0, 2 * r.dim + 2);
-      for (k = 0; k < r.dim; k++) {
-        lua_pushnumber(L, p[r.dim * q + k]);
-        lua_setfield(L, -2, pn[k]);
-        lua_pushnumber(L, v[r.dim * q + k]);
-        lua_setfield(L, -2, vn[k]);
+      if (hi > n) hi = n;
+      while (hi - lo > 1) {
+        long mid = (lo + hi) / 2;
+        if (cum_at(L, 2, mid) <= x) lo = mid; else hi = mid;
       }
-      lua_rawgeti(L, 2, (int)(i + q));
-      lua_setfield(L, -2, "s");
-      lua_pushnumber(L, base + t[q]);
-      lua_setfield(L, -2, "time");
-      lua_rawseti(L, 9, (int)(i + q));
+      k = hi;
+      hi_cum = cum_at(L, 2, k);
+    }
+    j = i;
+    if (k == n) j = nd - 1;
+    else while (j + 1 < nd && d[j + 1] < hi_cum) j++;
+    /* the run d[i .. j] in segment k */
+    lo_cum = cum_at(L, 2, k - 1);
+    lua_rawgeti(L, 1, (int)k);
+    r.dim = arclenL_checkcurve(L, lua_gettop(L), r.c);
+    lua_pop(L, 1);
+    r.shift = lo_cum;
+    r.seglen = hi_cum - lo_cum;
+    {
+      long a;
+      for (a = i; a <= j; a += CHUNK) {
+        long m = j - a + 1 < CHUNK ? j - a + 1 : CHUNK, q;
+        for (q = 0; q < m; q++) s[q] = d[a + q] - r.shift;
+        times_of(L, &r, s, m, t, p, (!o.flat || o.tans) ? v : NULL);
+        emit_samples(L, &o, r.dim, (double)k - 1, a + 1, m, t, p, v);
+      }
     }
   }
   return 0;
 }
 
+/* arclen._array(n) -> an empty table with room for n array items, for
+** the path layer's results (Lua 5.1-5.4 have no table.create). */
+static int l_array(lua_State *L) {
+  double n = luaL_checknumber(L, 1);
+  luaL_argcheck(L, n >= 0 && n <= 0x7fffffff / 3 && n == floor(n), 1,
+                "size must be an integer in [0, 715827882]");
+  lua_createtable(L, (int)n, 0);
+  return 1;
+}
+
+/* arclen._queries(ds, L, wrap) -> r, ascending | nil, message: path.lua's
+** query list read: each ds[i] a finite number, reduced into [0, L] --
+** wrapped (s - floor(s / L) L) when wrap, else clamped (to the integer 0
+** below, to the value L above); an unchanged distance is copied as it is
+** (an integer stays one).  ascending: whether r is. */
+static int l_queries(lua_State *L) {
+  double len, prev = -HUGE_VAL;
+  long n, i;
+  int wrap, ascending = 1;
+  luaL_checktype(L, 1, LUA_TTABLE);
+  len = luaL_checknumber(L, 2);
+  wrap = lua_toboolean(L, 3);
+  if (lua_rawlen(L, 1) > 0x7fffffff / 3)
+    return luaL_argerror(L, 1, "too many distances");
+  n = (long)lua_rawlen(L, 1);
+  lua_settop(L, 2);
+  lua_createtable(L, (int)n, 0);                            /* 3: r */
+  for (i = 1; i <= n; i++) {
+    double v, r;
+    if (rawgeti_type(L, 1, (int)i) != LUA_TNUMBER) {
+      lua_pushnil(L);
+      lua_pushfstring(L, "distance %d must be a number, got %s", (int)i,
+                      luaL_typename(L, -2));
+      return 2;
+    }
+    v = lua_tonumber(L, -1);
+    if (!isfinite(v)) {
+      lua_pushnil(L);
+      lua_pushfstring(L, "distance %d must be finite", (int)i);
+      return 2;
+    }
+    r = v;
+    if (wrap) {
+      r = v - floor(v / len) * len;
+      lua_pop(L, 1);
+      lua_pushnumber(L, r);
+    } else if (v < 0) {
+      r = 0;
+      lua_pop(L, 1);
+      lua_pushinteger(L, 0);
+    } else if (v > len) {
+      r = len;
+      lua_pop(L, 1);
+      lua_pushvalue(L, 2);
+    }
+    lua_rawseti(L, 3, (int)i);
+    if (r < prev) ascending = 0;
+    prev = r;
+  }
+  lua_pushboolean(L, ascending);
+  return 2;
+}
+
 static const luaL_Reg times_funcs[] = {
+  {"_queries", l_queries},
   {"times", l_times},
   {"_segment_times", l_segment_times},
-  {"_segment_samples", l_segment_samples},
+  {"_array", l_array},
   {NULL, NULL}
 };
 
 void arclen_open_times(lua_State *L) {
+  static const char *const keys[KEYS] = {"x", "y", "z", "tx", "ty", "tz", "s", "time"};
+  int k;
   luaL_setfuncs(L, times_funcs, 0);
+  for (k = 0; k < KEYS; k++) lua_pushstring(L, keys[k]);
+  lua_pushcclosure(L, l_segment_samples, KEYS);
+  lua_setfield(L, -2, "_segment_samples");
+  for (k = 0; k < KEYS; k++) lua_pushstring(L, keys[k]);
+  lua_pushcclosure(L, l_walk_samples, KEYS);
+  lua_setfield(L, -2, "_walk_samples");
 }

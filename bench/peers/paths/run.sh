@@ -5,7 +5,7 @@
 # (Debian's librust-kurbo-dev, built offline).  Each writes OUT/<name>.pts
 # and a line "name ns-per-point" to OUT/results.txt; a peer that cannot run
 # leaves a "# name: skipped (why)" line instead.
-OUT=$1
+OUT=$(cd "$1" && pwd) || exit 1     # absolute: cargo runs in another directory
 HERE=$(cd "$(dirname "$0")" && pwd)
 : >"$OUT/results.txt"
 if command -v node >/dev/null; then
@@ -22,11 +22,15 @@ fi
 if command -v cargo >/dev/null && ls -d /usr/share/cargo/registry/kurbo-0.7* >/dev/null 2>&1; then
   if (cd "$HERE/kurbo" && CARGO_TARGET_DIR="$OUT/kurbo" cargo build --release --offline -q) \
        >"$OUT/kurbo.log" 2>&1; then
-    t=$(nice "$OUT/kurbo/release/arclen-paths-kurbo" "$OUT/path.txt" "$OUT/kurbo-0.7.pts")
-    echo "kurbo-0.7 $t" >>"$OUT/results.txt"
+    if t=$(nice "$OUT/kurbo/release/arclen-paths-kurbo" "$OUT/path.txt" "$OUT/kurbo-0.7.pts") &&
+       [ -n "$t" ]; then
+      echo "kurbo-0.7 $t" >>"$OUT/results.txt"
+    else
+      echo "# kurbo: skipped (the built peer did not run)" >>"$OUT/results.txt"
+    fi
   else
     echo "# kurbo: skipped (build failed, see $OUT/kurbo.log)" >>"$OUT/results.txt"
   fi
 else
-  echo "# kurbo: skipped (needs cargo and apt-get install librust-kurbo-dev)" >>"$OUT/results.txt"
+  echo "# kurbo: skipped (needs cargo, and kurbo 0.7 in /usr/share/cargo/registry: apt-get install librust-kurbo-dev)" >>"$OUT/results.txt"
 fi
