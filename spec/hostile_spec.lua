@@ -76,7 +76,6 @@ local VALID = {
   ["_array"] = {arclen._array, {4}},
   ["_queries"] = {arclen._queries, {{1, 5}, 14, false}},
   ["_walk_samples"] = {arclen._walk_samples, {{C2}, {[0] = 0, 14}, {1, 5}, 1e-12, {}}},
-  ["_segment_samples"] = {arclen._segment_samples, {C2, {1, 5}, 1, 2, 0, 14, 1e-12, 1, {}, {}, {}}},
   ["conic"] = {arclen.conic, {{1, 0}, {1, 1}, {0, 1}, 0.7}},
   ["conic_length"] = {arclen.conic_length, {{1, 0}, {1, 1}, {0, 1}, 0.7}},
   ["conic_scheme"] = {arclen.conic_scheme, {"midpoint", 0.7}},

@@ -323,7 +323,7 @@ end
 
 local segment_times = arclen._segment_times
 local new_array = arclen._array      -- a table with room for n items
-local walk_samples = arclen._walk_samples   -- walk + _segment_samples, in C
+local walk_samples = arclen._walk_samples   -- the walk and the samples, in C
 local reduce_queries = arclen._queries      -- read_queries' loop, in C
 
 -- Whether distances go through the one-pass walk (arclen.times per

@@ -4,7 +4,6 @@
 ** and the path layer's walk (lua/arclen/path.lua), which hands each
 ** segment the run of sorted distances that falls in it:
 **   arclen._segment_times(c, ds, i, j, shift, seglen, tol, ts)
-**   arclen._segment_samples(c, ds, i, j, shift, seglen, tol, k, out [, tans, times])
 **   arclen._walk_samples(segs, cum, ds, tol, out [, tans, times])  (the walk too)
 **   arclen._queries(ds, L, wrap)  (a query list read, checked and reduced)
 ** The distances are read in chunks into C buffers (one set-up per chunk),
@@ -165,7 +164,7 @@ static int l_segment_times(lua_State *L) {
   return 0;
 }
 
-/* _segment_samples' upvalues: the sample tables' keys. */
+/* _walk_samples' upvalues: the sample tables' keys. */
 enum { KEY_X = 1, KEY_TX = 4, KEY_S = 7, KEY_TIME = 8, KEYS = 8 };
 
 /* Where the samples go: the distances' table (for s =), out and, when
@@ -213,32 +212,6 @@ static void emit_samples(lua_State *L, const sample_sink *o, int dim,
   }
 }
 
-/* arclen._segment_samples(c, ds, i, j, shift, seglen, tol, k, out
-** [, tans, times]): with tans absent or nil, out[q] = {x =, y =[, z =],
-** s =, time = k - 1 + t, tx =, ty =[, tz =]}; with tans a table or
-** false, flat arrays: out gets the points (dim numbers each), tans the
-** unit tangents, times the path times (each when a table). */
-static int l_segment_samples(lua_State *L) {
-  segment_run r;
-  sample_sink o;
-  double t[CHUNK], p[3 * CHUNK], v[3 * CHUNK], prev = -HUGE_VAL, base;
-  long i;
-  check_run(L, &r);
-  base = (double)luaL_checkinteger(L, 8) - 1;
-  luaL_checktype(L, 9, LUA_TTABLE);
-  o.ds = 2;
-  o.out = 9;
-  o.flat = !lua_isnoneornil(L, 10);
-  o.tans = o.flat && lua_istable(L, 10) ? 10 : 0;
-  o.times = o.flat && lua_istable(L, 11) ? 11 : 0;
-  for (i = r.i; i <= r.j; i += CHUNK) {
-    long m = r.j - i + 1 < CHUNK ? r.j - i + 1 : CHUNK;
-    run_chunk(L, &r, i, m, &prev, t, p, (!o.flat || o.tans) ? v : NULL);
-    emit_samples(L, &o, r.dim, base, i, m, t, p, v);
-  }
-  return 0;
-}
-
 /* cum[k] as a number (the path's cumulative lengths, checked when made). */
 static double cum_at(lua_State *L, int cum, long k) {
   double v;
@@ -250,10 +223,13 @@ static double cum_at(lua_State *L, int cum, long k) {
 
 /* arclen._walk_samples(segs, cum, ds, tol, out [, tans, times]): the
 ** samples at the ascending distances ds (in [0, cum[n]]) on the path of
-** segments segs (cumulative lengths cum[0 .. n]), as path.lua's walk
-** calling _segment_samples on each run of ds in one segment would make
-** them (the same runs, the same numbers), in one call: no Lua walk and no
-** call a segment.  out, tans, times as _segment_samples'. */
+** segments segs (cumulative lengths cum[0 .. n]), each run of ds in one
+** segment found by arclen_times with the segment's set-up, in one call:
+** no Lua walk and no call a segment.  With tans absent or nil, out[q] =
+** {x =, y =[, z =], s =, time = k - 1 + t, tx =, ty =[, tz =]} (segment
+** k); with tans a table or false, flat arrays: out gets the points (dim
+** numbers each), tans the unit tangents, times the path times (each when
+** a table). */
 static int l_walk_samples(lua_State *L) {
   segment_run r;
   sample_sink o;
@@ -399,9 +375,6 @@ void arclen_open_times(lua_State *L) {
   static const char *const keys[KEYS] = {"x", "y", "z", "tx", "ty", "tz", "s", "time"};
   int k;
   luaL_setfuncs(L, times_funcs, 0);
-  for (k = 0; k < KEYS; k++) lua_pushstring(L, keys[k]);
-  lua_pushcclosure(L, l_segment_samples, KEYS);
-  lua_setfield(L, -2, "_segment_samples");
   for (k = 0; k < KEYS; k++) lua_pushstring(L, keys[k]);
   lua_pushcclosure(L, l_walk_samples, KEYS);
   lua_setfield(L, -2, "_walk_samples");
