@@ -72,7 +72,7 @@ local VALID = {
   ["lengths"] = {arclen.lengths, {{0, 0, 1, 0, 2, 0, 3, 0, 0, 0, 10, 0, 10, 10, 0, 0}}},
   ["lengths3"] = {arclen.lengths3, {C3}},
   ["times"] = {arclen.times, {C2, {1, 5}, {points = true, tangents = true}}},
-  ["_segment_times"] = {arclen._segment_times, {C2, {1, 5}, 1, 2, 0, 14, 1e-12, {}}},
+  ["_walk_times"] = {arclen._walk_times, {{C2}, {[0] = 0, 14}, {1, 5}, 1e-12, false, {}, {}}},
   ["_array"] = {arclen._array, {4}},
   ["_queries"] = {arclen._queries, {{1, 5}, 14, false}},
   ["_walk_samples"] = {arclen._walk_samples, {{C2}, {[0] = 0, 14}, {1, 5}, 1e-12, {}}},

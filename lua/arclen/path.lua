@@ -321,7 +321,7 @@ end
 
 -- ---- many distances in one walk -------------------------------------------
 
-local segment_times = arclen._segment_times
+local walk_times = arclen._walk_times       -- locate_many's walk, in C
 local new_array = arclen._array      -- a table with room for n items
 local walk_samples = arclen._walk_samples   -- the walk and the samples, in C
 local reduce_queries = arclen._queries      -- read_queries' loop, in C
@@ -332,66 +332,16 @@ local function walks(self)
   return self.method == "gauss" and self.n > 0
 end
 
--- Visit the runs of ds[i0..i1] (ascending, in [0, L]) that fall in one
--- segment, in order: visit(k, i, j) for the run ds[i..j] in segment k --
--- the segment that locate() gives each of them (at_end: a distance at a
--- joint belongs to the segment that ends there).  O(n + k) in all, and
--- O(k log n) for few distances.
--- Whether distance s lies beyond segment m (at_end: strictly beyond).
-local function ends_before(cum, m, s, at_end)
-  if at_end then return cum[m] < s end
-  return cum[m] <= s
-end
-
-local function walk(self, ds, i0, i1, at_end, visit)
-  local cum, n = self.cum, self.n
-  local k, i = 1, i0
-  while i <= i1 do
-    local s = ds[i]
-    if k < n and ends_before(cum, k, s, at_end) then
-      -- gallop, then bisect: O(log gap) a run, so few distances on many
-      -- segments cost O(k log n), many cost O(n + k)
-      local lo, step = k, 1       -- before(lo) holds
-      local hi = lo + step
-      while hi < n and ends_before(cum, hi, s, at_end) do
-        lo, step = hi, 2 * step
-        hi = lo + step
-      end
-      if hi > n then hi = n end   -- the answer lies in (lo, hi]
-      while hi - lo > 1 do
-        local mid = floor((lo + hi) / 2)
-        if ends_before(cum, mid, s, at_end) then lo = mid else hi = mid end
-      end
-      k = hi
-    end
-    local j = i
-    if k == n then
-      j = i1
-    elseif at_end then
-      local e = cum[k]
-      while j < i1 and ds[j + 1] <= e do j = j + 1 end
-    else
-      local e = cum[k]
-      while j < i1 and ds[j + 1] < e do j = j + 1 end
-    end
-    visit(k, i, j)
-    i = j + 1
-  end
-end
-
 -- The segments ks[] and times ts[] of the ascending distances ds (in
--- [0, L]), as locate() gives them one by one.
+-- [0, L]), as locate() gives them one by one (at_end: a distance at a
+-- joint belongs to the segment that ends there); the walk is C's.
 local function locate_many(self, ds, at_end)
   local ks, ts = {}, {}
   if not walks(self) then
     for i = 1, #ds do ks[i], ts[i] = locate(self, ds[i], at_end) end
     return ks, ts
   end
-  local cum, segs, tol = self.cum, self.segs, self.tol
-  walk(self, ds, 1, #ds, at_end, function(k, i, j)
-    for q = i, j do ks[q] = k end
-    segment_times(segs[k], ds, i, j, cum[k - 1], cum[k] - cum[k - 1], tol, ts)
-  end)
+  walk_times(self.segs, self.cum, ds, self.tol, at_end, ks, ts)
   return ks, ts
 end
 

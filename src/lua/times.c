@@ -3,8 +3,8 @@
 **   arclen.times(c, distances [, opts]) -> ts [, points [, tangents]]
 ** and the path layer's walk (lua/arclen/path.lua), which hands each
 ** segment the run of sorted distances that falls in it:
-**   arclen._segment_times(c, ds, i, j, shift, seglen, tol, ts)
-**   arclen._walk_samples(segs, cum, ds, tol, out [, tans, times])  (the walk too)
+**   arclen._walk_samples(segs, cum, ds, tol, out [, tans, times])
+**   arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts)
 **   arclen._queries(ds, L, wrap)  (a query list read, checked and reduced)
 ** The distances are read in chunks into C buffers (one set-up per chunk),
 ** so a long run pays neither a Lua call nor a table per distance.
@@ -103,24 +103,12 @@ static int l_times(lua_State *L) {
   return out;
 }
 
-/* The segment call's common arguments: c, ds, i, j, shift, seglen, tol. */
+/* A segment's run of distances: its cubic, where it starts on the path
+** (shift), its length, the tolerance. */
 typedef struct segment_run {
   double c[12], shift, seglen, rtol;
-  long i, j;
   int dim;
 } segment_run;
-
-static void check_run(lua_State *L, segment_run *r) {
-  r->dim = arclenL_checkcurve(L, 1, r->c);
-  luaL_checktype(L, 2, LUA_TTABLE);
-  r->i = (long)luaL_checkinteger(L, 3);
-  r->j = (long)luaL_checkinteger(L, 4);
-  r->shift = arclenL_checkfinite(L, 5, "shift");
-  r->seglen = arclenL_checkfinite(L, 6, "segment length");
-  r->rtol = arclenL_checktol(L, 7, luaL_checknumber(L, 7));
-  if (r->i < 1 || r->j > (long)lua_rawlen(L, 2))
-    luaL_argerror(L, 3, "distances out of range");
-}
 
 /* The times of the distances s[0 .. m - 1] (less the shift) in this
 ** segment: 0 at or before its start, 1 at or past its length (as
@@ -138,30 +126,6 @@ static void times_of(lua_State *L, const segment_run *r, const double *s,
     if (p) arclen_point(r->c, r->dim, t[q], p + r->dim * q);
     if (v) arclen_unit_tangent(r->c, r->dim, t[q], v + r->dim * q);
   }
-}
-
-/* times_of on ds[i .. i + m - 1], read from the table at 2. */
-static void run_chunk(lua_State *L, const segment_run *r, long i, long m,
-                      double *prev, double *t, double *p, double *v) {
-  double s[CHUNK];
-  read_chunk(L, 2, 2, i, m, r->shift, prev, s);
-  times_of(L, r, s, m, t, p, v);
-}
-
-/* arclen._segment_times(c, ds, i, j, shift, seglen, tol, ts): ts[q] = the
-** time of ds[q] - shift in the segment, for q in i..j. */
-static int l_segment_times(lua_State *L) {
-  segment_run r;
-  double t[CHUNK], prev = -HUGE_VAL;
-  long i, q;
-  check_run(L, &r);
-  luaL_checktype(L, 8, LUA_TTABLE);
-  for (i = r.i; i <= r.j; i += CHUNK) {
-    long m = r.j - i + 1 < CHUNK ? r.j - i + 1 : CHUNK;
-    run_chunk(L, &r, i, m, &prev, t, NULL, NULL);
-    for (q = 0; q < m; q++) set_number(L, 8, i + q, t[q]);
-  }
-  return 0;
 }
 
 /* _walk_samples' upvalues: the sample tables' keys. */
@@ -221,65 +185,57 @@ static double cum_at(lua_State *L, int cum, long k) {
   return v;
 }
 
-/* arclen._walk_samples(segs, cum, ds, tol, out [, tans, times]): the
-** samples at the ascending distances ds (in [0, cum[n]]) on the path of
-** segments segs (cumulative lengths cum[0 .. n]), each run of ds in one
-** segment found by arclen_times with the segment's set-up, in one call:
-** no Lua walk and no call a segment.  With tans absent or nil, out[q] =
-** {x =, y =[, z =], s =, time = k - 1 + t, tx =, ty =[, tz =]} (segment
-** k); with tans a table or false, flat arrays: out gets the points (dim
-** numbers each), tans the unit tangents, times the path times (each when
-** a table). */
-static int l_walk_samples(lua_State *L) {
+/* Whether distance x lies past the end cum of a segment (at_end: a
+** distance at a joint belongs to the segment that ends there). */
+static int past(double cum, double x, int at_end) {
+  return at_end ? cum < x : cum <= x;
+}
+
+/* The walk over the path of segments segs (at 1; cumulative lengths cum[0
+** .. n] at 2) for the ascending distances ds (at 3, in [0, cum[n]]) at tol
+** (at 4): each run of ds in one segment found by arclen_times with the
+** segment's set-up (times_of), with a gallop and a bisection to the next
+** run's segment, O(log gap) a run: O(n + k) in all, O(k log n) for few
+** distances.  With o, the samples go out as emit_samples writes them;
+** without, segment k and time t of ds[q] into the tables ks and ts. */
+static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts) {
   segment_run r;
-  sample_sink o;
   double t[CHUNK], p[3 * CHUNK], v[3 * CHUNK], s[CHUNK], prev = -HUGE_VAL;
   double *d, lo_cum, hi_cum;
-  long n, nd, i, j, k;
+  long n, nd, i, j, k, a, q;
   luaL_checktype(L, 1, LUA_TTABLE);
   luaL_checktype(L, 2, LUA_TTABLE);
   luaL_checktype(L, 3, LUA_TTABLE);
   r.rtol = arclenL_checktol(L, 4, luaL_checknumber(L, 4));
-  luaL_checktype(L, 5, LUA_TTABLE);
-  o.ds = 3;
-  o.out = 5;
-  o.flat = !lua_isnoneornil(L, 6);
-  o.tans = o.flat && lua_istable(L, 6) ? 6 : 0;
-  o.times = o.flat && lua_istable(L, 7) ? 7 : 0;
   n = (long)lua_rawlen(L, 1);
-  if (lua_rawlen(L, 3) > 0x7fffffff / 3)
-    return luaL_argerror(L, 3, "too many distances");
+  if (lua_rawlen(L, 3) > 0x7fffffff / 3) luaL_argerror(L, 3, "too many distances");
   nd = (long)lua_rawlen(L, 3);
-  if (n == 0 || nd == 0) return 0;
-  lua_settop(L, 7);
+  if (n == 0 || nd == 0) return;
   d = (double *)lua_newuserdata(L, sizeof(double) * (size_t)nd);
-  for (i = 0; i < nd; i += CHUNK) {    /* checked: numbers, ascending */
-    long m = nd - i < CHUNK ? nd - i : CHUNK;
-    read_chunk(L, 3, 3, i + 1, m, 0, &prev, d + i);
-  }
+  for (i = 0; i < nd; i += CHUNK)      /* checked: numbers, ascending */
+    read_chunk(L, 3, 3, i + 1, nd - i < CHUNK ? nd - i : CHUNK, 0, &prev, d + i);
   k = 1;
   hi_cum = cum_at(L, 2, 1);
   for (i = 0; i < nd; i = j + 1) {
     double x = d[i];
-    if (k < n && hi_cum <= x) {
-      /* gallop, then bisect, as path.lua's walk: O(log gap) a run */
+    if (k < n && past(hi_cum, x, at_end)) {
       long lo = k, step = 1, hi = lo + step;
-      while (hi < n && cum_at(L, 2, hi) <= x) {
+      while (hi < n && past(cum_at(L, 2, hi), x, at_end)) {
         lo = hi;
         step *= 2;
         hi = lo + step;
       }
-      if (hi > n) hi = n;
+      if (hi > n) hi = n;              /* the segment lies in (lo, hi] */
       while (hi - lo > 1) {
         long mid = (lo + hi) / 2;
-        if (cum_at(L, 2, mid) <= x) lo = mid; else hi = mid;
+        if (past(cum_at(L, 2, mid), x, at_end)) lo = mid; else hi = mid;
       }
       k = hi;
       hi_cum = cum_at(L, 2, k);
     }
     j = i;
     if (k == n) j = nd - 1;
-    else while (j + 1 < nd && d[j + 1] < hi_cum) j++;
+    else while (j + 1 < nd && !past(hi_cum, d[j + 1], at_end)) j++;
     /* the run d[i .. j] in segment k */
     lo_cum = cum_at(L, 2, k - 1);
     lua_rawgeti(L, 1, (int)k);
@@ -287,16 +243,51 @@ static int l_walk_samples(lua_State *L) {
     lua_pop(L, 1);
     r.shift = lo_cum;
     r.seglen = hi_cum - lo_cum;
-    {
-      long a;
-      for (a = i; a <= j; a += CHUNK) {
-        long m = j - a + 1 < CHUNK ? j - a + 1 : CHUNK, q;
-        for (q = 0; q < m; q++) s[q] = d[a + q] - r.shift;
-        times_of(L, &r, s, m, t, p, (!o.flat || o.tans) ? v : NULL);
-        emit_samples(L, &o, r.dim, (double)k - 1, a + 1, m, t, p, v);
+    for (a = i; a <= j; a += CHUNK) {
+      long m = j - a + 1 < CHUNK ? j - a + 1 : CHUNK;
+      for (q = 0; q < m; q++) s[q] = d[a + q] - r.shift;
+      if (o) {
+        times_of(L, &r, s, m, t, p, (!o->flat || o->tans) ? v : NULL);
+        emit_samples(L, o, r.dim, (double)k - 1, a + 1, m, t, p, v);
+      } else {
+        times_of(L, &r, s, m, t, NULL, NULL);
+        for (q = 0; q < m; q++) {
+          lua_pushinteger(L, (lua_Integer)k);
+          lua_rawseti(L, ks, (int)(a + q + 1));
+          set_number(L, ts, a + q + 1, t[q]);
+        }
       }
     }
   }
+}
+
+/* arclen._walk_samples(segs, cum, ds, tol, out [, tans, times]): the
+** samples at ds (walk).  With tans absent or nil, out[q] = {x =, y =[, z
+** =], s =, time = k - 1 + t, tx =, ty =[, tz =]} (segment k); with tans
+** a table or false, flat arrays: out gets the points (dim numbers each),
+** tans the unit tangents, times the path times (each when a table). */
+static int l_walk_samples(lua_State *L) {
+  sample_sink o;
+  luaL_checktype(L, 5, LUA_TTABLE);
+  o.ds = 3;
+  o.out = 5;
+  o.flat = !lua_isnoneornil(L, 6);
+  o.tans = o.flat && lua_istable(L, 6) ? 6 : 0;
+  o.times = o.flat && lua_istable(L, 7) ? 7 : 0;
+  lua_settop(L, 7);
+  walk(L, 0, &o, 0, 0);
+  return 0;
+}
+
+/* arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts): the segment
+** ks[q] and time ts[q] of each ds[q] (walk), as path.lua's locate gives
+** them one by one. */
+static int l_walk_times(lua_State *L) {
+  int at_end = lua_toboolean(L, 5);
+  luaL_checktype(L, 6, LUA_TTABLE);
+  luaL_checktype(L, 7, LUA_TTABLE);
+  lua_settop(L, 7);
+  walk(L, at_end, NULL, 6, 7);
   return 0;
 }
 
@@ -366,7 +357,7 @@ static int l_queries(lua_State *L) {
 static const luaL_Reg times_funcs[] = {
   {"_queries", l_queries},
   {"times", l_times},
-  {"_segment_times", l_segment_times},
+  {"_walk_times", l_walk_times},
   {"_array", l_array},
   {NULL, NULL}
 };
