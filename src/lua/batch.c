@@ -10,8 +10,8 @@
 ** Where the time goes (doc/benchmarks.md, "Many curves from Lua"): the
 ** public API reads a number in two calls (lua_rawgeti, lua_tonumber), so
 ** the loop below does only that per number -- the type and finiteness
-** checks are folded into one test per block -- and the default method
-** measures each curve as arclen_length does, the call a C loop makes.
+** checks are folded into one test per block -- and arclen_lengths
+** measures the default method's curves without checking them again.
 */
 #include <math.h>
 
@@ -61,7 +61,7 @@ static int lengths(lua_State *L, int dim, const char *fname) {
   arclenL_opts lo;
   size_t len;
   long n, done, i, failed;
-  int stride = 4 * dim, plain;
+  int stride = 4 * dim;
   if (lua_type(L, 1) != LUA_TTABLE)
     return luaL_argerror(L, 1, lua_pushfstring(L,
         "table of coordinates expected (%d numbers per curve), got %s",
@@ -78,28 +78,13 @@ static int lengths(lua_State *L, int dim, const char *fname) {
   if (len > 0x7fffffff)
     return luaL_argerror(L, 1, "too many coordinates");
   n = (long)(len / (size_t)stride);
-  /* The default method on checked numbers and options: arclen_length's
-  ** own call (the same result to the bit as the method table's entry,
-  ** without its second check of each curve and the indirect call). */
-  plain = lo.method == arclen_find_method("gauss");
   luaL_checkstack(L, BLOCK + 4, "too many coordinates");
   lua_createtable(L, (int)n, 0);
   for (done = 0; done < n; done += CHUNK) {
     long m = n - done < CHUNK ? n - done : CHUNK;
-    int rc = ARCLEN_OK;
+    int rc;
     read_numbers(L, done * stride, m * stride, buf);
-    if (plain) {
-      for (i = 0; i < m; i++) {
-        const double *c = buf + i * stride;
-        out[i] = dim == 2 ? arclen_length_range(c, lo.o.t0, lo.o.t1, lo.o.rtol)
-                          : arclen_length3_range(c, lo.o.t0, lo.o.t1, lo.o.rtol);
-        if (isnan(out[i])) break;   /* not expected: the method's code says why */
-      }
-      if (i < m)
-        rc = arclen_lengths(buf, m, dim, lo.method, &lo.o, out, &failed);
-    } else {
-      rc = arclen_lengths(buf, m, dim, lo.method, &lo.o, out, &failed);
-    }
+    rc = arclen_lengths(buf, m, dim, lo.method, &lo.o, out, &failed);
     if (rc == ARCLEN_EDIM)
       return luaL_argerror(L, 2, lua_pushfstring(L,
           "method '%s' does not support this dimension", lo.method->name));
