@@ -710,23 +710,20 @@ local function run(opts, name, next_chunk, uses)
     if value and may_use(value) then record = true end
   end
   function cb.StartElement(p, qname, attrs)
+    if #stack >= r.max_depth then
+      local line, col = p:pos()
+      fail(line, col, format("elements nested deeper than %d", r.max_depth))
+    end
     local parent = stack[#stack]
     -- inside a subtree that draws nothing and is not kept for <use>, only
     -- the depth counts (the position is asked for by the error alone)
     if parent and parent.skip and not (record and (rec > 0 or attrs.id)) then
-      if #stack >= r.max_depth then
-        local line, col = p:pos()
-        fail(line, col, format("elements nested deeper than %d", r.max_depth))
-      end
       stack[#stack + 1] = {skip = true, depth = parent.depth + 1}
       return
     end
     local line, col = p:pos()
     local ns, tag = split_name(qname)
     local svgns = ns == SVG_NS or ns == nil
-    if #stack >= r.max_depth then
-      fail(line, col, format("elements nested deeper than %d", r.max_depth))
-    end
     if not root_seen then
       root_seen = true
       if tag ~= "svg" or not svgns then

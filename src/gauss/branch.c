@@ -61,7 +61,7 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
     double dr = (x1 * x1 - y1 * y1) - 4 * (x2 * x0 - y2 * y0);
     double di = 2 * x1 * y1 - 4 * (x2 * y0 + y2 * x0);
     double r = sqrt(dr * dr + di * di), w = (r + fabs(dr)) / 2, s = sqrt(w);
-    double inv2 = 1 / n2, qr, qi, sr, si, nq;
+    double inv2 = 1 / n2, qr, qi, sr, si, qq, nq;
     b->lead2 = n2;
     if (s > 0) {                         /* d = sqrt(D), on the side of A1 */
       /* the other part di/(2s) = di s/(2w): 1/(2w) is taken beside s */
@@ -80,21 +80,21 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
       add_pair(b, 0, REAL_ROOT_RTOL2);
       return;
     }
-    nq = qr * qr + qi * qi;
-    if (nq * 0x1p-700 > n2) {
+    qq = qr * qr + qi * qi;
+    if (qq * 0x1p-700 > n2) {
       /* s1 = q / A2 is beyond 2^350 (1/|A2|^2 may overflow, |A2|^2 may be
       ** subnormal): on any piece |A2| |t - s1| = |A2 t - q| is |q| to
       ** within 2^-340, so Q = |q|^2 |t - s2|^2 with s1 dropped, and the
       ** lead is |q|^2, rounded up, not |A2|^2 (which would leave M short
       ** by |s1|^2: a false certificate for the inverse) */
-      b->lead2 = nq * (1 + 0x1p-50);
+      b->lead2 = qq * (1 + 0x1p-50);
     } else {
       /* q / A2 = q conj(A2) / |A2|^2 and A0 / q = A0 conj(q) / |q|^2 */
       sr = (qr * x2 + qi * y2) * inv2;
       si = (qi * x2 - qr * y2) * inv2;
       add_pair(b, sr + I * si, REAL_ROOT_RTOL2);
     }
-    nq = 1 / nq;
+    nq = 1 / qq;
     sr = (x0 * qr + y0 * qi) * nq;
     si = (y0 * qr - x0 * qi) * nq;
     add_pair(b, sr + I * si, REAL_ROOT_RTOL2);

@@ -37,6 +37,13 @@ static void speed_slopes(const arclen_hodo *h, double t, double f,
   *f2 = (q - *f1 * *f1) / f;
 }
 
+/* The terms past d of the root of g + f e + f1 e^2/2 + f2 e^3/6 = 0 by
+** series reversion in d = -g/f: e = d - (f1/2f) d^2 + (f1^2/2f^2 -
+** f2/6f) d^3. */
+static double reversion_tail(double d, double f, double f1, double f2) {
+  return d * d * (-f1 / (2 * f) + d * (f1 * f1 / (2 * f * f) - f2 / (6 * f)));
+}
+
 /* The step to the root of the Taylor polynomial of second order, from the
 ** Newton step d = -g/f and the slope f1 of the speed: e = d - c with c =
 ** f1 d^2 / (2 f) makes g + f e + f1 e^2 / 2 = (f1 / 2) c (c - 2 d), and
@@ -92,12 +99,9 @@ static double refine_guess(integrator *in, double a, double b, double plen,
   f = arclen_hodo_speed(&in->h, t);
   in->evals += r->n + 1;
   if (f > 0) {
-    /* the root of g + f e + f1 e^2/2 + f2 e^3/6 by series reversion in
-    ** d = -g/f: e = d - (f1/2f) d^2 + (f1^2/2f^2 - f2/6f) d^3 */
     double d = -sg / f, f1, f2, e;
     speed_slopes(&in->h, t, f, &f1, &f2);
-    e = d + d * d * (-f1 / (2 * f) +
-                     d * (f1 * f1 / (2 * f * f) - f2 / (6 * f)));
+    e = d + reversion_tail(d, f, f1, f2);
     if (t + e > a && t + e < b) return t + e;
   }
   return t;
@@ -219,7 +223,7 @@ static double newton_search(integrator *in, const piece_search *p,
       /* not certified: the next point from the third-order step (series
       ** reversion, as refine_guess), nearer than Newton's for the same
       ** slopes */
-      e3 = d + d * d * (-f1 / (2 * f) + d * (f1 * f1 / (2 * f * f) - f2 / (6 * f)));
+      e3 = d + reversion_tail(d, f, f1, f2);
       if (t + e3 > lo && t + e3 < hi) next = t + e3;
     }
     if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) break;
@@ -365,8 +369,7 @@ static double chained_guess(const integrator *in, const bracket *bk,
   if (f > 0) {
     double d = (goal - bk->slo) / f, f1, f2;
     speed_slopes(&in->h, bk->lo, f, &f1, &f2);
-    t = bk->lo + d + d * d * (-f1 / (2 * f) +
-                              d * (f1 * f1 / (2 * f * f) - f2 / (6 * f)));
+    t = bk->lo + d + reversion_tail(d, f, f1, f2);
     if (t > bk->lo && t < bk->hi) return t;
   }
   return bk->lo + (bk->hi - bk->lo) / 2;

@@ -12,11 +12,12 @@
 #include <stdlib.h>
 
 #include "arclen.h"
+#include "curve/numeric.h"
 #include "svg/decimal.h"
 #include "svg/pathdata.h"
 
 /* Degrees to radians as Lua's math.rad computes it (one multiplication). */
-#define RADIANS_PER_DEGREE (3.14159265358979323846 / 180.0)
+#define RADIANS_PER_DEGREE (ARCLEN_PI / 180.0)
 
 void arclen_pathdata_init(arclen_pathdata *pd) {
   pd->cubics = NULL;

@@ -1,7 +1,7 @@
 /*
 ** pathdata.h -- SVG path data (the `d` attribute, SVG 1.1 section 8.3 and
 ** SVG 2 section 9.3) read into cubic Bezier segments, optionally mapped by
-** a 2x3 transform.  No Lua dependency: the binding (lua/pathdata.c) turns
+** a 2x3 transform.  No Lua dependency: the binding (lua/svg.c) turns
 ** the result into tables and the error into its message.
 */
 #ifndef ARCLEN_PATHDATA_H
