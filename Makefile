@@ -35,23 +35,40 @@ OUT = $(BUILD)/$(LUA)
 # doc/architecture.md for the areas and the one-way order between them.
 AREAS = curve roots gauss elliptic metapost fit conic baseline svg methods
 CORE_SRC = $(foreach a,$(AREAS),$(wildcard src/$(a)/*.c))
-BIND_SRC = $(wildcard src/lua/*.c)
+BIND_SRC = $(filter-out src/lua/svgdoc.c,$(wildcard src/lua/*.c))
 CORE_OBJ = $(patsubst src/%.c,$(BUILD)/core/%.o,$(CORE_SRC))
 BIND_OBJ = $(patsubst src/%.c,$(OUT)/%.o,$(BIND_SRC))
 HEADERS = $(wildcard src/*.h src/*/*.h)
+# The SVG document reader (src/svgdoc/, over libexpat) is a module of its
+# own, arclen.svgdoc, so that arclen.core needs nothing but libm.
+DOC_SRC = $(wildcard src/svgdoc/*.c)
+DOC_OBJ = $(patsubst src/%.c,$(BUILD)/core/%.o,$(DOC_SRC))
 # The C part is the module arclen.core; require "arclen" is lua/arclen/init.lua.
 MODULE = $(OUT)/arclen/core.so
+DOC_MODULE = $(OUT)/arclen/svgdoc.so
+# Without expat's header (Debian libexpat1-dev) the core still builds.
+HAVE_EXPAT := $(shell printf '\043include <expat.h>\n' | $(CC) -E - >/dev/null 2>&1 && echo yes)
+ifeq ($(HAVE_EXPAT),yes)
+  ALL_MODULES = $(MODULE) $(DOC_MODULE)
+else
+  ALL_MODULES = $(MODULE) no-expat
+endif
 LIBDIR = $(PREFIX)/lib/lua/$(LUA_ABI)
 SHAREDIR = $(PREFIX)/share/lua/$(LUA_ABI)
 
 .PHONY: all lib check-layers test deps demo bench bench-icount bench-latency install uninstall clean
 
-all: $(MODULE)
+all: $(ALL_MODULES)
+
+.PHONY: no-expat
+no-expat:
+	@echo "make: expat.h not found: arclen.svg (SVG documents) is not built;" \
+	  "install Debian libexpat1-dev (sh tools/deps.sh)" >&2
 
 lib: $(BUILD)/libarclen.a
 
 # The areas depend one way and no two object files on each other (nm).
-check-layers: $(CORE_OBJ)
+check-layers: $(CORE_OBJ) $(DOC_OBJ)
 	python3 tools/check_layers.py $(BUILD)/core
 
 $(BUILD)/core/%.o: src/%.c $(HEADERS)
@@ -69,6 +86,10 @@ $(BUILD)/libarclen.a: $(CORE_OBJ)
 $(MODULE): $(CORE_OBJ) $(BIND_OBJ)
 	@mkdir -p $(dir $@)
 	$(CC) -shared -o $@ $^ -lm
+
+$(DOC_MODULE): $(OUT)/lua/svgdoc.o $(OUT)/lua/subpaths.o $(DOC_OBJ) $(BUILD)/libarclen.a
+	@mkdir -p $(dir $@)
+	$(CC) -shared -o $@ $^ -lexpat -lm
 
 # The test command builds the module for every Lua on the machine (5.4 and,
 # where installed, 5.1, 5.2, 5.3 -- also LuaTeX's texlua -- and LuaJIT).
@@ -94,16 +115,17 @@ bench-icount: $(BUILD)/libarclen.a
 bench-latency: $(BUILD)/libarclen.a
 	$(MAKE) -C bench latency
 
-install: $(MODULE)
+install: $(ALL_MODULES)
 	mkdir -p $(DESTDIR)$(LIBDIR)/arclen $(DESTDIR)$(SHAREDIR)/arclen/repro $(DESTDIR)$(PREFIX)/bin
 	cp $(MODULE) $(DESTDIR)$(LIBDIR)/arclen/core.so
+	if [ -f $(DOC_MODULE) ]; then cp $(DOC_MODULE) $(DESTDIR)$(LIBDIR)/arclen/svgdoc.so; fi
 	cp lua/arclen/*.lua $(DESTDIR)$(SHAREDIR)/arclen/
 	cp lua/arclen/repro/*.lua $(DESTDIR)$(SHAREDIR)/arclen/repro/
 	sed '1s|.*|#!/usr/bin/env $(LUA_BIN)|' bin/arclen > $(DESTDIR)$(PREFIX)/bin/arclen
 	chmod 755 $(DESTDIR)$(PREFIX)/bin/arclen
 
 uninstall:
-	rm -f $(DESTDIR)$(LIBDIR)/arclen/core.so $(DESTDIR)$(PREFIX)/bin/arclen
+	rm -f $(DESTDIR)$(LIBDIR)/arclen/core.so $(DESTDIR)$(LIBDIR)/arclen/svgdoc.so $(DESTDIR)$(PREFIX)/bin/arclen
 	-rmdir $(DESTDIR)$(LIBDIR)/arclen
 	rm -rf $(DESTDIR)$(SHAREDIR)/arclen
 

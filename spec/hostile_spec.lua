@@ -108,6 +108,7 @@ local VALID = {
                                   {x_coord = 0, y_coord = 10, left_x = 10, left_y = 10,
                                    right_x = 0, right_y = 10, type = "endpoint"}}}},
   ["path.is_path"] = {path.is_path, {P}},
+  ["path._from_subpaths"] = {path._from_subpaths, {arclen.svg_pathdata("M0 0 L1 1 Z", 1e-12), 1e-12, "gauss"}},
   -- methods, called as f(self, ...)
   [":length"] = {P.length, {P}},
   [":time"] = {P.time, {P, 5}},

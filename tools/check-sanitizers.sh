@@ -13,7 +13,7 @@ LOG=$OUT/specs.log
 SAN="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
 mkdir -p "$OUT"
 if ! make -s BUILD="$OUT" CC="$CC" CFLAGS="-O1 -g $SAN" LUA=5.4 \
-     "$OUT/5.4/arclen/core.so" >"$OUT/build.log" 2>&1; then
+     "$OUT/5.4/arclen/core.so" "$OUT/5.4/arclen/svgdoc.so" >"$OUT/build.log" 2>&1; then
   cat "$OUT/build.log"
   echo "0 passed, 1 failed"
   exit 1

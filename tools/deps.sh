@@ -8,12 +8,12 @@
 #           texlive-luatex, lualatex from texlive-latex-base, MetaPost's
 #           plain.mp from texlive-metapost), LuaRocks, poppler-utils to
 #           render the TeX examples, python3 for the check of the core's
-#           layers (base has LuaExpat for the SVG document reader and
-#           lua-dkjson for the command line's --json)
+#           layers (base has libexpat1-dev for the SVG document reader,
+#           arclen.svgdoc, and lua-dkjson for the command line's --json)
 #   refs    regenerate spec/data (python3-mpmath, real MetaPost;
 #           python3-svgelements: tools/ref_svg.py's second opinion)
 set -e
-BASE="gcc make libc6-dev lua5.4 liblua5.4-dev lua-busted lua-expat lua-dkjson"
+BASE="gcc make libc6-dev lua5.4 liblua5.4-dev lua-busted libexpat1-dev lua-dkjson"
 MATRIX="lua5.1 liblua5.1-0-dev lua5.2 liblua5.2-dev lua5.3 liblua5.3-dev luajit libluajit-5.1-dev texlive-binaries texlive-base texlive-luatex texlive-latex-base texlive-metapost luarocks poppler-utils python3"
 REFS="python3 python3-mpmath python3-svgelements texlive-binaries texlive-base python3-fonttools fonts-urw-base35"
 case "${1:-base}" in

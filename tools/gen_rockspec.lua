@@ -8,8 +8,11 @@ local function ls(cmd)
   table.sort(out)
   return out
 end
--- The areas of the core and the binding: every .c under src/.
-local csrc = ls("find src -name '*.c'")
+-- The areas of the core and the binding: every .c under src/ but the
+-- document reader's (src/svgdoc/ and its binding), a module of its own.
+local csrc = ls("find src -name '*.c' ! -path 'src/svgdoc/*' ! -name svgdoc.c")
+local core = ls("find src -name '*.c' ! -path 'src/svgdoc/*' ! -path 'src/lua/*'")
+local docsrc = ls("find src/svgdoc -name '*.c'")
 local lmods = ls("find lua/arclen -name '*.lua'")
 local lines = {
   'package = "arclen"',
@@ -22,22 +25,32 @@ local lines = {
   '  subdivision, Walter & Fournier length fits, Floater conic approximations.]],',
   '  license = "MIT",',
   '}',
-  -- LuaExpat is needed by the SVG document reader (arclen.svg) only and
-  -- dkjson by the command line's --json only; both are loaded when first
-  -- used, and the core and path data parsing need neither.
-  'dependencies = { "lua >= 5.1", "luaexpat >= 1.3", "dkjson >= 2.5" }',
+  -- dkjson is needed by the command line's --json only, loaded when first
+  -- used.  The SVG document reader (arclen.svgdoc) links libexpat; the
+  -- core and path data parsing need nothing but libm.
+  'dependencies = { "lua >= 5.1", "dkjson >= 2.5" }',
+  'external_dependencies = { EXPAT = { header = "expat.h" } }',
   'build = {',
   '  type = "builtin",',
   '  modules = {',
-  '    ["arclen.core"] = {',
-  '      sources = {',
 }
-for _, f in ipairs(csrc) do lines[#lines + 1] = ('        "%s",'):format(f) end
-lines[#lines + 1] = '      },'
-lines[#lines + 1] = '      defines = { "_POSIX_C_SOURCE=200809L" },'
-lines[#lines + 1] = '      libraries = { "m" },'
-lines[#lines + 1] = '      incdirs = { "src" },'
-lines[#lines + 1] = '    },'
+-- A C module: its sources (lists, in order), libraries and directories.
+local function c_module(name, sources, libraries, incdirs, libdirs)
+  lines[#lines + 1] = ('    ["%s"] = {'):format(name)
+  lines[#lines + 1] = '      sources = {'
+  for _, list in ipairs(sources) do
+    for _, f in ipairs(list) do lines[#lines + 1] = ('        "%s",'):format(f) end
+  end
+  lines[#lines + 1] = '      },'
+  lines[#lines + 1] = '      defines = { "_POSIX_C_SOURCE=200809L" },'
+  lines[#lines + 1] = ('      libraries = { %s },'):format(libraries)
+  lines[#lines + 1] = ('      incdirs = { %s },'):format(incdirs)
+  if libdirs then lines[#lines + 1] = ('      libdirs = { %s },'):format(libdirs) end
+  lines[#lines + 1] = '    },'
+end
+c_module("arclen.core", {csrc}, '"m"', '"src"')
+c_module("arclen.svgdoc", {{"src/lua/svgdoc.c", "src/lua/subpaths.c"}, docsrc, core},
+  '"expat", "m"', '"src", "$(EXPAT_INCDIR)"', '"$(EXPAT_LIBDIR)"')
 for _, f in ipairs(lmods) do
   local mod = f:match("^lua/(.*)%.lua$"):gsub("/", "."):gsub("%.init$", "")
   lines[#lines + 1] = ('    ["%s"] = "%s",'):format(mod, f)

@@ -104,8 +104,9 @@ if command -v lualatex >/dev/null && { [ -f build/5.3/arclen.so ] || [ -f build/
 fi
 suite 5.4 lua5.4
 # The rockspec builds and installs offline, and the installed module passes.
-# --deps-mode=none: its dependencies (LuaExpat, dkjson) are the system's
-# Debian packages, which LuaRocks does not see and cannot download here.
+# --deps-mode=none: its dependency dkjson is the system's Debian package,
+# which LuaRocks does not see and cannot download here; libexpat (for
+# arclen.svgdoc) is found as an external dependency.
 if command -v luarocks >/dev/null; then
   rm -rf build/rocktree
   echo "== luarocks make rockspec/arclen-scm-1.rockspec (into build/rocktree)"

@@ -860,6 +860,30 @@ end
 
 -- The module: callable as arclen.path(cubics [, opts]).
 local M = {svg = from_svg, mplib = from_mplib, Path = Path}
+
+-- path._from_subpaths(subpaths, tol, method): a path from subpaths as the
+-- C readers return them (svgpath.lua): arclen.svg's drawn elements.  The
+-- cubics are the readers' own (finite, 8 numbers); the rest is checked.
+function M._from_subpaths(subpaths, tol, method)
+  local fname = "arclen.path._from_subpaths"
+  if type(subpaths) ~= "table" then
+    argerror(1, fname, "subpaths (a table) expected, got " .. type(subpaths))
+  end
+  for i = 1, #subpaths do
+    local sp = subpaths[i]
+    if type(sp) ~= "table" then argerror(1, fname, format("subpath %d must be a table", i)) end
+    for k = 1, #sp do
+      if type(sp[k]) ~= "table" then
+        argerror(1, fname, format("subpath %d: cubic %d must be a table", i, k))
+      end
+    end
+  end
+  if not tol_ok(tol) then argerror(2, fname, "tol must be in " .. TOL_RANGE) end
+  if type(method) ~= "string" or not method_known(method) then
+    argerror(3, fname, "method must be the name of a known method")
+  end
+  return build(subpaths, {tol = tol, method = method})
+end
 setmetatable(M, {__call = from_cubics})
 
 -- Is x a path?

@@ -40,6 +40,11 @@ void arclenL_pushinfo(lua_State *L, const arclen_info *info);
 /* Raise a Lua error for a C error code, naming the function's argument. */
 int arclenL_argcode(lua_State *L, int arg, int code);
 
+/* Push path data's cubics as {x =, y =, closed =, cubic...} subpaths
+** (lua/subpaths.c; arclen.core and arclen.svgdoc share it). */
+struct arclen_pathdata;
+void arclenL_pushsubpaths(lua_State *L, const struct arclen_pathdata *pd);
+
 /* Each area registers its functions into the module table at the top of
 ** the stack (module.c calls them from luaopen_arclen_core). */
 void arclen_open_core(lua_State *L);

@@ -4,6 +4,7 @@
 ** by one multiplication or division (Clinger's fast path), the rest by
 ** strtod on a terminated copy.
 */
+#include <ctype.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -99,4 +100,21 @@ size_t arclen_decimal_scan(const char *s, size_t n, size_t i, double *v) {
   if (exp_at < n) e = arclen_decimal_exponent(s, n, exp_at);
   if (arclen_decimal_value(s + i, e - i, v) != 0) return i;
   return *v > -HUGE_VAL && *v < HUGE_VAL ? e : i;
+}
+
+static int is_space(unsigned char c) { return isspace(c) != 0; }
+
+size_t arclen_decimal_list_start(const char *s, size_t n) {
+  size_t i = 0;
+  while (i < n && (is_space((unsigned char)s[i]) || s[i] == ',')) i++;
+  return i;
+}
+
+size_t arclen_decimal_list_next(const char *s, size_t n, size_t i, double *v) {
+  size_t e = arclen_decimal_scan(s, n, i, v);
+  if (e == i) return i;
+  while (e < n && is_space((unsigned char)s[e])) e++;
+  if (e < n && s[e] == ',') e++;
+  while (e < n && is_space((unsigned char)s[e])) e++;
+  return e;
 }

@@ -27,4 +27,12 @@ int arclen_decimal_value(const char *s, size_t len, double *v);
 ** 'e' without digits ends the number before it. */
 size_t arclen_decimal_scan(const char *s, size_t n, size_t i, double *v);
 
+/* A list of numbers separated by whitespace and at most one comma (points,
+** viewBox): arclen_decimal_list_start skips the leading whitespace and
+** commas; arclen_decimal_list_next reads the number at s[i] into *v and
+** returns the index after it and its separator, or i when no number
+** starts at s[i] (i < n). */
+size_t arclen_decimal_list_start(const char *s, size_t n);
+size_t arclen_decimal_list_next(const char *s, size_t n, size_t i, double *v);
+
 #endif

@@ -84,4 +84,9 @@ int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
 ** specification calls it ("x1", "large-arc-flag"); "?" when none. */
 const char *arclen_pathdata_argname(char cmd, int k);
 
+/* The message of pd's error (without its position) into buf, as snprintf
+** writes: the length it has, whatever fits. */
+size_t arclen_pathdata_message(const arclen_pathdata *pd, const char *d,
+                               char *buf, size_t size);
+
 #endif

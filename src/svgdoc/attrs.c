@@ -1,0 +1,418 @@
+/*
+** attrs.c -- the attributes the reader interprets: lengths with units
+** (SVG 2 section 4.3, CSS Values 3 section 5.2), the transform list (SVG
+** 1.1 section 7.6), viewBox and preserveAspectRatio (SVG 2 section 8.2),
+** and the four properties it reads from style="" or the presentation
+** attributes (SVG 2 section 6.6).
+*/
+#include <ctype.h>
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+
+#include "svg/decimal.h"
+#include "svgdoc/internal.h"
+
+#define FONT_SIZE 16.0   /* em (CSS "medium"); ex is half of it */
+
+static int space(unsigned char c) { return isspace(c) != 0; }
+
+const char *svgdoc_attr(const char **atts, const char *name) {
+  for (; *atts; atts += 2)
+    if (strcmp(atts[0], name) == 0) return atts[1];
+  return NULL;
+}
+
+int svgdoc_blank(const char *s) {
+  for (; *s; s++)
+    if (!space((unsigned char)*s)) return 0;
+  return 1;
+}
+
+/* ---- lengths -------------------------------------------------------- */
+
+/* CSS absolute units in px (1in = 96px). */
+static int absolute_unit(const char *u, double *px) {
+  static const struct { const char *name; double px; } units[] = {
+    {"in", 96.0}, {"cm", 96 / 2.54}, {"mm", 96 / 25.4}, {"pt", 96.0 / 72},
+    {"pc", 96.0 / 6}, {"q", 96 / 101.6}};
+  size_t k;
+  for (k = 0; k < sizeof units / sizeof units[0]; k++)
+    if (strcmp(u, units[k].name) == 0) return *px = units[k].px, 1;
+  return 0;
+}
+
+double svgdoc_length(svgdoc *D, unsigned long line, unsigned long col,
+                     const char *s, int kind, const svgdoc_viewport *vp,
+                     const char *what) {
+  size_t n = strlen(s), i = 0, e, u;
+  char *unit;
+  double v, px;
+  while (i < n && space((unsigned char)s[i])) i++;
+  if (i == n) i = 0;
+  e = i < n ? arclen_decimal_scan(s, n, i, &v) : i;
+  if (e == i) goto bad;
+  for (u = e; u < n && isalpha((unsigned char)s[u]); u++) {}
+  if (u < n && s[u] == '%') u++;
+  for (i = u; i < n && space((unsigned char)s[i]); i++) {}
+  if (i < n) goto bad;
+  svgdoc_reserve(D, &D->scratch, u - e + 1);
+  unit = D->scratch.s;
+  for (i = e; i < u; i++) unit[i - e] = (char)tolower((unsigned char)s[i]);
+  unit[u - e] = '\0';
+  if (unit[0] == '\0' || strcmp(unit, "px") == 0) return v;
+  if (absolute_unit(unit, &px)) return v * px;
+  if (strcmp(unit, "em") == 0) return v * FONT_SIZE;
+  if (strcmp(unit, "ex") == 0) return v * FONT_SIZE / 2;
+  if (strcmp(unit, "%") == 0) {
+    double ref;
+    if (!vp->has)
+      svgdoc_fail(D, line, col, "%s='%s': a percentage needs a viewport (the "
+                  "root has neither viewBox nor width and height)", what, s);
+    if (kind == 'x') ref = vp->w;
+    else if (kind == 'y') ref = vp->h;
+    else ref = sqrt((vp->w * vp->w + vp->h * vp->h) / 2);
+    return v / 100 * ref;
+  }
+  svgdoc_fail(D, line, col, "%s='%s': unknown unit '%s'", what, s, unit);
+bad:
+  svgdoc_fail(D, line, col, "%s='%s' is not a length", what, s);
+}
+
+int svgdoc_len_attr(svgdoc *D, unsigned long line, unsigned long col,
+                    const char **atts, const char *name, int kind,
+                    const svgdoc_viewport *vp, double *v) {
+  const char *s = svgdoc_attr(atts, name);
+  if (s == NULL || svgdoc_blank(s)) return 0;
+  *v = svgdoc_length(D, line, col, s, kind, vp, name);
+  return 1;
+}
+
+/* ---- transforms ------------------------------------------------------- */
+
+static const struct {
+  const char *name;
+  int counts[2];        /* the argument counts it takes (0: none more) */
+} FUNCS[] = {
+  {"matrix", {6, 0}}, {"translate", {1, 2}}, {"scale", {1, 2}},
+  {"rotate", {1, 3}}, {"skewX", {1, 0}}, {"skewY", {1, 0}}};
+
+/* Lua's float modulo (the sign of the divisor), as the reader had it. */
+static double lua_fmod(double a, double b) {
+  double m = fmod(a, b);
+  if (m != 0 && (m < 0) != (b < 0)) m += b;
+  return m;
+}
+
+static double rad(double deg) {
+  return deg * (3.141592653589793238462643383279502884 / 180.0);
+}
+
+/* One transform function to a matrix (angles in degrees). */
+static void transform_function(int f, const double *a, int na,
+                               svgdoc_matrix R) {
+  switch (f) {
+  case 0:
+    memcpy(R, a, 6 * sizeof *a);
+    break;
+  case 1:
+    svgdoc_translate(a[0], na > 1 ? a[1] : 0, R);
+    break;
+  case 2:
+    R[0] = a[0], R[1] = 0, R[2] = 0, R[3] = na > 1 ? a[1] : a[0];
+    R[4] = 0, R[5] = 0;
+    break;
+  case 3: {
+    double t = rad(a[0]), c = cos(t), s = sin(t);
+    /* exact at multiples of 90 degrees, as a renderer's matrix is meant
+    ** to be */
+    if (lua_fmod(a[0], 90) == 0) {
+      static const double C[4] = {1, 0, -1, 0}, S[4] = {0, 1, 0, -1};
+      int q = (int)lua_fmod(floor(a[0] / 90), 4);
+      c = C[q], s = S[q];
+    }
+    R[0] = c, R[1] = s, R[2] = -s, R[3] = c, R[4] = 0, R[5] = 0;
+    if (na == 3) {     /* translate(cx cy) rotate(a) translate(-cx -cy) */
+      svgdoc_matrix A, B;
+      svgdoc_translate(a[1], a[2], A);
+      svgdoc_mul(A, R, A);
+      svgdoc_translate(-a[1], -a[2], B);
+      svgdoc_mul(A, B, R);
+    }
+    break;
+  }
+  case 4:
+    R[0] = 1, R[1] = 0, R[2] = tan(rad(a[0])), R[3] = 1, R[4] = 0, R[5] = 0;
+    break;
+  default:
+    R[0] = 1, R[1] = tan(rad(a[0])), R[2] = 0, R[3] = 1, R[4] = 0, R[5] = 0;
+  }
+}
+
+/* Whitespace, at most one comma, whitespace from s[i]: the end, and
+** whether a comma was among them. */
+static size_t separator(const char *s, size_t n, size_t i, int *comma) {
+  while (i < n && space((unsigned char)s[i])) i++;
+  *comma = i < n && s[i] == ',';
+  if (*comma) i++;
+  while (i < n && space((unsigned char)s[i])) i++;
+  return i;
+}
+
+/* Read as browsers do: functions separated by optional whitespace and at
+** most one comma, arguments by comma-wsp, spaces allowed around the
+** parentheses; a comma before ')' or after the last function is an
+** error.  Positions in messages count from 1. */
+void svgdoc_transform(svgdoc *D, unsigned long line, unsigned long col,
+                      const char *s, svgdoc_matrix T) {
+  size_t n = strlen(s), i = 0, turn, k;
+  const char *why = NULL;
+  char whybuf[96];
+  svgdoc_translate(0, 0, T);
+  while (i < n && space((unsigned char)s[i])) i++;
+  for (turn = 0; turn < n && i < n; turn++) {     /* one function a turn */
+    size_t e = i, len;
+    int f, na = 0, comma, ok;
+    double a[7];
+    svgdoc_matrix R;
+    while (e < n && isalpha((unsigned char)s[e])) e++;
+    if (e == i) { why = "a transform function expected"; goto bad; }
+    len = e - i;
+    for (f = 0; f < 6; f++)
+      if (strlen(FUNCS[f].name) == len && memcmp(FUNCS[f].name, s + i, len) == 0)
+        break;
+    if (f == 6) {
+      snprintf(whybuf, sizeof whybuf, "unknown transform '%.*s'",
+               (int)(len > 64 ? 64 : len), s + i);
+      if (len > 64) {
+        svgdoc_fail(D, line, col, "transform='%s': unknown transform '%.*s' "
+                    "at character %zu", s, (int)len, s + i, i + 1);
+      }
+      why = whybuf;
+      goto bad;
+    }
+    i = e;
+    while (e < n && space((unsigned char)s[e])) e++;
+    if (e == n || s[e] != '(') {
+      snprintf(whybuf, sizeof whybuf, "'(' expected after %s", FUNCS[f].name);
+      why = whybuf;
+      goto bad;
+    }
+    e++;
+    while (e < n && space((unsigned char)s[e])) e++;
+    i = e;
+    for (k = 0; k < 7; k++) {
+      double v;
+      size_t j;
+      if (i < n && s[i] == ')') break;
+      j = i < n ? arclen_decimal_scan(s, n, i, &v) : i;
+      if (j == i) {
+        snprintf(whybuf, sizeof whybuf, "a number or ')' expected in %s(...)",
+                 FUNCS[f].name);
+        why = whybuf;
+        goto bad;
+      }
+      a[na++] = v;
+      e = separator(s, n, j, &comma);
+      if (e < n && s[e] == ')' && comma) {
+        i = e;
+        why = "comma before ')'";
+        goto bad;
+      }
+      i = e;
+    }
+    if (i >= n || s[i] != ')') {
+      snprintf(whybuf, sizeof whybuf, "too many arguments to %s", FUNCS[f].name);
+      why = whybuf;
+      goto bad;
+    }
+    ok = na == FUNCS[f].counts[0] || na == FUNCS[f].counts[1];
+    if (!ok) {
+      if (FUNCS[f].counts[1])
+        snprintf(whybuf, sizeof whybuf, "%s takes %d or %d arguments, got %d",
+                 FUNCS[f].name, FUNCS[f].counts[0], FUNCS[f].counts[1], na);
+      else
+        snprintf(whybuf, sizeof whybuf, "%s takes %d arguments, got %d",
+                 FUNCS[f].name, FUNCS[f].counts[0], na);
+      why = whybuf;
+      goto bad;
+    }
+    transform_function(f, a, na, R);
+    svgdoc_mul(T, R, T);
+    e = separator(s, n, i + 1, &comma);
+    if (e >= n && comma) {
+      i = i + 1;
+      why = "comma after the last transform";
+      goto bad;
+    }
+    i = e;
+  }
+  for (k = 0; k < 6; k++)
+    if (!isfinite(T[k]))
+      svgdoc_fail(D, line, col, "transform='%s' overflows", s);
+  return;
+bad:
+  svgdoc_fail(D, line, col, "transform='%s': %s at character %zu", s, why,
+              i + 1);
+}
+
+/* ---- viewBox ------------------------------------------------------------ */
+
+int svgdoc_viewbox(svgdoc *D, unsigned long line, unsigned long col,
+                   const char *s, double vb[4]) {
+  size_t n, i, count = 0;
+  if (s == NULL || svgdoc_blank(s)) return 0;
+  n = strlen(s);
+  for (i = arclen_decimal_list_start(s, n); i < n;) {
+    double v;
+    size_t e;
+    if (++count > 8) svgdoc_fail(D, line, col, "viewBox: too many numbers");
+    e = arclen_decimal_list_next(s, n, i, &v);
+    if (e == i) break;
+    if (count <= 4) vb[count - 1] = v;
+    i = e;
+  }
+  if (i < n || count != 4)
+    svgdoc_fail(D, line, col, "viewBox='%s' is not four numbers", s);
+  if (vb[2] < 0 || vb[3] < 0)
+    svgdoc_fail(D, line, col, "viewBox='%s': negative width or height", s);
+  return 1;
+}
+
+/* Min, Mid or Max at s: 0, 1, 2; -1 for anything else. */
+static int align_of(const char *s) {
+  if (strncmp(s, "Min", 3) == 0) return 0;
+  if (strncmp(s, "Mid", 3) == 0) return 1;
+  if (strncmp(s, "Max", 3) == 0) return 2;
+  return -1;
+}
+
+void svgdoc_viewbox_matrix(svgdoc *D, unsigned long line, unsigned long col,
+                           const double vb[4], const char *par, double ex,
+                           double ey, double ew, double eh, svgdoc_matrix M) {
+  int none = 0, slice = 0, ax = 1, ay = 1;
+  double sx = ew / vb[2], sy = eh / vb[3], tx, ty;
+  if (par && !svgdoc_blank(par)) {
+    const char *w[3];
+    size_t wl[3], nw = 0, i = 0, n = strlen(par);
+    int ok;
+    while (i < n && nw < 3) {             /* the first three words */
+      while (i < n && space((unsigned char)par[i])) i++;
+      if (i == n) break;
+      w[nw] = par + i;
+      while (i < n && !space((unsigned char)par[i])) i++;
+      wl[nw] = (size_t)(par + i - w[nw]);
+      nw++;
+    }
+    while (i < n && space((unsigned char)par[i])) i++;
+    if (i < n) nw = 4;                    /* more than three */
+    if (nw > 0 && nw <= 3 && wl[0] == 5 && memcmp(w[0], "defer", 5) == 0) {
+      w[0] = w[1], wl[0] = wl[1], w[1] = w[2], wl[1] = wl[2];
+      nw--;
+    } else if (nw == 4 && wl[0] == 5 && memcmp(w[0], "defer", 5) == 0) {
+      nw = 3;                             /* still more than two */
+    }
+    ok = nw >= 1 && nw <= 2;
+    if (ok && wl[0] == 4 && memcmp(w[0], "none", 4) == 0) {
+      none = 1;
+    } else if (ok) {
+      ok = wl[0] == 8 && w[0][0] == 'x' && w[0][4] == 'Y';
+      if (ok) {
+        ax = align_of(w[0] + 1), ay = align_of(w[0] + 5);
+        ok = ax >= 0 && ay >= 0;
+      }
+    }
+    if (ok && nw == 2) {
+      if (wl[1] == 5 && memcmp(w[1], "slice", 5) == 0) slice = 1;
+      else if (!(wl[1] == 4 && memcmp(w[1], "meet", 4) == 0)) ok = 0;
+    }
+    if (!ok)
+      svgdoc_fail(D, line, col, "preserveAspectRatio='%s' is not valid", par);
+  }
+  if (!none) {
+    sx = slice ? (sx > sy ? sx : sy) : (sx < sy ? sx : sy);
+    sy = sx;
+  }
+  tx = ex - vb[0] * sx, ty = ey - vb[1] * sy;
+  if (!none) {
+    if (ax == 1) tx = tx + (ew - vb[2] * sx) / 2;
+    if (ax == 2) tx = tx + (ew - vb[2] * sx);
+    if (ay == 1) ty = ty + (eh - vb[3] * sy) / 2;
+    if (ay == 2) ty = ty + (eh - vb[3] * sy);
+  }
+  M[0] = sx, M[1] = 0, M[2] = 0, M[3] = sy, M[4] = tx, M[5] = ty;
+}
+
+/* ---- properties ------------------------------------------------------ */
+
+static const char *const PROPS[SVGDOC_NPROPS] = {"display", "visibility",
+                                                 "stroke", "stroke-width"};
+
+/* May byte c precede a property's name?  (The name must be whole.) */
+static int name_byte(unsigned char c) { return isalnum(c) || c == '-'; }
+
+/* Trimmed and lower-cased s[0 .. n-1] into b. */
+static const char *normalised(svgdoc *D, svgdoc_buffer *b, const char *s,
+                              size_t n) {
+  size_t i;
+  while (n > 0 && space((unsigned char)*s)) s++, n--;
+  while (n > 0 && space((unsigned char)s[n - 1])) n--;
+  svgdoc_reserve(D, b, n + 1);
+  for (i = 0; i < n; i++) b->s[i] = (char)tolower((unsigned char)s[i]);
+  b->s[n] = '\0';
+  return b->s;
+}
+
+/* The value of the last whole declaration "name: value" in style s (the
+** last one wins, as in CSS), "!important" and trailing space removed;
+** 0 when none. */
+static int style_value(const char *s, const char *name, const char **v,
+                       size_t *vn) {
+  size_t nl = strlen(name);
+  const char *p = s;
+  int found = 0;
+  while ((p = strstr(p, name)) != NULL) {
+    const char *q = p + nl, *e;
+    if (p != s && name_byte((unsigned char)p[-1])) { p++; continue; }
+    while (*q && space((unsigned char)*q)) q++;
+    if (*q != ':') { p++; continue; }
+    q++;
+    while (*q && space((unsigned char)*q)) q++;
+    for (e = q; *e && *e != ';'; e++) {}
+    *v = q, *vn = (size_t)(e - q), found = 1;
+    p = e;
+  }
+  if (found) {       /* "%s*!%s*important%s*$" then trailing space */
+    const char *q = *v;
+    size_t n = *vn, m = n;
+    while (m > 0 && space((unsigned char)q[m - 1])) m--;
+    if (m >= 9 && memcmp(q + m - 9, "important", 9) == 0) {
+      size_t k = m - 9;
+      while (k > 0 && space((unsigned char)q[k - 1])) k--;
+      if (k > 0 && q[k - 1] == '!') {
+        k--;
+        while (k > 0 && space((unsigned char)q[k - 1])) k--;
+        n = k;
+      }
+    }
+    while (n > 0 && space((unsigned char)q[n - 1])) n--;
+    *vn = n;
+  }
+  return found;
+}
+
+void svgdoc_properties(svgdoc *D, const char **atts, const char *out[]) {
+  const char *style = svgdoc_attr(atts, "style");
+  int k;
+  for (k = 0; k < SVGDOC_NPROPS; k++) {
+    const char *v = NULL;
+    size_t vn = 0;
+    if (style && style_value(style, PROPS[k], &v, &vn)) {
+      out[k] = normalised(D, &D->props[k], v, vn);
+    } else if ((v = svgdoc_attr(atts, PROPS[k])) != NULL) {
+      out[k] = normalised(D, &D->props[k], v, strlen(v));
+    } else {
+      out[k] = NULL;
+    }
+  }
+}

@@ -1,0 +1,161 @@
+/*
+** internal.h -- what the files of the svgdoc area share: the reader's
+** state, located errors (a longjmp back to the expat callback that
+** started the work, never across expat's own frames), the string pool,
+** and the 2x3 matrices.
+*/
+#ifndef ARCLEN_SVGDOC_INTERNAL_H
+#define ARCLEN_SVGDOC_INTERNAL_H
+
+#include <setjmp.h>
+#include <stddef.h>
+
+#include "svgdoc/svgdoc.h"
+
+/* SVG's matrix(a b c d e f) is {a, b, c, d, e, f}. */
+typedef double svgdoc_matrix[6];
+
+/* The viewport's size in the current user units (SVG 2 section 8.9). */
+typedef struct svgdoc_viewport {
+  int has;
+  double w, h;
+} svgdoc_viewport;
+
+/* The properties the reader uses, from style="" (CSS declarations, which
+** win) or the presentation attributes, trimmed and lower-cased. */
+enum { SVGDOC_DISPLAY, SVGDOC_VISIBILITY, SVGDOC_STROKE,
+       SVGDOC_STROKE_WIDTH, SVGDOC_NPROPS };
+
+typedef struct svgdoc_buffer {
+  char *s;
+  size_t len, room;
+} svgdoc_buffer;
+
+/* The allocation of everything a document keeps (freed with it). */
+typedef struct svgdoc_block svgdoc_block;
+
+typedef struct svgdoc_out svgdoc_out;    /* drawn elements and uses */
+typedef struct svgdoc_event svgdoc_event;
+
+struct svgdoc {
+  svgdoc_options o;
+  void *parser;                          /* XML_Parser */
+  jmp_buf *on_error;                     /* where svgdoc_fail jumps */
+  int failed, finished, expanding;
+  unsigned long err_line, err_col;
+  char *err_msg;
+  svgdoc_block *blocks;                  /* the pool */
+  char *pool_at;
+  size_t pool_left;
+  /* the streaming pass */
+  struct svgdoc_frame *stack;            /* max_depth + 1 frames */
+  size_t depth;                          /* open elements */
+  int root_seen, record;
+  size_t rec;                            /* depth inside kept subtrees */
+  size_t *open_ev;                       /* the kept event of each */
+  size_t bytes, nentities, ngroups, replayed;
+  /* kept subtrees, for <use> */
+  svgdoc_event *events;
+  size_t nevents, events_room;
+  const char **ids;                      /* hash of ids -> first event */
+  size_t *id_event, ids_room, nids;
+  /* results */
+  svgdoc_out *out;                       /* in document order, uses too */
+  size_t nout, out_room;
+  svgdoc_element **drawn;                /* uses expanded */
+  size_t ndrawn, drawn_room;
+  svgdoc_element **all;                  /* every element made (to free) */
+  size_t nall, all_room;
+  svgdoc_warning *warnings;
+  size_t nwarnings;
+  size_t skipped[SVGDOC_NSKIPPED];
+  svgdoc_info info;
+  svgdoc_buffer props[SVGDOC_NPROPS], scratch;
+};
+
+/* ---- memory and errors (memory.c) ---- */
+
+/* A located error: the message, then a jump to D->on_error. */
+#if defined(__GNUC__)
+__attribute__((noreturn, format(printf, 4, 5)))
+#endif
+void svgdoc_fail(svgdoc *D, unsigned long line, unsigned long col,
+                 const char *fmt, ...);
+void svgdoc_nomem(svgdoc *D);
+/* The error without the jump (msg malloc'd; NULL: "not enough memory"). */
+void svgdoc_set_error(svgdoc *D, unsigned long line, unsigned long col,
+                      char *msg);
+void svgdoc_free_pool(svgdoc *D);
+
+/* Memory that lives as long as the document; never NULL (fails). */
+void *svgdoc_alloc(svgdoc *D, size_t n);
+char *svgdoc_strdup(svgdoc *D, const char *s, size_t n);
+/* A string formatted into the pool. */
+#if defined(__GNUC__)
+__attribute__((format(printf, 2, 3)))
+#endif
+char *svgdoc_format(svgdoc *D, const char *fmt, ...);
+/* b's room grown to n bytes (fails without memory). */
+void svgdoc_reserve(svgdoc *D, svgdoc_buffer *b, size_t n);
+void svgdoc_append(svgdoc *D, svgdoc_buffer *b, const char *s, size_t n);
+
+/* ---- attributes (attrs.c) ---- */
+
+/* The value of attribute name among expat's name/value pairs, or NULL. */
+const char *svgdoc_attr(const char **atts, const char *name);
+
+/* Is s empty or only whitespace? */
+int svgdoc_blank(const char *s);
+
+/* A <length> (SVG 2 section 4.3) in user units; kind 'x', 'y' or 'o' for
+** percentages of vp.  what: the attribute's name for messages. */
+double svgdoc_length(svgdoc *D, unsigned long line, unsigned long col,
+                     const char *s, int kind, const svgdoc_viewport *vp,
+                     const char *what);
+/* Attribute name as a length into *v; 0 (v untouched) when absent or
+** blank. */
+int svgdoc_len_attr(svgdoc *D, unsigned long line, unsigned long col,
+                    const char **atts, const char *name, int kind,
+                    const svgdoc_viewport *vp, double *v);
+
+/* The transform attribute as one matrix (SVG 1.1 section 7.6). */
+void svgdoc_transform(svgdoc *D, unsigned long line, unsigned long col,
+                      const char *s, svgdoc_matrix T);
+/* viewBox into vb; 0 when absent or blank. */
+int svgdoc_viewbox(svgdoc *D, unsigned long line, unsigned long col,
+                   const char *s, double vb[4]);
+/* The viewBox vb onto the viewport (ex, ey, ew, eh) under
+** preserveAspectRatio par (NULL: the default) (SVG 2 section 8.2). */
+void svgdoc_viewbox_matrix(svgdoc *D, unsigned long line, unsigned long col,
+                           const double vb[4], const char *par, double ex,
+                           double ey, double ew, double eh, svgdoc_matrix M);
+/* The reader's properties of an element: out[k] NULL when not given. */
+void svgdoc_properties(svgdoc *D, const char **atts, const char *out[]);
+
+/* ---- shapes (shapes.c) ---- */
+
+/* The path data of a basic shape in its own coordinates, or NULL when it
+** is not rendered (SVG 2 chapter 10); into the pool. */
+const char *svgdoc_shape_data(svgdoc *D, unsigned long line,
+                              unsigned long col, const char *tag,
+                              const char **atts, const svgdoc_viewport *vp);
+/* %.17g of x (shapes and messages write numbers so). */
+void svgdoc_num(char buf[32], double x);
+
+/* ---- matrices ---- */
+
+/* P Q (Q applied first): a child's CTM is its parent's times its own. */
+static inline void svgdoc_mul(const svgdoc_matrix P, const svgdoc_matrix Q,
+                              svgdoc_matrix R) {
+  double r0 = P[0] * Q[0] + P[2] * Q[1], r1 = P[1] * Q[0] + P[3] * Q[1];
+  double r2 = P[0] * Q[2] + P[2] * Q[3], r3 = P[1] * Q[2] + P[3] * Q[3];
+  double r4 = P[0] * Q[4] + P[2] * Q[5] + P[4];
+  double r5 = P[1] * Q[4] + P[3] * Q[5] + P[5];
+  R[0] = r0, R[1] = r1, R[2] = r2, R[3] = r3, R[4] = r4, R[5] = r5;
+}
+
+static inline void svgdoc_translate(double tx, double ty, svgdoc_matrix R) {
+  R[0] = 1, R[1] = 0, R[2] = 0, R[3] = 1, R[4] = tx, R[5] = ty;
+}
+
+#endif

@@ -1,0 +1,114 @@
+/*
+** memory.c -- what a document keeps lives in its pool (blocks freed with
+** it), and a located error is a message, a place and a jump back to the
+** expat callback that started the work (svgdoc_fail; never across
+** expat's own frames).
+*/
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "svgdoc/internal.h"
+
+#define POOL_BLOCK 65536
+
+struct svgdoc_block {
+  svgdoc_block *next;
+};
+
+void *svgdoc_alloc(svgdoc *D, size_t n) {
+  void *p;
+  n = (n + 15) & ~(size_t)15;
+  if (n > D->pool_left) {
+    size_t size = n > POOL_BLOCK / 2 ? n : POOL_BLOCK;
+    svgdoc_block *b = malloc(sizeof(svgdoc_block) + 16 + size);
+    if (b == NULL) svgdoc_nomem(D);
+    b->next = D->blocks;
+    D->blocks = b;
+    D->pool_at = (char *)(b + 1) + 16 - ((size_t)(b + 1) & 15);
+    D->pool_left = size;
+  }
+  p = D->pool_at;
+  D->pool_at += n;
+  D->pool_left -= n;
+  return p;
+}
+
+char *svgdoc_strdup(svgdoc *D, const char *s, size_t n) {
+  char *p = svgdoc_alloc(D, n + 1);
+  memcpy(p, s, n);
+  p[n] = '\0';
+  return p;
+}
+
+static char *vformat(const char *fmt, va_list ap) {
+  va_list aq;
+  int n;
+  char *p;
+  va_copy(aq, ap);
+  n = vsnprintf(NULL, 0, fmt, aq);
+  va_end(aq);
+  if (n < 0 || (p = malloc((size_t)n + 1)) == NULL) return NULL;
+  vsnprintf(p, (size_t)n + 1, fmt, ap);
+  return p;
+}
+
+char *svgdoc_format(svgdoc *D, const char *fmt, ...) {
+  va_list ap;
+  char *p, *q;
+  va_start(ap, fmt);
+  p = vformat(fmt, ap);
+  va_end(ap);
+  if (p == NULL) svgdoc_nomem(D);
+  q = svgdoc_strdup(D, p, strlen(p));
+  free(p);
+  return q;
+}
+
+void svgdoc_set_error(svgdoc *D, unsigned long line, unsigned long col,
+                      char *msg) {
+  D->failed = 1;
+  D->err_line = line, D->err_col = col;
+  D->err_msg = msg;
+}
+
+void svgdoc_fail(svgdoc *D, unsigned long line, unsigned long col,
+                 const char *fmt, ...) {
+  va_list ap;
+  va_start(ap, fmt);
+  svgdoc_set_error(D, line, col, vformat(fmt, ap));
+  va_end(ap);
+  longjmp(*D->on_error, 1);
+}
+
+void svgdoc_nomem(svgdoc *D) {
+  svgdoc_set_error(D, 0, 0, NULL);         /* NULL: "not enough memory" */
+  longjmp(*D->on_error, 1);
+}
+
+void svgdoc_reserve(svgdoc *D, svgdoc_buffer *b, size_t n) {
+  if (n > b->room) {
+    size_t room = b->room ? b->room : 64;
+    char *s;
+    while (room < n) room *= 2;
+    s = realloc(b->s, room);
+    if (s == NULL) svgdoc_nomem(D);
+    b->s = s, b->room = room;
+  }
+}
+
+void svgdoc_append(svgdoc *D, svgdoc_buffer *b, const char *s, size_t n) {
+  svgdoc_reserve(D, b, b->len + n + 1);
+  memcpy(b->s + b->len, s, n);
+  b->len += n;
+  b->s[b->len] = '\0';
+}
+
+void svgdoc_free_pool(svgdoc *D) {
+  while (D->blocks) {
+    svgdoc_block *b = D->blocks;
+    D->blocks = b->next;
+    free(b);
+  }
+}

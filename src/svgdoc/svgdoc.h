@@ -1,0 +1,84 @@
+/*
+** svgdoc.h -- SVG documents read as a renderer draws them: expat's
+** events walked in C, every basic shape turned into path data (SVG 2
+** chapter 10), nested transforms and viewports applied, <use> expanded,
+** each drawn element's path data read into cubics (svg/pathdata.c) in
+** document coordinates.  No Lua dependency; the binding is lua/svgdoc.c.
+** doc/svg.md lists the semantic choices.
+*/
+#ifndef ARCLEN_SVGDOC_H
+#define ARCLEN_SVGDOC_H
+
+#include <setjmp.h>
+#include <stddef.h>
+
+#include "svg/pathdata.h"
+
+/* Caps: every loop and recursion has one. */
+#define SVGDOC_MAX_DEPTH 1000          /* element nesting */
+#define SVGDOC_MAX_USE_DEPTH 64        /* <use> inside used content */
+#define SVGDOC_MAX_ELEMENTS 1000000    /* drawn elements, uses expanded */
+#define SVGDOC_MAX_REPLAYED 250000     /* events replayed by <use> */
+#define SVGDOC_MAX_ENTITIES 1000       /* entity declarations */
+#define SVGDOC_MAX_ENTITY_LEN 65536    /* an entity's replacement text */
+#define SVGDOC_MAX_WARNINGS 1000
+
+typedef struct svgdoc_options {
+  double arc_tol;       /* arcs' tolerance, relative to their size */
+  double unit_px;       /* px per output unit; 0: the root's user units */
+  int hidden;           /* draw display:none and visibility:hidden too */
+  int stroked;          /* only stroked shapes */
+  int max_depth;        /* in [1, SVGDOC_MAX_DEPTH] */
+  int uses;             /* the document may contain <use>: keep subtrees */
+} svgdoc_options;
+
+/* A drawn element.  Strings live in the document's pool (NULL: none). */
+typedef struct svgdoc_element {
+  const char *id, *tag, *layer;
+  const char *use;      /* the id a <use> instantiated this from */
+  const char *d;        /* the shape's path data in its own coordinates */
+  unsigned long line, col;
+  int stroked;
+  double ctm[6];        /* onto the document's coordinates */
+  arclen_pathdata pd;   /* the cubics of d mapped by ctm */
+} svgdoc_element;
+
+typedef struct svgdoc_warning {
+  unsigned long line, col;
+  const char *msg;
+} svgdoc_warning;
+
+/* The tags counted as rendered but not measured (text, image...). */
+#define SVGDOC_NSKIPPED 8
+extern const char *const svgdoc_skipped_tags[SVGDOC_NSKIPPED];
+
+typedef struct svgdoc svgdoc;
+
+/* A reader for one document (NULL without memory). */
+svgdoc *svgdoc_new(const svgdoc_options *o);
+void svgdoc_free(svgdoc *D);
+
+/* Feed the next n bytes; then svgdoc_finish once.  Both return 0, or -1
+** with the error in svgdoc_error (later calls return -1 again). */
+int svgdoc_feed(svgdoc *D, const char *s, size_t n);
+int svgdoc_finish(svgdoc *D);
+const char *svgdoc_error(const svgdoc *D, unsigned long *line,
+                         unsigned long *col);
+
+/* The results, valid after a successful svgdoc_finish. */
+size_t svgdoc_count(const svgdoc *D);
+const svgdoc_element *svgdoc_get(const svgdoc *D, size_t i);
+size_t svgdoc_nwarnings(const svgdoc *D);
+const svgdoc_warning *svgdoc_warning_at(const svgdoc *D, size_t i);
+const size_t *svgdoc_skipped(const svgdoc *D);      /* SVGDOC_NSKIPPED */
+size_t svgdoc_kept(const svgdoc *D);  /* events kept for <use> */
+
+/* The root's width and height (user units; has_* 0 when absent or a
+** percentage) and viewBox (has_viewbox 0 when absent). */
+typedef struct svgdoc_info {
+  int has_width, has_height, has_viewbox;
+  double width, height, viewbox[4];
+} svgdoc_info;
+const svgdoc_info *svgdoc_root_info(const svgdoc *D);
+
+#endif
