@@ -249,14 +249,16 @@ describe("arclen.path: the cache and the search", function()
   local p = path.svg(table.concat(parts, " "))
 
   it("measures each segment once", function()
-    -- the path layer calls the C core (arclen.core) directly
+    -- the path layer calls the C core (arclen.core) directly: a path read
+    -- from path data measures its flat array in one arclen.lengths call
     local core = require "arclen.core"
-    local real, calls = core.length, 0
+    local real, real_batch, calls = core.length, core.lengths, 0
     core.length = function(...) calls = calls + 1; return real(...) end
+    core.lengths = function(flat, ...) calls = calls + #flat / 8; return real_batch(flat, ...) end
     local ok, err = pcall(function()
       p:length(); p:time(5000); p:point(123); p:resample(50)
     end)
-    core.length = real
+    core.length, core.lengths = real, real_batch
     assert(ok, err)
     assert.are.equal(1000, calls)
   end)

@@ -8,12 +8,22 @@ local H = require("helpers")
 local path = require("arclen.path")
 local svgpath = require("arclen.svgpath")
 
-local function segs(d)
+-- The cubics of the reader's flat array, as tables of 8 numbers.
+local unpack = table.unpack or unpack
+
+local function cubics_of(R)
   local out = {}
-  for _, sp in ipairs(svgpath.parse(d, 1e-12)) do
-    for _, c in ipairs(sp) do out[#out + 1] = c end
-  end
+  for k = 1, R.n do out[k] = {unpack(R.flat, 8 * k - 7, 8 * k)} end
   return out
+end
+
+local function segs(d, atol)
+  local R = svgpath.parse(d, atol or 1e-12)
+  local count = 0
+  for j = 1, #R do count = count + R[j].n end
+  assert.are.equal(R.n, count)                    -- the subpaths tile the cubics
+  assert.are.equal(8 * R.n, #R.flat)
+  return cubics_of(R)
 end
 
 local function same_cubic(got, want)
@@ -126,7 +136,7 @@ describe("svg path data: arcs", function()
 
   it("stays within arc_tol * max(rx, ry, chord/2) of the true circle", function()
     for _, atol in ipairs({1e-3, 1e-6, 1e-9, 1e-12}) do
-      local s = svgpath.parse("M10 0 A10 10 0 1 1 -10 0", atol)[1]
+      local s = segs("M10 0 A10 10 0 1 1 -10 0", atol)
       local worst = 0
       for _, c in ipairs(s) do
         for i = 0, 16 do

@@ -7,8 +7,11 @@
 --
 -- A path is a list of segments (8 or 12 numbers each) in one or more
 -- subpaths (a segment that does not start where the previous one ends
--- begins a new subpath, as an SVG moveto does).  The segments' lengths are
--- computed once, on first need, into a cumulative array; a distance is
+-- begins a new subpath, as an SVG moveto does).  A path read from SVG path
+-- data (or by arclen.svg) keeps its cubics in one flat array of numbers
+-- and makes the list of segment tables only when a query needs single
+-- cubics (segs_of).  The segments' lengths are computed once, on first
+-- need, into a cumulative array (a flat path's in one arclen.lengths call); a distance is
 -- then found by binary search (O(log n)) and one call of arclen.time inside
 -- its segment.  Every distance is within tol * length of the truth: each
 -- segment's length is within tol of its own (a relative bound, so the sum is
@@ -121,6 +124,44 @@ local function build(subpaths, o)
   return self
 end
 
+-- A path on the C readers' result R = {flat = 8 numbers a cubic, n =
+-- cubics, [j] = {x =, y =, closed =, n = its cubics}} (svgpath.lua): one
+-- array of numbers, no table per cubic until a query needs them (segs_of).
+local function build_flat(R, o)
+  local n, first, nsub, k = R.n, {}, 0, 1
+  for j = 1, #R do
+    local c = R[j].n
+    if c > 0 then
+      nsub = nsub + 1
+      first[nsub] = k
+      k = k + c
+    end
+  end
+  first[nsub + 1] = k
+  local sp = R[1]
+  return setmetatable({n = n, dim = 2, tol = o.tol, method = o.method, flat = R.flat,
+    first = first, nsub = nsub, x0 = sp and sp.x, y0 = sp and sp.y,
+    cyclic = #R == 1 and sp.closed and n > 0 or false}, Path)
+end
+
+local new_array = arclen._array      -- a table with room for n items
+
+-- The segments as tables of 8 numbers, made from the flat array on first
+-- need (paths from build_flat); other paths have them from the start.
+local function segs_of(self)
+  local segs = self.segs
+  if segs then return segs end
+  local flat, n = self.flat, self.n
+  segs = new_array(n)
+  for k = 1, n do
+    local b = 8 * k - 8
+    segs[k] = {flat[b + 1], flat[b + 2], flat[b + 3], flat[b + 4], flat[b + 5],
+               flat[b + 6], flat[b + 7], flat[b + 8]}
+  end
+  self.segs = segs
+  return segs
+end
+
 -- arclen.path(cubics [, opts]): cubics joined end to start; a gap starts a
 -- new subpath.  opts: tol, method, cyclic (the last segment ends where the
 -- first starts, and distances wrap around).
@@ -212,8 +253,7 @@ local function from_svg(d, opts)
   end
   local o, msg = read_opts(opts, SVG_OPTS)
   if not o then argerror(2, fname, msg) end
-  local subpaths = parse_with(fname, svgpath.parse, d, o.arc_tol or o.tol, o.transform)
-  return build(subpaths, o)
+  return build_flat(parse_with(fname, svgpath.parse, d, o.arc_tol or o.tol, o.transform), o)
 end
 
 -- arclen.path.mplib(knots [, opts]): an mplib path (a list of knots, or
@@ -237,10 +277,20 @@ local function cumulative(self)
   local cum, total = {[0] = 0}, 0
   local lopts = {tol = self.tol, method = self.method}
   local mp = is_metapost(self)
+  if self.flat and not mp and self.n > 0 then    -- one batch call, no table a cubic
+    local lens = arclen.lengths(self.flat, lopts)
+    for k = 1, self.n do
+      total = total + lens[k]
+      cum[k] = total
+    end
+    self.cum = cum
+    return cum
+  end
+  local segs = segs_of(self)
   for k = 1, self.n do
     local len, err
-    if mp then len, err = arclen.metapost.arclength(self.segs[k])
-    else len, err = arclen.length(self.segs[k], lopts) end
+    if mp then len, err = arclen.metapost.arclength(segs[k])
+    else len, err = arclen.length(segs[k], lopts) end
     if len == nil then return nil, err end
     total = total + len
     cum[k] = total
@@ -252,7 +302,7 @@ end
 -- The segments of the (single) subpath as MetaPost's path functions take them.
 local function mp_total(self)
   if self.mp_len == nil then
-    local len, err = arclen.metapost.path_arclength(self.segs, self.cyclic)
+    local len, err = arclen.metapost.path_arclength(segs_of(self), self.cyclic)
     self.mp_len, self.mp_err = len or false, err
   end
   if self.mp_len then return self.mp_len end
@@ -289,7 +339,7 @@ end
 local function locate(self, s, at_end)
   local n = self.n
   if is_metapost(self) then
-    local T = assert(arclen.metapost.path_arctime(self.segs, s, self.cyclic))
+    local T = assert(arclen.metapost.path_arctime(segs_of(self), s, self.cyclic))
     local k = floor(T)
     if k >= n then return n, 1 end
     if at_end and T == k and k > 0 then return k, 1 end
@@ -316,13 +366,12 @@ local function locate(self, s, at_end)
   local goal = s - cum[lo - 1]
   if goal <= 0 then return lo, 0 end
   if goal >= cum[lo] - cum[lo - 1] then return lo, 1 end
-  return lo, arclen.time(self.segs[lo], goal, {tol = self.tol, method = self.method})
+  return lo, arclen.time(segs_of(self)[lo], goal, {tol = self.tol, method = self.method})
 end
 
 -- ---- many distances in one walk -------------------------------------------
 
 local walk_times = arclen._walk_times       -- locate_many's walk, in C
-local new_array = arclen._array      -- a table with room for n items
 local walk_samples = arclen._walk_samples   -- the walk and the samples, in C
 local reduce_queries = arclen._queries      -- read_queries' loop, in C
 
@@ -341,7 +390,7 @@ local function locate_many(self, ds, at_end)
     for i = 1, #ds do ks[i], ts[i] = locate(self, ds[i], at_end) end
     return ks, ts
   end
-  walk_times(self.segs, self.cum, ds, self.tol, at_end, ks, ts)
+  walk_times(segs_of(self), self.cum, ds, self.tol, at_end, ks, ts)
   return ks, ts
 end
 
@@ -365,7 +414,7 @@ function Path:length()
     local total = 0                -- MetaPost measures each subpath alone
     for j = 1, self.nsub do
       local segs = {}
-      for k = self.first[j], self.first[j + 1] - 1 do segs[#segs + 1] = self.segs[k] end
+      for k = self.first[j], self.first[j + 1] - 1 do segs[#segs + 1] = segs_of(self)[k] end
       local len, err = arclen.metapost.path_arclength(segs, false)
       if len == nil then return nil, err end
       total = total + len
@@ -384,7 +433,7 @@ function Path:time(s)
   local L = usable(self, "time")
   if self.n == 0 then return 0 end
   if is_metapost(self) then
-    return assert(arclen.metapost.path_arctime(self.segs, s, self.cyclic))
+    return assert(arclen.metapost.path_arctime(segs_of(self), s, self.cyclic))
   end
   local r, turns = reduce(self, s, L)
   local k, t = locate(self, r)
@@ -396,7 +445,7 @@ end
 -- next derivatives: z'' (its negative at t = 1, approached from the left),
 -- then z'''.  A segment that is a single point has no direction: zeros.
 local function direction(self, k, t)
-  local c, d = self.segs[k], self.dim
+  local c, d = segs_of(self)[k], self.dim
   local v = {arclen.derivative(c, t)}
   local function norm(w)
     local s = 0
@@ -444,7 +493,7 @@ function Path:point(s)
   local L = usable(self, "point")
   if self.n == 0 then return start_point(self) end
   local k, t = locate(self, (reduce(self, s, L)))
-  return arclen.point(self.segs[k], t)
+  return arclen.point(segs_of(self)[k], t)
 end
 
 -- p:tangent(s) -> the unit tangent tx, ty[, tz] at distance s (at a joint,
@@ -490,7 +539,7 @@ local function pieces_located(self, k0, t0, k1, t1)
   local out = {}                 -- out.gap made at the first gap
   local d = self.dim
   if k1 < k0 or (k1 == k0 and t1 <= t0) then
-    local x, y, z = arclen.point(self.segs[k0], t0)
+    local x, y, z = arclen.point(segs_of(self)[k0], t0)
     return out, x, y, z
   end
   local isgap = self.isgap
@@ -500,7 +549,7 @@ local function pieces_located(self, k0, t0, k1, t1)
     self.isgap = isgap
   end
   for k = k0, k1 do
-    local c = self.segs[k]
+    local c = segs_of(self)[k]
     local ta, tb = k == k0 and t0 or 0, k == k1 and t1 or 1
     if ta ~= 0 or tb ~= 1 then c = arclen.subcurve(c, ta, tb) end
     if tb > ta or (ta == 0 and tb == 1) then
@@ -512,7 +561,7 @@ local function pieces_located(self, k0, t0, k1, t1)
     end
   end
   if #out == 0 then
-    local x, y, z = arclen.point(self.segs[k0], t0)
+    local x, y, z = arclen.point(segs_of(self)[k0], t0)
     return out, x, y, z
   end
   local c = out[1]
@@ -555,7 +604,7 @@ end
 -- One sample at distance s in [0, L].
 local function sample(self, s)
   local k, t = locate(self, s)
-  local x, y, z = arclen.point(self.segs[k], t)
+  local x, y, z = arclen.point(segs_of(self)[k], t)
   local v = direction(self, k, t)
   return {x = x, y = y, z = z, s = s, time = (k - 1) + t,
           tx = v[1], ty = v[2], tz = v[3]}
@@ -610,7 +659,7 @@ function Path:resample(spec)
     return out
   end
   if walks(self) then
-    walk_samples(self.segs, self.cum, dists, self.tol, out)
+    walk_samples(segs_of(self), self.cum, dists, self.tol, out)
     return out
   end
   for i, s in ipairs(dists) do out[i] = sample(self, s) end
@@ -658,7 +707,7 @@ local function fill_samples(self, ds, out, pts, tans, times)
       end
     end
   elseif walks(self) then
-    walk_samples(self.segs, self.cum, ds, self.tol, pts or out,
+    walk_samples(segs_of(self), self.cum, ds, self.tol, pts or out,
                  pts and (tans or false), pts and (times or false))
   else
     for q = 1, #ds do
@@ -819,7 +868,7 @@ function Path:segment(k)
   if type(k) ~= "number" or k ~= floor(k) or k < 1 or k > self.n then
     argerror(1, "segment", format("k must be an integer in [1, %d]", self.n))
   end
-  local c, out = self.segs[k], {}
+  local c, out = segs_of(self)[k], {}
   for i = 1, #c do out[i] = c[i] end
   return out
 end
@@ -843,7 +892,7 @@ function Path:svg()
   local isgap = {}
   for j = 1, self.nsub do isgap[self.first[j]] = true end
   for k = 1, self.n do
-    local c = self.segs[k]
+    local c = segs_of(self)[k]
     if isgap[k] then out[#out + 1] = "M" .. num(c[1]) .. " " .. num(c[2]) end
     out[#out + 1] = format("C%s %s %s %s %s %s", num(c[3]), num(c[4]), num(c[5]),
                            num(c[6]), num(c[7]), num(c[8]))
@@ -861,28 +910,31 @@ end
 -- The module: callable as arclen.path(cubics [, opts]).
 local M = {svg = from_svg, mplib = from_mplib, Path = Path}
 
--- path._from_subpaths(subpaths, tol, method): a path from subpaths as the
--- C readers return them (svgpath.lua): arclen.svg's drawn elements.  The
--- cubics are the readers' own (finite, 8 numbers); the rest is checked.
-function M._from_subpaths(subpaths, tol, method)
+-- path._from_subpaths(R, tol, method): a path on the C readers' result
+-- (svgpath.lua's format): arclen.svg's drawn elements.  The numbers are
+-- the readers' own (finite); the structure is checked.
+function M._from_subpaths(R, tol, method)
   local fname = "arclen.path._from_subpaths"
-  if type(subpaths) ~= "table" then
-    argerror(1, fname, "subpaths (a table) expected, got " .. type(subpaths))
+  if type(R) ~= "table" or type(R.flat) ~= "table" or type(R.n) ~= "number" then
+    argerror(1, fname, "the readers' subpaths {flat =, n =, ...} expected")
   end
-  for i = 1, #subpaths do
-    local sp = subpaths[i]
-    if type(sp) ~= "table" then argerror(1, fname, format("subpath %d must be a table", i)) end
-    for k = 1, #sp do
-      if type(sp[k]) ~= "table" then
-        argerror(1, fname, format("subpath %d: cubic %d must be a table", i, k))
-      end
+  local count = 0
+  for j = 1, #R do
+    local sp = R[j]
+    if type(sp) ~= "table" or type(sp.n) ~= "number" or type(sp.x) ~= "number"
+       or type(sp.y) ~= "number" then
+      argerror(1, fname, format("subpath %d must be {x =, y =, closed =, n =}", j))
     end
+    count = count + sp.n
+  end
+  if count ~= R.n or #R.flat ~= 8 * R.n then
+    argerror(1, fname, "the subpaths' counts do not match the flat array")
   end
   if not tol_ok(tol) then argerror(2, fname, "tol must be in " .. TOL_RANGE) end
   if type(method) ~= "string" or not method_known(method) then
     argerror(3, fname, "method must be the name of a known method")
   end
-  return build(subpaths, {tol = tol, method = method})
+  return build_flat(R, {tol = tol, method = method})
 end
 setmetatable(M, {__call = from_cubics})
 

@@ -251,7 +251,7 @@ function M.stat(doc)
     L.paths = L.paths + p.nsub
     L.segments = L.segments + p.n
     for j = 1, p.nsub do
-      local first, last = p.segs[p.first[j]], p.segs[p.first[j + 1] - 1]
+      local first, last = p:segment(p.first[j]), p:segment(p.first[j + 1] - 1)
       if L.endx then
         local dx, dy = first[1] - L.endx, first[2] - L.endy
         L.travel = L.travel + sqrt(dx * dx + dy * dy)
@@ -259,7 +259,7 @@ function M.stat(doc)
       L.endx, L.endy = last[7], last[8]
     end
     for k = 1, p.n do
-      local c = p.segs[k]
+      local c = p:segment(k)
       local x0, x1 = cubic_range(c[1], c[3], c[5], c[7])
       local y0, y1 = cubic_range(c[2], c[4], c[6], c[8])
       box_add(L.box, x0, y0, x1, y1)

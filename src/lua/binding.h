@@ -40,8 +40,8 @@ void arclenL_pushinfo(lua_State *L, const arclen_info *info);
 /* Raise a Lua error for a C error code, naming the function's argument. */
 int arclenL_argcode(lua_State *L, int arg, int code);
 
-/* Push path data's cubics as {x =, y =, closed =, cubic...} subpaths
-** (lua/subpaths.c; arclen.core and arclen.svgdoc share it). */
+/* Push path data's cubics as {flat =, n =, [j] = {x =, y =, closed =, n
+** =}} (lua/subpaths.c; arclen.core and arclen.svgdoc share it). */
 struct arclen_pathdata;
 void arclenL_pushsubpaths(lua_State *L, const struct arclen_pathdata *pd);
 

@@ -7,8 +7,9 @@
 **   arclen.svg_numbers(s, cap) -> list [, position of the first bad byte];
 **                                 nil when more than cap numbers
 ** Positions are 1-based, as string.find's.
-** subpaths is a list of {x = x0, y = y0, closed = bool, [i] = cubic} with
-** every cubic a table of 8 numbers (arclen.path builds a path from it).
+** subpaths is {flat = 8 numbers a cubic, n = cubics, [j] = {x = x0, y =
+** y0, closed = bool, n = its cubics}} (lua/subpaths.c; arclen.path builds a
+** path on it).
 ** Bad data is a result, not an error: the message and the 1-based byte
 ** position (none for the transform's overflow), which arclen.svgpath
 ** raises for arclen.path to turn into a "bad argument" message.
