@@ -49,6 +49,7 @@ struct svgdoc {
   size_t pool_left;
   /* the streaming pass */
   struct svgdoc_frame *stack;            /* max_depth + 1 frames */
+  struct svgdoc_frame *xstacks[SVGDOC_MAX_USE_DEPTH + 1];  /* for <use> */
   size_t depth;                          /* open elements */
   int root_seen, record;
   size_t rec;                            /* depth inside kept subtrees */

@@ -441,7 +441,14 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
   root_sh.nchain = u->nchain + 1;
   sh = root_sh;
   sh.root = 0;
-  stack = svgdoc_alloc(D, ((size_t)D->o.max_depth + 2) * sizeof *stack);
+  /* one frame stack per level of nested uses, made once and reused (a
+  ** use inside the replay is one level deeper) */
+  stack = D->xstacks[u->nchain];
+  if (stack == NULL) {
+    stack = malloc(((size_t)D->o.max_depth + 2) * sizeof *stack);
+    if (stack == NULL) svgdoc_nomem(D);
+    D->xstacks[u->nchain] = stack;
+  }
   memset(&stack[0], 0, sizeof stack[0]);
   memcpy(stack[0].ctm, u->ctm, sizeof stack[0].ctm);
   stack[0].vp = u->vp;
@@ -703,6 +710,7 @@ void svgdoc_free(svgdoc *D) {
   for (k = 0; k < D->nall; k++) arclen_pathdata_free(&D->all[k]->pd);
   svgdoc_free_pool(D);
   for (k = 0; k < SVGDOC_NPROPS; k++) free(D->props[k].s);
+  for (k = 0; k <= SVGDOC_MAX_USE_DEPTH; k++) free(D->xstacks[k]);
   free(D->scratch.s);
   free(D->stack), free(D->open_ev), free(D->events);
   free(D->ids), free(D->id_event), free(D->out), free(D->drawn);
