@@ -5,7 +5,8 @@
 # svg-path-properties and paper.js (npm, under node), in one run, each
 # one's error against tools/ref_svg.py's mpmath reference
 # (spec/data/svg_refs.tsv).  arclen's time is split into the reader's own
-# cost (XML, transforms, path data into cubics) and the measuring's.
+# cost (XML, transforms, path data into cubics) and the measuring's, and
+# so are its instructions under callgrind (bench/svg/icount.sh).
 # Peers that cannot run are skipped with a message.
 #   BENCH_REPS=N (default 5): repetitions, the best time of each counts
 cd "$(dirname "$0")/.." || exit 2
@@ -23,6 +24,13 @@ echo "files: $(echo $FILES | wc -w) real documents (spec/data/svg/SOURCES.tsv)"
 echo "== arclen.svg ($LUA, tol 1e-12)"
 LUA_PATH="lua/?.lua;lua/?/init.lua;;" LUA_CPATH="build/$V/?.so;;" \
   nice $LUA bench/svg/arclen_svg.lua "$OUT" $FILES >>"$RES" || exit 1
+
+if command -v valgrind >/dev/null; then      # counts beside the times
+  LUA_PATH="lua/?.lua;lua/?/init.lua;;" LUA_CPATH="build/$V/?.so;;" LUA_BIN=$LUA \
+    sh bench/svg/icount.sh $FILES
+else
+  echo "instructions: skipped (apt-get install valgrind)"
+fi
 
 if /usr/bin/python3 -c 'import svgelements' 2>/dev/null; then
   echo "== svgelements (python3; with scipy if installed, then without)"
