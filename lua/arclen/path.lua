@@ -390,7 +390,7 @@ local function locate_many(self, ds, at_end)
     for i = 1, #ds do ks[i], ts[i] = locate(self, ds[i], at_end) end
     return ks, ts
   end
-  walk_times(segs_of(self), self.cum, ds, self.tol, at_end, ks, ts)
+  walk_times(self.flat or self.segs, self.cum, ds, self.tol, at_end, ks, ts)
   return ks, ts
 end
 
@@ -659,7 +659,7 @@ function Path:resample(spec)
     return out
   end
   if walks(self) then
-    walk_samples(segs_of(self), self.cum, dists, self.tol, out)
+    walk_samples(self.flat or self.segs, self.cum, dists, self.tol, out)
     return out
   end
   for i, s in ipairs(dists) do out[i] = sample(self, s) end
@@ -707,7 +707,7 @@ local function fill_samples(self, ds, out, pts, tans, times)
       end
     end
   elseif walks(self) then
-    walk_samples(segs_of(self), self.cum, ds, self.tol, pts or out,
+    walk_samples(self.flat or self.segs, self.cum, ds, self.tol, pts or out,
                  pts and (tans or false), pts and (times or false))
   else
     for q = 1, #ds do
