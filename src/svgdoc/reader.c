@@ -9,7 +9,6 @@
 */
 #include <expat.h>
 #include <math.h>
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -232,14 +231,14 @@ static void expand(svgdoc *D, const svgdoc_use *u);
 
 /* Lua's tonumber(s) == 0 for the number-like prefix of a stroke-width
 ** (a width of zero draws no stroke). */
-static int zero_width(const char *s) {
+static int zero_width(svgdoc *D, const char *s) {
   size_t n = strspn(s, "0123456789.eE+-");
-  char buf[64], *end;
+  char *end;
   double v;
-  if (n == 0 || n >= sizeof buf) return 0;
-  memcpy(buf, s, n);
-  buf[n] = '\0';
-  v = strtod(buf, &end);
+  if (n == 0) return 0;
+  D->scratch.len = 0;
+  svgdoc_append(D, &D->scratch, s, n);
+  v = strtod(D->scratch.s, &end);
   return *end == '\0' && v == 0;
 }
 
@@ -278,7 +277,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
     if (strcmp(s, "none") == 0) f->stroked = 0;
     else if (strcmp(s, "inherit") != 0) f->stroked = 1;
   }
-  if ((s = P[SVGDOC_STROKE_WIDTH]) != NULL && zero_width(s)) f->stroked = 0;
+  if ((s = P[SVGDOC_STROKE_WIDTH]) != NULL && zero_width(D, s)) f->stroked = 0;
   if (lookup(NOT_RENDERED, tag) >= 0 && !(sh && sh->root && is_symbol)) return;
   for (skipped = 0; skipped < SVGDOC_NSKIPPED; skipped++) {
     if (strcmp(svgdoc_skipped_tags[skipped], tag) == 0) {
@@ -622,7 +621,7 @@ static void end_element(svgdoc *D) {
   if (D->rec > 0) {
     D->events = grow(D, D->events, &D->events_room, D->nevents, sizeof *D->events);
     D->events[D->nevents].tag = NULL;
-    D->events[D->rec > 0 ? D->open_ev[D->rec - 1] : 0].close = D->nevents;
+    D->events[D->open_ev[D->rec - 1]].close = D->nevents;
     D->nevents++;
     D->rec--;
   }
