@@ -83,6 +83,7 @@ local VALID = {
   ["ellipse_conics"] = {arclen.ellipse_conics, {0, 0, 2, 1, 0.3, 0, 2}},
   ["svg_arc"] = {arclen.svg_arc, {0, 0, 5, 3, 30, 0, 1, 8, 2}},
   ["svg_pathdata"] = {arclen.svg_pathdata, {"M0 0 L1 1 A1 1 0 0 1 2 2", 1e-12, {1, 0, 0, 1, 0, 0}}},
+  ["_cubics"] = {arclen._cubics, {arclen.svg_pathdata("M0 0 L1 1 Q2 2 3 0", 1e-12).packed}},
   ["svg_number"] = {arclen.svg_number, {"x 1.5e3", 3}},
   ["svg_numbers"] = {arclen.svg_numbers, {"0 0 10,10 1e1", 8}},
   ["fullcircle"] = {arclen.fullcircle, {}},

@@ -250,11 +250,11 @@ describe("arclen.path: the cache and the search", function()
 
   it("measures each segment once", function()
     -- the path layer calls the C core (arclen.core) directly: a path read
-    -- from path data measures its flat array in one arclen.lengths call
+    -- from path data measures its packed cubics in one arclen.lengths call
     local core = require "arclen.core"
     local real, real_batch, calls = core.length, core.lengths, 0
     core.length = function(...) calls = calls + 1; return real(...) end
-    core.lengths = function(flat, ...) calls = calls + #flat / 8; return real_batch(flat, ...) end
+    core.lengths = function(packed, ...) calls = calls + #packed / 64; return real_batch(packed, ...) end
     local ok, err = pcall(function()
       p:length(); p:time(5000); p:point(123); p:resample(50)
     end)

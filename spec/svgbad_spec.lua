@@ -185,7 +185,7 @@ describe("arclen.svgdoc (the reader arclen.svg drives)", function()
     r:feed('<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0 L3 4"/></svg>')
     local res = r:finish("x.svg")
     assert.are.equal(1, #res.elements)
-    local c = res.elements[1].subpaths.flat          -- the line, its control points at thirds
+    local c = require("arclen.core")._cubics(res.elements[1].subpaths.packed)[1]  -- the line
     assert.are.same({0, 0, 3, 4}, {c[1], c[2], c[7], c[8]})
     assert.is_true(math.abs(c[3] - 1) < 1e-15 and math.abs(c[6] - 8 / 3) < 1e-15)
     assert.matches("finished", select(2, pcall(r.feed, r, "more")))

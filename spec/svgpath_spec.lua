@@ -8,21 +8,15 @@ local H = require("helpers")
 local path = require("arclen.path")
 local svgpath = require("arclen.svgpath")
 
--- The cubics of the reader's flat array, as tables of 8 numbers.
-local unpack = table.unpack or unpack
-
-local function cubics_of(R)
-  local out = {}
-  for k = 1, R.n do out[k] = {unpack(R.flat, 8 * k - 7, 8 * k)} end
-  return out
-end
+-- The reader's packed cubics, as tables of 8 numbers.
+local function cubics_of(R) return arclen._cubics(R.packed) end
 
 local function segs(d, atol)
   local R = svgpath.parse(d, atol or 1e-12)
   local count = 0
   for j = 1, #R do count = count + R[j].n end
   assert.are.equal(R.n, count)                    -- the subpaths tile the cubics
-  assert.are.equal(8 * R.n, #R.flat)
+  assert.are.equal(64 * R.n, #R.packed)
   return cubics_of(R)
 end
 

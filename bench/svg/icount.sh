@@ -32,7 +32,7 @@ callgrind_annotate --inclusive=yes "$OUT" 2>/dev/null | awk '
     what[4] = "    basic shapes as path data"
     what[5] = "    positions (line, column: expat)"
     what[6] = "the results into Lua tables (finish)"
-    what[7] = "  the cubics as flat arrays"
+    what[7] = "  the cubics (packed) and their subpaths"
   }
   { for (i = 1; i <= n; i++) if (!(i in v) && $0 ~ sym[i]) { x = $1; gsub(",", "", x); v[i] = x } }
   END { for (i = 1; i <= n; i++) if (i in v) printf "  %-56s %6.1f M\n", what[i], v[i] / 1e6 }'

@@ -8,10 +8,11 @@
 -- A path is a list of segments (8 or 12 numbers each) in one or more
 -- subpaths (a segment that does not start where the previous one ends
 -- begins a new subpath, as an SVG moveto does).  A path read from SVG path
--- data (or by arclen.svg) keeps its cubics in one flat array of numbers
--- and makes the list of segment tables only when a query needs single
--- cubics (segs_of).  The segments' lengths are computed once, on first
--- need, into a cumulative array (a flat path's in one arclen.lengths call); a distance is
+-- data (or by arclen.svg) keeps its cubics packed in one string of
+-- doubles and makes the list of segment tables only when a query needs
+-- single cubics (segs_of).  The segments' lengths are computed once, on
+-- first need, into a cumulative array (a packed path's in one
+-- arclen.lengths call); a distance is
 -- then found by binary search (O(log n)) and one call of arclen.time inside
 -- its segment.  Every distance is within tol * length of the truth: each
 -- segment's length is within tol of its own (a relative bound, so the sum is
@@ -124,9 +125,9 @@ local function build(subpaths, o)
   return self
 end
 
--- A path on the C readers' result R = {flat = 8 numbers a cubic, n =
--- cubics, [j] = {x =, y =, closed =, n = its cubics}} (svgpath.lua): one
--- array of numbers, no table per cubic until a query needs them (segs_of).
+-- A path on the C readers' result R = {packed = the cubics as a string of
+-- doubles, n = cubics, [j] = {x =, y =, closed =, n = its cubics}}
+-- (svgpath.lua): no table per cubic until a query needs them (segs_of).
 local function build_flat(R, o)
   local n, first, nsub, k = R.n, {}, 0, 1
   for j = 1, #R do
@@ -139,25 +140,21 @@ local function build_flat(R, o)
   end
   first[nsub + 1] = k
   local sp = R[1]
-  return setmetatable({n = n, dim = 2, tol = o.tol, method = o.method, flat = R.flat,
+  return setmetatable({n = n, dim = 2, tol = o.tol, method = o.method, packed = R.packed,
     first = first, nsub = nsub, x0 = sp and sp.x, y0 = sp and sp.y,
     cyclic = #R == 1 and sp.closed and n > 0 or false}, Path)
 end
 
 local new_array = arclen._array      -- a table with room for n items
 
--- The segments as tables of 8 numbers, made from the flat array on first
--- need (paths from build_flat); other paths have them from the start.
+local unpack_cubics = arclen._cubics    -- packed cubics into tables, in C
+
+-- The segments as tables of 8 numbers, made from the packed cubics on
+-- first need (paths from build_flat); other paths have them from the start.
 local function segs_of(self)
   local segs = self.segs
   if segs then return segs end
-  local flat, n = self.flat, self.n
-  segs = new_array(n)
-  for k = 1, n do
-    local b = 8 * k - 8
-    segs[k] = {flat[b + 1], flat[b + 2], flat[b + 3], flat[b + 4], flat[b + 5],
-               flat[b + 6], flat[b + 7], flat[b + 8]}
-  end
+  segs = unpack_cubics(self.packed)
   self.segs = segs
   return segs
 end
@@ -277,8 +274,8 @@ local function cumulative(self)
   local cum, total = {[0] = 0}, 0
   local lopts = {tol = self.tol, method = self.method}
   local mp = is_metapost(self)
-  if self.flat and not mp and self.n > 0 then    -- one batch call, no table a cubic
-    local lens = arclen.lengths(self.flat, lopts)
+  if self.packed and not mp and self.n > 0 then  -- one batch call, no table a cubic
+    local lens = arclen.lengths(self.packed, lopts)
     for k = 1, self.n do
       total = total + lens[k]
       cum[k] = total
@@ -390,7 +387,7 @@ local function locate_many(self, ds, at_end)
     for i = 1, #ds do ks[i], ts[i] = locate(self, ds[i], at_end) end
     return ks, ts
   end
-  walk_times(self.flat or self.segs, self.cum, ds, self.tol, at_end, ks, ts)
+  walk_times(self.packed or self.segs, self.cum, ds, self.tol, at_end, ks, ts)
   return ks, ts
 end
 
@@ -659,7 +656,7 @@ function Path:resample(spec)
     return out
   end
   if walks(self) then
-    walk_samples(self.flat or self.segs, self.cum, dists, self.tol, out)
+    walk_samples(self.packed or self.segs, self.cum, dists, self.tol, out)
     return out
   end
   for i, s in ipairs(dists) do out[i] = sample(self, s) end
@@ -707,7 +704,7 @@ local function fill_samples(self, ds, out, pts, tans, times)
       end
     end
   elseif walks(self) then
-    walk_samples(self.flat or self.segs, self.cum, ds, self.tol, pts or out,
+    walk_samples(self.packed or self.segs, self.cum, ds, self.tol, pts or out,
                  pts and (tans or false), pts and (times or false))
   else
     for q = 1, #ds do
@@ -915,8 +912,8 @@ local M = {svg = from_svg, mplib = from_mplib, Path = Path}
 -- the readers' own (finite); the structure is checked.
 function M._from_subpaths(R, tol, method)
   local fname = "arclen.path._from_subpaths"
-  if type(R) ~= "table" or type(R.flat) ~= "table" or type(R.n) ~= "number" then
-    argerror(1, fname, "the readers' subpaths {flat =, n =, ...} expected")
+  if type(R) ~= "table" or type(R.packed) ~= "string" or type(R.n) ~= "number" then
+    argerror(1, fname, "the readers' subpaths {packed =, n =, ...} expected")
   end
   local count = 0
   for j = 1, #R do
@@ -927,8 +924,8 @@ function M._from_subpaths(R, tol, method)
     end
     count = count + sp.n
   end
-  if count ~= R.n or #R.flat ~= 8 * R.n then
-    argerror(1, fname, "the subpaths' counts do not match the flat array")
+  if count ~= R.n or #R.packed ~= 64 * R.n then
+    argerror(1, fname, "the subpaths' counts do not match the packed cubics")
   end
   if not tol_ok(tol) then argerror(2, fname, "tol must be in " .. TOL_RANGE) end
   if type(method) ~= "string" or not method_known(method) then

@@ -3,9 +3,10 @@
 -- (src/svg/pathdata.c, bound as arclen.core.svg_pathdata); this module
 -- gives it the interface arclen.path expects.
 --
--- parse(d, arc_tol [, T]) returns the cubics of all subpaths in one flat
--- array and the subpaths in order:
---   {flat = {x0, y0, x1, y1, x2, y2, x3, y3, ...}, n = cubics,
+-- parse(d, arc_tol [, T]) returns the cubics of all subpaths packed in one
+-- string of doubles (x0, y0, x1, y1, x2, y2, x3, y3 each; arclen._cubics
+-- makes tables of them) and the subpaths in order:
+--   {packed = string, n = cubics,
 --    [j] = {x = x0, y = y0, closed = bool, n = its cubics}}  Lines become cubics with the
 -- control points at thirds (the same curve, speed constant); quadratics are
 -- degree-elevated (C1 = Q0 + 2/3 (Q1 - Q0), C2 = Q2 + 2/3 (Q1 - Q2): the same

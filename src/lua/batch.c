@@ -1,7 +1,9 @@
 /*
 ** batch.c -- arclen.lengths(coords [, opts]) and arclen.lengths3: the
 ** length of every cubic in a flat array of numbers (8 per curve in 2D, 12
-** in 3D) in one call, returned as an array.  The curves are read in
+** in 3D) -- or in a string of packed doubles (native order, as the path
+** readers make it and string.pack("d", ...) does) -- in one call,
+** returned as an array.  The curves are read in
 ** chunks into a C buffer and measured there, so a large set pays neither
 ** a Lua call nor a table per curve.
 ** opts as arclen.length's (tol, method, t0, t1, steps); info does not
@@ -14,6 +16,7 @@
 ** measures the default method's curves without checking them again.
 */
 #include <math.h>
+#include <string.h>
 
 #include "lua/binding.h"
 
@@ -56,21 +59,44 @@ static void read_numbers(lua_State *L, long first, long count, double *buf) {
   }
 }
 
+/* packed[first .. first + count - 1] (doubles) into buf, each finite. */
+static void read_packed(lua_State *L, const char *packed, long first,
+                        long count, double *buf) {
+  long i;
+  double z = 0;
+  memcpy(buf, packed + sizeof(double) * (size_t)first,
+         sizeof(double) * (size_t)count);
+  for (i = 0; i < count; i++) z += buf[i] - buf[i];
+  if (z != 0)
+    for (i = 0; i < count; i++)
+      if (!isfinite(buf[i]))
+        luaL_argerror(L, 1, lua_pushfstring(L,
+            "coordinate %d must be finite", (int)(first + i + 1)));
+}
+
 static int lengths(lua_State *L, int dim, const char *fname) {
   double buf[CHUNK * 12], out[CHUNK];
   arclenL_opts lo;
   size_t len;
   long n, done, i, failed;
   int stride = 4 * dim;
-  if (lua_type(L, 1) != LUA_TTABLE)
+  const char *packed = NULL;   /* coords as a string of packed doubles */
+  if (lua_type(L, 1) == LUA_TSTRING) {
+    packed = lua_tolstring(L, 1, &len);
+    if (len % sizeof(double) != 0)
+      return luaL_argerror(L, 1, "packed coordinates: a multiple of 8 bytes expected");
+    len /= sizeof(double);
+  } else if (lua_type(L, 1) == LUA_TTABLE) {
+    len = lua_rawlen(L, 1);
+  } else {
     return luaL_argerror(L, 1, lua_pushfstring(L,
         "table of coordinates expected (%d numbers per curve), got %s",
         stride, luaL_typename(L, 1)));
+  }
   arclenL_checkopts(L, 2, &lo);
   if (lo.info)
     return luaL_argerror(L, 2, lua_pushfstring(L,
         "info does not apply to %s", fname));
-  len = lua_rawlen(L, 1);
   if (len % (size_t)stride != 0)
     return luaL_argerror(L, 1, lua_pushfstring(L,
         "number of coordinates must be a multiple of %d, got %d", stride,
@@ -83,7 +109,8 @@ static int lengths(lua_State *L, int dim, const char *fname) {
   for (done = 0; done < n; done += CHUNK) {
     long m = n - done < CHUNK ? n - done : CHUNK;
     int rc;
-    read_numbers(L, done * stride, m * stride, buf);
+    if (packed) read_packed(L, packed, done * stride, m * stride, buf);
+    else read_numbers(L, done * stride, m * stride, buf);
     rc = arclen_lengths(buf, m, dim, lo.method, &lo.o, out, &failed);
     if (rc == ARCLEN_EDIM)
       return luaL_argerror(L, 2, lua_pushfstring(L,

@@ -40,10 +40,12 @@ void arclenL_pushinfo(lua_State *L, const arclen_info *info);
 /* Raise a Lua error for a C error code, naming the function's argument. */
 int arclenL_argcode(lua_State *L, int arg, int code);
 
-/* Push path data's cubics as {flat =, n =, [j] = {x =, y =, closed =, n
-** =}} (lua/subpaths.c; arclen.core and arclen.svgdoc share it). */
+/* Push path data's cubics as {packed =, n =, [j] = {x =, y =, closed =, n
+** =}} (lua/subpaths.c; arclen.core and arclen.svgdoc share it), and
+** arclen._cubics(packed), the packed cubics as tables. */
 struct arclen_pathdata;
 void arclenL_pushsubpaths(lua_State *L, const struct arclen_pathdata *pd);
+int arclenL_unpackcubics(lua_State *L);
 
 /* Each area registers its functions into the module table at the top of
 ** the stack (module.c calls them from luaopen_arclen_core). */

@@ -1,24 +1,24 @@
 /*
 ** subpaths.c -- cubics read from path data (svg/pathdata.h) as the Lua
-** layer takes them: {flat = {x0, y0, x1, y1, x2, y2, x3, y3, ...} (8
-** numbers a cubic, all subpaths in order), n = the number of cubics, [j] =
-** {x = x0, y = y0, closed = bool, n = its cubics}} -- one array of numbers
-** for the whole path, not a table per cubic (arclen.path builds a path on
-** it and measures it with arclen.lengths).  Shared by arclen.core's
-** svg_pathdata and arclen.svgdoc.
+** layer takes them: {packed = the cubics as a string of doubles (x0, y0,
+** x1, y1, x2, y2, x3, y3 each, all subpaths in order, native order), n =
+** the number of cubics, [j] = {x = x0, y = y0, closed = bool, n = its
+** cubics}} -- one string for the whole path, which the collector never
+** looks into, not a table per cubic (arclen.path builds a path on it and
+** measures it with arclen.lengths).  Shared by arclen.core's svg_pathdata
+** and arclen.svgdoc.
 */
+#include <string.h>
+
 #include "lua/binding.h"
 #include "svg/pathdata.h"
 
 void arclenL_pushsubpaths(lua_State *L, const arclen_pathdata *pd) {
-  size_t k, i, m = 8 * pd->ncubics;
+  size_t k;
   lua_createtable(L, (int)pd->nsubpaths, 2);
-  lua_createtable(L, m > 0x7fffffff ? 0x7fffffff : (int)m, 0);
-  for (i = 0; i < m; i++) {
-    lua_pushnumber(L, pd->cubics[i]);
-    lua_rawseti(L, -2, (int)i + 1);
-  }
-  lua_setfield(L, -2, "flat");
+  lua_pushlstring(L, (const char *)pd->cubics,
+                  8 * sizeof(double) * pd->ncubics);
+  lua_setfield(L, -2, "packed");
   lua_pushinteger(L, (lua_Integer)pd->ncubics);
   lua_setfield(L, -2, "n");
   for (k = 0; k < pd->nsubpaths; k++) {
@@ -34,4 +34,28 @@ void arclenL_pushsubpaths(lua_State *L, const arclen_pathdata *pd) {
     lua_setfield(L, -2, "n");
     lua_rawseti(L, -2, (int)k + 1);
   }
+}
+
+/* arclen._cubics(packed) -> {cubic, ...}: a path's packed cubics (2D) as
+** tables of 8 numbers, for the queries that take single cubics. */
+int arclenL_unpackcubics(lua_State *L) {
+  size_t len, n, k;
+  const char *s = luaL_checklstring(L, 1, &len);
+  int j;
+  luaL_argcheck(L, len % (8 * sizeof(double)) == 0, 1,
+                "packed cubics: a multiple of 64 bytes expected");
+  n = len / (8 * sizeof(double));
+  luaL_argcheck(L, n <= 0x7fffffff, 1, "too many cubics");
+  lua_createtable(L, (int)n, 0);
+  for (k = 0; k < n; k++) {
+    double c[8];
+    memcpy(c, s + k * sizeof c, sizeof c);
+    lua_createtable(L, 8, 0);
+    for (j = 0; j < 8; j++) {
+      lua_pushnumber(L, c[j]);
+      lua_rawseti(L, -2, j + 1);
+    }
+    lua_rawseti(L, -2, (int)k + 1);
+  }
+  return 1;
 }

@@ -7,9 +7,10 @@
 **   arclen.svg_numbers(s, cap) -> list [, position of the first bad byte];
 **                                 nil when more than cap numbers
 ** Positions are 1-based, as string.find's.
-** subpaths is {flat = 8 numbers a cubic, n = cubics, [j] = {x = x0, y =
-** y0, closed = bool, n = its cubics}} (lua/subpaths.c; arclen.path builds a
-** path on it).
+** subpaths is {packed = the cubics as a string of doubles, n = cubics,
+** [j] = {x = x0, y = y0, closed = bool, n = its cubics}} (lua/subpaths.c;
+** arclen.path builds a path on it).
+**   arclen._cubics(packed) -> {cubic, ...}: the packed cubics as tables
 ** Bad data is a result, not an error: the message and the 1-based byte
 ** position (none for the transform's overflow), which arclen.svgpath
 ** raises for arclen.path to turn into a "bad argument" message.
@@ -118,6 +119,7 @@ static int l_svg_numbers(lua_State *L) {
 
 static const luaL_Reg svg_funcs[] = {
   {"svg_pathdata", l_svg_pathdata},
+  {"_cubics", arclenL_unpackcubics},
   {"svg_number", l_svg_number},
   {"svg_numbers", l_svg_numbers},
   {NULL, NULL}

@@ -6,7 +6,7 @@
 **   arclen._walk_samples(segs, cum, ds, tol, out [, tans, times])
 **   arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts)
 **   arclen._queries(ds, L, wrap)  (a query list read, checked and reduced)
-** (segs: the list of cubics, or the flat array of a 2D path's cubics)
+** (segs: the list of cubics, or a 2D path's packed cubics, a string)
 ** The distances are read in chunks into C buffers (one set-up per chunk),
 ** so a long run pays neither a Lua call nor a table per distance.
 */
@@ -186,17 +186,15 @@ static double cum_at(lua_State *L, int cum, long k) {
   return v;
 }
 
-/* Cubic k (from 1) of the flat array at 1 into c: its dim (2). */
-static int flat_cubic(lua_State *L, long k, double *c) {
+/* Cubic k (from 1) of the packed cubics (2D) at 1 into c: its dim. */
+static int packed_cubic(lua_State *L, long k, double *c) {
   int i;
-  for (i = 0; i < 8; i++) {
-    lua_rawgeti(L, 1, (int)(8 * (k - 1) + i + 1));
-    c[i] = lua_tonumber(L, -1);
-    if (lua_type(L, -1) != LUA_TNUMBER || !isfinite(c[i]))
+  memcpy(c, lua_tostring(L, 1) + (size_t)(k - 1) * 8 * sizeof(double),
+         8 * sizeof(double));
+  for (i = 0; i < 8; i++)
+    if (!isfinite(c[i]))
       luaL_argerror(L, 1, lua_pushfstring(L, "cubic %d: coordinate %d must be "
-                                          "a finite number", (int)k, i + 1));
-    lua_pop(L, 1);
-  }
+                                          "finite", (int)k, i + 1));
   return 2;
 }
 
@@ -206,8 +204,8 @@ static int past(double cum, double x, int at_end) {
   return at_end ? cum < x : cum <= x;
 }
 
-/* The walk over the path of segments segs (at 1, or its flat array: 2D,
-** 8 numbers a cubic; cumulative lengths cum[0
+/* The walk over the path of segments segs (at 1, or its packed cubics: 2D,
+** a string of doubles; cumulative lengths cum[0
 ** .. n] at 2) for the ascending distances ds (at 3, in [0, cum[n]]) at tol
 ** (at 4): each run of ds in one segment found by arclen_times with the
 ** segment's set-up (times_of), with a gallop and a bisection to the next
@@ -219,19 +217,19 @@ static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts)
   double t[CHUNK], p[3 * CHUNK], v[3 * CHUNK], s[CHUNK], prev = -HUGE_VAL;
   double *d, lo_cum, hi_cum;
   long n, nd, i, j, k, a, q;
-  int flat;
-  luaL_checktype(L, 1, LUA_TTABLE);
+  int packed;
   luaL_checktype(L, 2, LUA_TTABLE);
   luaL_checktype(L, 3, LUA_TTABLE);
   r.rtol = arclenL_checktol(L, 4, luaL_checknumber(L, 4));
-  /* segs: a list of cubics, or a 2D path's flat array (8 numbers each) */
-  lua_rawgeti(L, 1, 1);
-  flat = lua_type(L, -1) == LUA_TNUMBER;
-  lua_pop(L, 1);
+  /* segs: a list of cubics, or a 2D path's packed cubics (a string) */
+  packed = lua_type(L, 1) == LUA_TSTRING;
+  if (!packed && lua_type(L, 1) != LUA_TTABLE)
+    luaL_argerror(L, 1, "a list of cubics or packed cubics expected");
   n = (long)lua_rawlen(L, 1);
-  if (flat) {
-    if (n % 8 != 0) luaL_argerror(L, 1, "a flat array of 8 numbers a cubic expected");
-    n /= 8;
+  if (packed) {
+    if (n % (8 * sizeof(double)) != 0)
+      luaL_argerror(L, 1, "packed cubics: a multiple of 64 bytes expected");
+    n /= 8 * sizeof(double);
   }
   if (lua_rawlen(L, 3) > 0x7fffffff / 3) luaL_argerror(L, 3, "too many distances");
   nd = (long)lua_rawlen(L, 3);
@@ -263,7 +261,7 @@ static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts)
     else while (j + 1 < nd && !past(hi_cum, d[j + 1], at_end)) j++;
     /* the run d[i .. j] in segment k */
     lo_cum = cum_at(L, 2, k - 1);
-    if (flat) r.dim = flat_cubic(L, k, r.c);
+    if (packed) r.dim = packed_cubic(L, k, r.c);
     else {
       lua_rawgeti(L, 1, (int)k);
       r.dim = arclenL_checkcurve(L, lua_gettop(L), r.c);
