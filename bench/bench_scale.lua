@@ -97,12 +97,34 @@ local function run_floor(round)
   f_ns[round] = (clock() - t0) / N * 1e9
   assert(#r == N)
 end
-local steps = {run_c, run_batch, run_floor}
+-- batch on the same curves packed in one string of doubles (Lua 5.3+:
+-- string.pack), as paths read from path data keep them: no Lua call a
+-- number
+local packed, p_ns, pratios, pbatch = nil, {}, {}, nil
+if string.pack then
+  local parts, fmt8 = {}, ("d"):rep(8)
+  for k = 0, N - 1 do
+    local b = 8 * k
+    parts[k + 1] = string.pack(fmt8, coords[b + 1], coords[b + 2], coords[b + 3], coords[b + 4],
+                               coords[b + 5], coords[b + 6], coords[b + 7], coords[b + 8])
+  end
+  packed = table.concat(parts)
+  parts = nil
+end
+local function run_packed(round)
+  if not packed then return end
+  collectgarbage()
+  t0 = clock()
+  pbatch = arclen.lengths(packed, opts)
+  p_ns[round] = (clock() - t0) / N * 1e9
+end
+local steps = {run_c, run_batch, run_floor, run_packed}
 for round = 1, ROUNDS do
-  for s = 0, 2 do steps[(s + round) % 3 + 1](round) end
+  for s = 0, 3 do steps[(s + round) % 4 + 1](round) end
   if c_ns[round] then
     ratios[round] = b_ns[round] / c_ns[round]
     if f_ns[round] then fratios[round] = (c_ns[round] + f_ns[round]) / c_ns[round] end
+    if p_ns[round] then pratios[round] = p_ns[round] / c_ns[round] end
   end
 end
 
@@ -141,6 +163,15 @@ if #ratios > 0 then
   print(("C loop (arclen_length over the same array, CPU time, one pass a round): %.0f ns/curve (median)"):format(
     median(c_ns)))
   print(("arclen.lengths / C loop, round by round: %s; median %.2f"):format(fmt(ratios), median(ratios)))
+end
+if #pratios > 0 then
+  print(("arclen.lengths on a packed string / C loop, round by round: %s; median %.2f"):format(
+    fmt(pratios), median(pratios)))
+end
+if pbatch then
+  local same = #pbatch == N
+  for k = 1, N do if pbatch[k] ~= batch[k] then same = false break end end
+  print(("packed equals flat: %s (all %d lengths)"):format(same and "yes" or "NO", N))
 end
 if #f_ns > 0 then
   print(("floor (the binding measuring no length: reading, checks, result): %.0f ns/curve (median)"):format(
