@@ -32,9 +32,13 @@ static int reader_gc(lua_State *L) {
 }
 
 static double opt_number(lua_State *L, const char *k, double dflt) {
-  double v;
+  double v = dflt;
   lua_getfield(L, 1, k);
-  v = lua_isnil(L, -1) ? dflt : luaL_checknumber(L, -1);
+  if (!lua_isnil(L, -1)) {
+    if (lua_type(L, -1) != LUA_TNUMBER)
+      luaL_argerror(L, 1, lua_pushfstring(L, "%s must be a number", k));
+    v = lua_tonumber(L, -1);
+  }
   lua_pop(L, 1);
   return v;
 }
