@@ -408,10 +408,10 @@ end
 function Path:length()
   check_self(self, "length")
   if self.n > 0 and is_metapost(self) and self.nsub > 1 then
-    local total = 0                -- MetaPost measures each subpath alone
+    local total, all = 0, segs_of(self)  -- MetaPost measures each subpath alone
     for j = 1, self.nsub do
       local segs = {}
-      for k = self.first[j], self.first[j + 1] - 1 do segs[#segs + 1] = segs_of(self)[k] end
+      for k = self.first[j], self.first[j + 1] - 1 do segs[#segs + 1] = all[k] end
       local len, err = arclen.metapost.path_arclength(segs, false)
       if len == nil then return nil, err end
       total = total + len
@@ -534,9 +534,9 @@ end
 -- located -- as a list with gap marks, and the start point.
 local function pieces_located(self, k0, t0, k1, t1)
   local out = {}                 -- out.gap made at the first gap
-  local d = self.dim
+  local d, segs = self.dim, segs_of(self)
   if k1 < k0 or (k1 == k0 and t1 <= t0) then
-    local x, y, z = arclen.point(segs_of(self)[k0], t0)
+    local x, y, z = arclen.point(segs[k0], t0)
     return out, x, y, z
   end
   local isgap = self.isgap
@@ -546,7 +546,7 @@ local function pieces_located(self, k0, t0, k1, t1)
     self.isgap = isgap
   end
   for k = k0, k1 do
-    local c = segs_of(self)[k]
+    local c = segs[k]
     local ta, tb = k == k0 and t0 or 0, k == k1 and t1 or 1
     if ta ~= 0 or tb ~= 1 then c = arclen.subcurve(c, ta, tb) end
     if tb > ta or (ta == 0 and tb == 1) then
@@ -558,7 +558,7 @@ local function pieces_located(self, k0, t0, k1, t1)
     end
   end
   if #out == 0 then
-    local x, y, z = arclen.point(segs_of(self)[k0], t0)
+    local x, y, z = arclen.point(segs[k0], t0)
     return out, x, y, z
   end
   local c = out[1]
@@ -888,8 +888,9 @@ function Path:svg()
   if self.n == 0 then return "M" .. num(self.x0) .. " " .. num(self.y0) end
   local isgap = {}
   for j = 1, self.nsub do isgap[self.first[j]] = true end
+  local segs = segs_of(self)
   for k = 1, self.n do
-    local c = segs_of(self)[k]
+    local c = segs[k]
     if isgap[k] then out[#out + 1] = "M" .. num(c[1]) .. " " .. num(c[2]) end
     out[#out + 1] = format("C%s %s %s %s %s %s", num(c[3]), num(c[4]), num(c[5]),
                            num(c[6]), num(c[7]), num(c[8]))

@@ -15,7 +15,8 @@
 
 #define FONT_SIZE 16.0   /* em (CSS "medium"); ex is half of it */
 
-static int space(unsigned char c) { return isspace(c) != 0; }
+int svgdoc_space(unsigned char c) { return isspace(c) != 0; }
+#define space svgdoc_space
 
 const char *svgdoc_attr(const char **atts, const char *name) {
   for (; *atts; atts += 2)
@@ -29,25 +30,46 @@ int svgdoc_blank(const char *s) {
   return 1;
 }
 
+void svgdoc_num(char buf[32], double x) { snprintf(buf, 32, "%.17g", x); }
+
+double svgdoc_nonneg(svgdoc *D, unsigned long line, unsigned long col,
+                     double v, const char *what) {
+  if (v < 0) {
+    char num[32];
+    svgdoc_num(num, v);
+    svgdoc_fail(D, line, col, "%s must not be negative (%s)", what, num);
+  }
+  return v;
+}
+
 /* ---- lengths -------------------------------------------------------- */
 
-/* CSS absolute units in px (1in = 96px). */
-static int absolute_unit(const char *u, double *px) {
-  static const struct { const char *name; double px; } units[] = {
-    {"in", 96.0}, {"cm", 96 / 2.54}, {"mm", 96 / 25.4}, {"pt", 96.0 / 72},
-    {"pc", 96.0 / 6}, {"q", 96 / 101.6}};
-  size_t k;
-  for (k = 0; k < sizeof units / sizeof units[0]; k++)
-    if (strcmp(u, units[k].name) == 0) return *px = units[k].px, 1;
-  return 0;
+/* A length's unit and what it is in px, px / div (CSS: 1in = 96px; em
+** and ex from the font size); px 0 for the percentage. */
+static const struct { const char *name; double px, div; } UNITS[] = {
+  {"", 1, 1}, {"px", 1, 1}, {"in", 96.0, 1}, {"cm", 96 / 2.54, 1},
+  {"mm", 96 / 25.4, 1}, {"pt", 96.0 / 72, 1}, {"pc", 96.0 / 6, 1},
+  {"q", 96 / 101.6, 1}, {"em", FONT_SIZE, 1}, {"ex", FONT_SIZE, 2},
+  {"%", 0, 1}};
+
+/* The entry of UNITS that u[0 .. n-1] names, in any case; -1 if none. */
+static int unit_of(const char *u, size_t n) {
+  int k;
+  size_t i;
+  for (k = 0; k < (int)(sizeof UNITS / sizeof UNITS[0]); k++) {
+    if (strlen(UNITS[k].name) != n) continue;
+    for (i = 0; i < n && tolower((unsigned char)u[i]) == UNITS[k].name[i]; i++) {}
+    if (i == n) return k;
+  }
+  return -1;
 }
 
 double svgdoc_length(svgdoc *D, unsigned long line, unsigned long col,
                      const char *s, int kind, const svgdoc_viewport *vp,
                      const char *what) {
   size_t n = strlen(s), i = 0, e, u;
-  char *unit;
-  double v, px;
+  int k;
+  double v;
   while (i < n && space((unsigned char)s[i])) i++;
   if (i == n) i = 0;
   e = i < n ? arclen_decimal_scan(s, n, i, &v) : i;
@@ -56,15 +78,9 @@ double svgdoc_length(svgdoc *D, unsigned long line, unsigned long col,
   if (u < n && s[u] == '%') u++;
   for (i = u; i < n && space((unsigned char)s[i]); i++) {}
   if (i < n) goto bad;
-  svgdoc_reserve(D, &D->scratch, u - e + 1);
-  unit = D->scratch.s;
-  for (i = e; i < u; i++) unit[i - e] = (char)tolower((unsigned char)s[i]);
-  unit[u - e] = '\0';
-  if (unit[0] == '\0' || strcmp(unit, "px") == 0) return v;
-  if (absolute_unit(unit, &px)) return v * px;
-  if (strcmp(unit, "em") == 0) return v * FONT_SIZE;
-  if (strcmp(unit, "ex") == 0) return v * FONT_SIZE / 2;
-  if (strcmp(unit, "%") == 0) {
+  k = unit_of(s + e, u - e);
+  if (k >= 0 && UNITS[k].px > 0) return v * UNITS[k].px / UNITS[k].div;
+  if (k >= 0) {                                  /* a percentage */
     double ref;
     if (!vp->has)
       svgdoc_fail(D, line, col, "%s='%s': a percentage needs a viewport (the "
@@ -74,7 +90,11 @@ double svgdoc_length(svgdoc *D, unsigned long line, unsigned long col,
     else ref = sqrt((vp->w * vp->w + vp->h * vp->h) / 2);
     return v / 100 * ref;
   }
-  svgdoc_fail(D, line, col, "%s='%s': unknown unit '%s'", what, s, unit);
+  {
+    char *unit = svgdoc_strdup(D, s + e, u - e);
+    for (i = 0; unit[i]; i++) unit[i] = (char)tolower((unsigned char)unit[i]);
+    svgdoc_fail(D, line, col, "%s='%s': unknown unit '%s'", what, s, unit);
+  }
 bad:
   svgdoc_fail(D, line, col, "%s='%s' is not a length", what, s);
 }
@@ -293,26 +313,24 @@ void svgdoc_viewbox_matrix(svgdoc *D, unsigned long line, unsigned long col,
   int none = 0, slice = 0, ax = 1, ay = 1;
   double sx = ew / vb[2], sy = eh / vb[3], tx, ty;
   if (par && !svgdoc_blank(par)) {
-    const char *w[3];
-    size_t wl[3], nw = 0, i = 0, n = strlen(par);
-    int ok;
-    while (i < n && nw < 3) {             /* the first three words */
+    const char *w[4];
+    size_t wl[4], nw = 0, i = 0, n = strlen(par);
+    int ok, more;
+    for (;;) {                            /* the first four words */
       while (i < n && space((unsigned char)par[i])) i++;
-      if (i == n) break;
+      if (i == n || nw == 4) break;
       w[nw] = par + i;
       while (i < n && !space((unsigned char)par[i])) i++;
       wl[nw] = (size_t)(par + i - w[nw]);
       nw++;
     }
-    while (i < n && space((unsigned char)par[i])) i++;
-    if (i < n) nw = 4;                    /* more than three */
-    if (nw > 0 && nw <= 3 && wl[0] == 5 && memcmp(w[0], "defer", 5) == 0) {
-      w[0] = w[1], wl[0] = wl[1], w[1] = w[2], wl[1] = wl[2];
+    more = i < n;
+    if (nw > 0 && wl[0] == 5 && memcmp(w[0], "defer", 5) == 0) {
+      memmove(w, w + 1, 3 * sizeof *w);
+      memmove(wl, wl + 1, 3 * sizeof *wl);
       nw--;
-    } else if (nw == 4 && wl[0] == 5 && memcmp(w[0], "defer", 5) == 0) {
-      nw = 3;                             /* still more than two */
     }
-    ok = nw >= 1 && nw <= 2;
+    ok = !more && nw >= 1 && nw <= 2;
     if (ok && wl[0] == 4 && memcmp(w[0], "none", 4) == 0) {
       none = 1;
     } else if (ok) {

@@ -91,6 +91,13 @@ void svgdoc_free_pool(svgdoc *D);
 /* Memory that lives as long as the document; never NULL (fails). */
 void *svgdoc_alloc(svgdoc *D, size_t n);
 char *svgdoc_strdup(svgdoc *D, const char *s, size_t n);
+/* A string formatted with malloc (NULL without memory), for the messages
+** that outlive a failed document. */
+char *svgdoc_message(const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 1, 2)))
+#endif
+    ;
 /* A string formatted into the pool. */
 #if defined(__GNUC__)
 __attribute__((format(printf, 2, 3)))
@@ -105,8 +112,16 @@ void svgdoc_append(svgdoc *D, svgdoc_buffer *b, const char *s, size_t n);
 /* The value of attribute name among expat's name/value pairs, or NULL. */
 const char *svgdoc_attr(const char **atts, const char *name);
 
-/* Is s empty or only whitespace? */
+/* Is s empty or only whitespace?  (Whitespace is C's isspace, as Lua's
+** %s and the number scanner of svg/decimal.c take it.) */
 int svgdoc_blank(const char *s);
+int svgdoc_space(unsigned char c);
+
+/* %.17g of x (shapes and messages write numbers so). */
+void svgdoc_num(char buf[32], double x);
+/* v, or a located error "what must not be negative (v)". */
+double svgdoc_nonneg(svgdoc *D, unsigned long line, unsigned long col,
+                     double v, const char *what);
 
 /* A <length> (SVG 2 section 4.3) in user units; kind 'x', 'y' or 'o' for
 ** percentages of vp.  what: the attribute's name for messages. */
@@ -140,8 +155,7 @@ void svgdoc_properties(svgdoc *D, const char **atts, const char *out[]);
 const char *svgdoc_shape_data(svgdoc *D, unsigned long line,
                               unsigned long col, const char *tag,
                               const char **atts, const svgdoc_viewport *vp);
-/* %.17g of x (shapes and messages write numbers so). */
-void svgdoc_num(char buf[32], double x);
+
 
 /* ---- matrices ---- */
 

@@ -54,16 +54,28 @@ static char *vformat(const char *fmt, va_list ap) {
   return p;
 }
 
-char *svgdoc_format(svgdoc *D, const char *fmt, ...) {
+char *svgdoc_message(const char *fmt, ...) {
   va_list ap;
-  char *p, *q;
+  char *p;
   va_start(ap, fmt);
   p = vformat(fmt, ap);
   va_end(ap);
-  if (p == NULL) svgdoc_nomem(D);
-  q = svgdoc_strdup(D, p, strlen(p));
-  free(p);
-  return q;
+  return p;
+}
+
+char *svgdoc_format(svgdoc *D, const char *fmt, ...) {
+  va_list ap;
+  int n;
+  char *p;
+  va_start(ap, fmt);
+  n = vsnprintf(NULL, 0, fmt, ap);
+  va_end(ap);
+  if (n < 0) svgdoc_nomem(D);
+  p = svgdoc_alloc(D, (size_t)n + 1);
+  va_start(ap, fmt);
+  vsnprintf(p, (size_t)n + 1, fmt, ap);
+  va_end(ap);
+  return p;
 }
 
 void svgdoc_set_error(svgdoc *D, unsigned long line, unsigned long col,

@@ -9,7 +9,6 @@
 */
 #include <expat.h>
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -30,18 +29,19 @@ static const char *const NOT_RENDERED[] = {
   "defs", "symbol", "clipPath", "mask", "marker", "pattern",
   "linearGradient", "radialGradient", "filter", "style", "script", "title",
   "desc", "metadata", "view", "font", "font-face", "cursor", "hatch",
-  "solidcolor", "meshgradient", NULL};
+  "solidcolor", "meshgradient"};
 static const char *const SHAPES[] = {"path", "rect", "circle", "ellipse",
-                                     "line", "polyline", "polygon", NULL};
-static const char *const GROUPS[] = {"g", "a", "switch", "svg", NULL};
+                                     "line", "polyline", "polygon"};
+static const char *const GROUPS[] = {"g", "a", "switch", "svg"};
 
-/* The entry of tag in list, or -1. */
-static int lookup(const char *const *list, const char *tag) {
+/* The entry of tag in list[0 .. n-1], or -1. */
+static int find_tag(const char *const *list, int n, const char *tag) {
   int k;
-  for (k = 0; list[k]; k++)
+  for (k = 0; k < n; k++)
     if (strcmp(list[k], tag) == 0) return k;
   return -1;
 }
+#define lookup(list, tag) find_tag(list, (int)(sizeof list / sizeof *list), tag)
 
 typedef struct svgdoc_frame {
   size_t depth;
@@ -167,23 +167,20 @@ static const char *copy(svgdoc *D, const char *s) {
   return s ? svgdoc_strdup(D, s, strlen(s)) : NULL;
 }
 
-/* An element drawn (or a use to expand later) in document order. */
+/* An element drawn (or a use to expand later) in document order; while
+** the uses are expanded, straight into the drawn list. */
 static void emit(svgdoc *D, svgdoc_element *e, svgdoc_use *u) {
-  unsigned long line = e ? e->line : u->line, col = e ? e->col : u->col;
-  if (D->expanding) {                      /* the uses: straight out */
-    if (D->ndrawn >= SVGDOC_MAX_ELEMENTS)
-      svgdoc_fail(D, line, col, "more than %d drawn elements",
-                  SVGDOC_MAX_ELEMENTS);
+  if ((D->expanding ? D->ndrawn : D->nout) >= SVGDOC_MAX_ELEMENTS)
+    svgdoc_fail(D, e ? e->line : u->line, e ? e->col : u->col,
+                "more than %d drawn elements", SVGDOC_MAX_ELEMENTS);
+  if (D->expanding) {
     D->drawn = grow(D, D->drawn, &D->drawn_room, D->ndrawn, sizeof *D->drawn);
     D->drawn[D->ndrawn++] = e;
-    return;
+  } else {
+    D->out = grow(D, D->out, &D->out_room, D->nout, sizeof *D->out);
+    D->out[D->nout].e = e, D->out[D->nout].u = u;
+    D->nout++;
   }
-  if (D->nout >= SVGDOC_MAX_ELEMENTS)
-    svgdoc_fail(D, line, col, "more than %d drawn elements",
-                SVGDOC_MAX_ELEMENTS);
-  D->out = grow(D, D->out, &D->out_room, D->nout, sizeof *D->out);
-  D->out[D->nout].e = e, D->out[D->nout].u = u;
-  D->nout++;
 }
 
 /* The path data message of pd's error, as arclen.path.svg words it. */
@@ -279,11 +276,10 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
   }
   if ((s = P[SVGDOC_STROKE_WIDTH]) != NULL && zero_width(D, s)) f->stroked = 0;
   if (lookup(NOT_RENDERED, tag) >= 0 && !(sh && sh->root && is_symbol)) return;
-  for (skipped = 0; skipped < SVGDOC_NSKIPPED; skipped++) {
-    if (strcmp(svgdoc_skipped_tags[skipped], tag) == 0) {
-      D->skipped[skipped]++;
-      return;
-    }
+  skipped = find_tag(svgdoc_skipped_tags, SVGDOC_NSKIPPED, tag);
+  if (skipped >= 0) {
+    D->skipped[skipped]++;
+    return;
   }
   shape = lookup(SHAPES, tag);
   if (shape < 0 && lookup(GROUPS, tag) < 0 && strcmp(tag, "use") != 0 &&
@@ -311,12 +307,8 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
                   "viewport", tag);
     if (!hw) w = vp->w;
     if (!hh) h = vp->h;
-    if (w < 0 || h < 0) {
-      char num[32];
-      svgdoc_num(num, w < 0 ? w : h);
-      svgdoc_fail(D, line, col, "%s must not be negative (%s)",
-                  w < 0 ? "width" : "height", num);
-    }
+    svgdoc_nonneg(D, line, col, w, "width");
+    svgdoc_nonneg(D, line, col, h, "height");
     if (w == 0 || h == 0) { f->skip = 1; return; }
     svgdoc_translate(x, y, V);
     f->vp.has = 1, f->vp.w = w, f->vp.h = h;
@@ -369,7 +361,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
     hw = svgdoc_len_attr(D, line, col, atts, "width", 'x', vp, &uw);
     hh = svgdoc_len_attr(D, line, col, atts, "height", 'y', vp, &uh);
     s = href;
-    while (s && (*s == ' ' || (*s >= '\t' && *s <= '\r'))) s++;
+    while (s && svgdoc_space((unsigned char)*s)) s++;
     if (href == NULL) {
       warn(D, line, col, "<use> without href, nothing drawn");
     } else if (*s != '#') {
@@ -379,7 +371,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
       svgdoc_use *u = svgdoc_alloc(D, sizeof *u);
       const char *e = s + strlen(s);
       svgdoc_matrix M;
-      while (e > s + 1 && (e[-1] == ' ' || (e[-1] >= '\t' && e[-1] <= '\r'))) e--;
+      while (e > s + 1 && svgdoc_space((unsigned char)e[-1])) e--;
       u->href = svgdoc_strdup(D, s + 1, (size_t)(e - s - 1));
       u->id = copy(D, svgdoc_attr(atts, "id"));
       u->layer = f->layer;
@@ -480,13 +472,8 @@ static void open_root(svgdoc *D, const char **atts, unsigned long line,
     hw = svgdoc_len_attr(D, line, col, atts, "width", 'x', &none, &w);
   if (hs && !strchr(hs, '%'))
     hh = svgdoc_len_attr(D, line, col, atts, "height", 'y', &none, &h);
-  if ((hw && w < 0) || (hh && h < 0)) {
-    char num[32];
-    int bad_w = hw && w < 0;
-    svgdoc_num(num, bad_w ? w : h);
-    svgdoc_fail(D, line, col, "%s must not be negative (%s)",
-                bad_w ? "width" : "height", num);
-  }
+  if (hw) svgdoc_nonneg(D, line, col, w, "width");
+  if (hh) svgdoc_nonneg(D, line, col, h, "height");
   memset(f, 0, sizeof *f);
   f->depth = 1;
   if (has_vb) f->vp.has = 1, f->vp.w = vb[2], f->vp.h = vb[3];
@@ -717,12 +704,6 @@ void svgdoc_free(svgdoc *D) {
   free(D);
 }
 
-static char *copy_message(const char *s) {   /* NULL: no memory */
-  char *m = malloc(strlen(s) + 1);
-  if (m) strcpy(m, s);
-  return m;
-}
-
 /* expat's error as the reader's: "malformed XML: ..." at its place. */
 static void xml_error(svgdoc *D) {
   XML_Parser p = (XML_Parser)D->parser;
@@ -736,13 +717,11 @@ static void xml_error(svgdoc *D) {
   }
   if (D->finished && D->bytes == 0) {
     line = col = 1;
-    m = copy_message("empty document");
+    m = svgdoc_message("empty document");
   } else if (D->finished && !D->root_seen && code == XML_ERROR_NO_ELEMENTS) {
-    m = copy_message("empty document (no root element)");
+    m = svgdoc_message("empty document (no root element)");
   } else {
-    size_t n = strlen(XML_ErrorString(code)) + 16;
-    m = malloc(n);
-    if (m) snprintf(m, n, "malformed XML: %s", XML_ErrorString(code));
+    m = svgdoc_message("malformed XML: %s", XML_ErrorString(code));
   }
   svgdoc_set_error(D, line, col, m);
 }
@@ -771,7 +750,7 @@ int svgdoc_finish(svgdoc *D) {
     return -1;
   }
   if (!D->root_seen) {
-    svgdoc_set_error(D, 1, 1, copy_message("empty document (no root element)"));
+    svgdoc_set_error(D, 1, 1, svgdoc_message("empty document (no root element)"));
     return -1;
   }
   /* expand the uses, in document order */

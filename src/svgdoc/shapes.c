@@ -6,13 +6,10 @@
 ** (10.6, 10.7).  Numbers are written with 17 significant digits, so the
 ** path data reads back to the same doubles.
 */
-#include <stdio.h>
 #include <string.h>
 
 #include "svg/decimal.h"
 #include "svgdoc/internal.h"
-
-void svgdoc_num(char buf[32], double x) { snprintf(buf, 32, "%.17g", x); }
 
 /* Append the formatted numbers of fmt ("%n" per number, other bytes as
 ** they are) to b. */
@@ -31,23 +28,13 @@ static void put(svgdoc *D, svgdoc_buffer *b, const char *fmt, int count,
   }
 }
 
-static double nonneg(svgdoc *D, unsigned long line, unsigned long col,
-                     double v, const char *what) {
-  if (v < 0) {
-    char num[32];
-    svgdoc_num(num, v);
-    svgdoc_fail(D, line, col, "%s must not be negative (%s)", what, num);
-  }
-  return v;
-}
-
 /* rx or ry: 1 with its value, 0 when absent, blank or "auto". */
 static int radius(svgdoc *D, unsigned long line, unsigned long col,
                   const char **atts, const char *name, int kind,
                   const svgdoc_viewport *vp, double *v) {
   const char *s = svgdoc_attr(atts, name), *p;
   if (s == NULL) return 0;
-  for (p = s; *p == ' ' || (*p >= '\t' && *p <= '\r'); p++) {}
+  for (p = s; svgdoc_space((unsigned char)*p); p++) {}
   if (strncmp(p, "auto", 4) == 0 && svgdoc_blank(p + 4)) return 0;
   return svgdoc_len_attr(D, line, col, atts, name, kind, vp, v);
 }
@@ -97,13 +84,13 @@ const char *svgdoc_shape_data(svgdoc *D, unsigned long line,
     svgdoc_len_attr(D, line, col, atts, "x", 'x', vp, &x);
     svgdoc_len_attr(D, line, col, atts, "y", 'y', vp, &y);
     svgdoc_len_attr(D, line, col, atts, "width", 'x', vp, &w);
-    nonneg(D, line, col, w, "width");
+    svgdoc_nonneg(D, line, col, w, "width");
     svgdoc_len_attr(D, line, col, atts, "height", 'y', vp, &h);
-    nonneg(D, line, col, h, "height");
+    svgdoc_nonneg(D, line, col, h, "height");
     hx = radius(D, line, col, atts, "rx", 'x', vp, &rx);
     hy = radius(D, line, col, atts, "ry", 'y', vp, &ry);
-    if (hx) nonneg(D, line, col, rx, "rx");
-    if (hy) nonneg(D, line, col, ry, "ry");
+    if (hx) svgdoc_nonneg(D, line, col, rx, "rx");
+    if (hy) svgdoc_nonneg(D, line, col, ry, "ry");
     if (w == 0 || h == 0) return NULL;
     /* auto: the other radius, else 0; then each clamped to half the side */
     if (!hx) rx = hy ? ry : 0;
@@ -135,12 +122,12 @@ const char *svgdoc_shape_data(svgdoc *D, unsigned long line,
     svgdoc_len_attr(D, line, col, atts, "cy", 'y', vp, &cy);
     if (tag[0] == 'c') {
       svgdoc_len_attr(D, line, col, atts, "r", 'o', vp, &rx);
-      ry = nonneg(D, line, col, rx, "r");
+      ry = svgdoc_nonneg(D, line, col, rx, "r");
     } else {
       int hx = radius(D, line, col, atts, "rx", 'x', vp, &rx);
       int hy = radius(D, line, col, atts, "ry", 'y', vp, &ry);
-      if (hx) nonneg(D, line, col, rx, "rx");
-      if (hy) nonneg(D, line, col, ry, "ry");
+      if (hx) svgdoc_nonneg(D, line, col, rx, "rx");
+      if (hy) svgdoc_nonneg(D, line, col, ry, "ry");
       if (!hx) rx = hy ? ry : 0;             /* auto: the other one */
       if (!hy) ry = hx ? rx : 0;
     }

@@ -9,7 +9,6 @@
 #ifndef ARCLEN_SVGDOC_H
 #define ARCLEN_SVGDOC_H
 
-#include <setjmp.h>
 #include <stddef.h>
 
 #include "svg/pathdata.h"
