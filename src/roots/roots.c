@@ -702,18 +702,13 @@ static int poly_roots(const double *p, int n, double *re, double *im) {
 ** coefficients as given -- the attainable accuracy when they are exact
 ** (Algorithm 1010 reaches it by Newton on its factors in the same way). */
 
-/* a b = p + *e exactly (Dekker's TwoProduct with Veltkamp's split into
-** 26-bit halves: plain arithmetic, inlined, where fma() was a library call
-** in every step; |a|, |b| < 2^995 here: dd_value's terms stay within
-** 2^+-540) */
-static double split_hi(double a) {
-  double t = 134217729.0 * a;                  /* 2^27 + 1 */
-  return t - (t - a);
-}
-
+/* a b = p + *e exactly (TwoProduct by a fused multiply-add: fma rounds
+** once, so a b - p comes out exact whatever the compiler contracts; Dekker's
+** split in plain arithmetic does not survive contraction of its own
+** products).  dd_value's terms stay within 2^+-540: no underflow in e. */
 static double two_prod(double a, double b, double *e) {
-  double p = a * b, ah = split_hi(a), al = a - ah, bh = split_hi(b), bl = b - bh;
-  *e = ((ah * bh - p) + ah * bl + al * bh) + al * bl;
+  double p = a * b;
+  *e = fma(a, b, -p);
   return p;
 }
 
