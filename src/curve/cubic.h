@@ -10,6 +10,8 @@
 #include <stdint.h>
 #include <string.h>
 
+#include "curve/numeric.h"
+
 /* z'(t) / 2^exp = a2 t^2 + a1 t + a0, with the power of two chosen so
 ** that the largest coefficient lies in [0.5, 1). */
 typedef struct arclen_hodo {
@@ -101,10 +103,11 @@ void arclen_hodo_local(const double *c, int dim, double t0, double t1,
 /* Speed in scaled units, |a2 t^2 + a1 t + a0| by Horner per coordinate;
 ** inline, since quadrature spends most of its time here. */
 static inline double arclen_hodo_speed(const arclen_hodo *h, double t) {
-  double x = (h->a2[0] * t + h->a1[0]) * t + h->a0[0];
-  double y = (h->a2[1] * t + h->a1[1]) * t + h->a0[1];
-  double z = h->dim == 3 ? (h->a2[2] * t + h->a1[2]) * t + h->a0[2] : 0;
-  return sqrt(x * x + y * y + z * z);
+  double x = arclen_muladd(arclen_muladd(h->a2[0], t, h->a1[0]), t, h->a0[0]);
+  double y = arclen_muladd(arclen_muladd(h->a2[1], t, h->a1[1]), t, h->a0[1]);
+  double z = h->dim == 3
+             ? arclen_muladd(arclen_muladd(h->a2[2], t, h->a1[2]), t, h->a0[2]) : 0;
+  return sqrt(arclen_muladd(z, z, arclen_muladd(y, y, x * x)));
 }
 /* Chord |z(b) - z(a)| in scaled units, from the antiderivative of the
 ** hodograph (z(t) - P0 = a2 t^3/3 + a1 t^2/2 + a0 t).  It bounds the
@@ -115,16 +118,16 @@ static inline double arclen_hodo_speed(const arclen_hodo *h, double t) {
 static inline double arclen_hodo_chord_part(const arclen_hodo *h, int k,
                                             double a, double b) {
   double c3 = h->a2[k] * (1.0 / 3), c2 = h->a1[k] * 0.5;
-  double za = ((c3 * a + c2) * a + h->a0[k]) * a;
-  double zb = ((c3 * b + c2) * b + h->a0[k]) * b;
-  return (zb - za) * (zb - za);
+  double za = arclen_muladd(arclen_muladd(c3, a, c2), a, h->a0[k]) * a;
+  double zb = arclen_muladd(arclen_muladd(c3, b, c2), b, h->a0[k]) * b;
+  return zb - za;
 }
 static inline double arclen_hodo_chord(const arclen_hodo *h, double a,
                                        double b) {
-  double s = arclen_hodo_chord_part(h, 0, a, b) +
-             arclen_hodo_chord_part(h, 1, a, b);
-  if (h->dim == 3) s += arclen_hodo_chord_part(h, 2, a, b);
-  return sqrt(s);
+  double dx = arclen_hodo_chord_part(h, 0, a, b);
+  double dy = arclen_hodo_chord_part(h, 1, a, b);
+  double dz = h->dim == 3 ? arclen_hodo_chord_part(h, 2, a, b) : 0;
+  return sqrt(arclen_muladd(dz, dz, arclen_muladd(dy, dy, dx * dx)));
 }
 int arclen_hodo_critical(const arclen_hodo *h, double roots[3]);
 int arclen_cubic_roots01(const double p[4], double roots[3]);

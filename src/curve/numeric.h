@@ -10,6 +10,24 @@
 
 #define ARCLEN_PI 3.14159265358979323846
 
+/* a b + c, rounded once where the target has a fused multiply-add and
+** twice where it has none: a compiler contracts only into an FMA
+** instruction, so this is what every build for one target computes,
+** whatever its -ffp-contract.  Used where two code paths must agree to
+** the bit (the default method's fast and general paths): a product left
+** to the compiler may be fused at one inlined site and not at another.
+** Macros: GCC's (__FP_FAST_FMA), C99's, x86's -mfma, ARM's ACLE. */
+#if defined(FP_FAST_FMA) || defined(__FP_FAST_FMA) || defined(__FMA__) || \
+    defined(__ARM_FEATURE_FMA)
+static inline double arclen_muladd(double a, double b, double c) {
+  return fma(a, b, c);
+}
+#else
+static inline double arclen_muladd(double a, double b, double c) {
+  return a * b + c;
+}
+#endif
+
 /* A double-double number hi + lo (Dekker 1971). */
 typedef struct arclen_dd { double hi, lo; } arclen_dd;
 

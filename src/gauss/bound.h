@@ -32,7 +32,7 @@ static inline double arclen_rough_log2(double x) {
   u = (u & 0xfffffffffffffULL) | 0x3ff0000000000000ULL;
   memcpy(&t, &u, sizeof t);
   t -= 1;
-  return (e - 1023) + t + t * (1 - t) * (0.418 - 0.148 * t);
+  return arclen_muladd(t * (1 - t), arclen_muladd(-0.148, t, 0.418), (e - 1023) + t);
 }
 
 /* What the bound needs of a curve, once: per branch pair its upper root

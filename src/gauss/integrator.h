@@ -47,7 +47,7 @@
 ** points grow with the bits asked for, so the share grows linearly with
 ** the bits, within [0.02, 0.1] (doc/benchmarks.md has the measurements). */
 static inline double arclen_footcut(double rtol) {
-  double f = -0.0015 * arclen_rough_log2(rtol) - 0.005;
+  double f = arclen_muladd(-0.0015, arclen_rough_log2(rtol), -0.005);
   return f < 0.02 ? 0.02 : f > 0.1 ? 0.1 : f;
 }
 #define GRADE 8.0
@@ -76,9 +76,9 @@ static inline double arclen_apply_rule(const arclen_hodo *h,
                                        const arclen_gauss_rule *r, double c,
                                        double half) {
   if (r->n % 2)
-    return half * arclen_speed_pairs(h, r->x, r->w, 1, r->half, c, half,
-                                     r->w[0] * arclen_hodo_speed(h, c));
-  return half * arclen_speed_pairs(h, r->x, r->w, 0, r->half, c, half, 0);
+    return arclen_speed_rule(h, r->x, r->w, 1, r->half, c, half,
+                             r->w[0] * arclen_hodo_speed(h, c));
+  return arclen_speed_rule(h, r->x, r->w, 0, r->half, c, half, 0);
 }
 
 /* The bound for one piece [c - half_width, c + half_width], in units of half_width (u = (t - c)/half_width).
@@ -159,8 +159,8 @@ static HOT_INLINE int arclen_feet_of(const arclen_branch *br, double t0, double 
 /* log2(lead 4/pi), rounded up, from the lead's square: its square root
 ** goes into the log, a square root fewer. */
 static HOT_INLINE double arclen_lead_log2(double lead2) {
-  return 0.5 * arclen_rough_log2(lead2 * (16 / (ARCLEN_PI * ARCLEN_PI))) +
-         ARCLEN_LOG2_ERR;
+  return arclen_muladd(0.5, arclen_rough_log2(lead2 * (16 / (ARCLEN_PI * ARCLEN_PI))),
+                       ARCLEN_LOG2_ERR);
 }
 
 /* log2 of the pieces' common target, 2 rtol len_lower / (width lead 4/pi),

@@ -307,3 +307,9 @@ double arclen_speed_pairs(const arclen_hodo *h, const double *x,
 #endif
   return pairs_sse2(h, x, w, i0, half, c, half_width, s);
 }
+
+double arclen_speed_rule(const arclen_hodo *h, const double *x,
+                         const double *w, int i0, int half, double c,
+                         double half_width, double s) {
+  return half_width * arclen_speed_pairs(h, x, w, i0, half, c, half_width, s);
+}

@@ -24,6 +24,14 @@ double arclen_speed_pairs(const arclen_hodo *h, const double *x,
                           const double *w, int i0, int half, double c,
                           double half_width, double s);
 
+/* half_width times arclen_speed_pairs: the rule's value on a piece.  The
+** product is made here, in a function of its own, so that no caller's
+** addition can be fused with it: the default method's fast and general
+** paths add the pieces at different sites, and must agree to the bit. */
+double arclen_speed_rule(const arclen_hodo *h, const double *x,
+                         const double *w, int i0, int half, double c,
+                         double half_width, double s);
+
 /* The name of the kernel arclen_speed_pairs runs here: "avx512", "avx",
 ** "sse2" or "scalar". */
 const char *arclen_speed_kernel(void);
