@@ -4,7 +4,8 @@
 ** solve_rising_cubic, get_arc_length, get_arc_time of MetaPost 2.x), so
 ** that the results are bit-identical to `mpost -numbersystem=double`.
 ** Lengths of vectors are sqrt(a*a + b*b) like mpmathdouble's pyth_add (not
-** hypot), and the Makefile compiles without FMA contraction.
+** hypot), each square rounded before the sum whatever the compiler's
+** contraction (pyth).
 **
 ** MetaPost recurses without a depth limit; a collinear curve that reverses
 ** direction never becomes "simple" near the reversal and recurses until the
@@ -20,7 +21,8 @@
 /* Builds that do not use our Makefile (LuaRocks' builtin backend) pass no
 ** -ffp-contract=off; on targets with FMA (aarch64, x86-64-v3) a fused
 ** multiply-add would round differently from mpost.  GCC ignores ISO C's
-** STDC FP_CONTRACT pragma but honours its own; clang honours ISO C's. */
+** STDC FP_CONTRACT pragma but honours its own; clang honours ISO C's
+** unless -ffp-contract=fast (then pyth's volatile squares are the proof). */
 #if defined(__clang__)
 #pragma STDC FP_CONTRACT OFF
 #elif defined(__GNUC__)
@@ -48,11 +50,14 @@
 ** needs at most a few; the cap only guards against a pathological goal). */
 #define MAX_PASSES 64
 
-/* pyth_add of mpmathdouble.w */
+/* pyth_add of mpmathdouble.w: sqrt(a*a + b*b) with both squares rounded
+** before the sum, as in mpost.  It is our one product that meets an
+** addition (halvings fused with a sum are exact), and clang's
+** -ffp-contract=fast fuses it despite the pragmas above: the volatile
+** stores round each square whatever the compiler's contraction. */
 static double pyth(double a, double b) {
-  a = fabs(a);
-  b = fabs(b);
-  return sqrt(a * a + b * b);
+  volatile double aa = fabs(a) * fabs(a), bb = fabs(b) * fabs(b);
+  return sqrt(aa + bb);
 }
 
 /* solve_rising_cubic: the tau in [0, 1] where B(0, a, a+b, a+b+c; tau) = x,
