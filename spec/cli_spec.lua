@@ -1,8 +1,10 @@
 -- spec/cli_spec.lua -- the command-line tool run as a shell user runs it:
--- a subprocess `<this Lua> lua/arclen/cli.lua ...` that finds the same
--- modules as this process (LUA_PATH and LUA_CPATH are this process's
--- package.path and package.cpath, so it tests the fresh build), checked for
--- its output, its messages on stderr and its exit status.
+-- a subprocess of this Lua running arclen.cli with the same modules as
+-- this process (LUA_PATH and LUA_CPATH are this process's package.path and
+-- package.cpath, so it tests the build under test -- a contracted or clang
+-- build too; lua/arclen/cli.lua run as a script would put the clone's
+-- build/<version> first), checked for its output, its messages on stderr
+-- and its exit status.
 local arclen = require("arclen")
 
 -- This Lua: texlua and texluajit (LuaTeX's, with kpse built in) or a plain one.
@@ -15,13 +17,20 @@ end
 local function shquote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end
 
 local ERR = os.tmpname()
+local MAIN = os.tmpname()   -- a script that runs arclen.cli from the search paths
+do
+  local f = assert(io.open(MAIN, "w"))
+  f:write('require("arclen.cli").main(arg)\n')
+  f:close()
+end
 
 -- Run the CLI with args (a list); returns stdout, stderr, exit status.
 local function run(args, stdin)
   local words = {}
   for i, a in ipairs(args) do words[i] = shquote(a) end
-  local cmd = ("LUA_PATH=%s LUA_CPATH=%s %s lua/arclen/cli.lua %s 2>%s"):format(
-    shquote(package.path), shquote(package.cpath), interpreter(), table.concat(words, " "), ERR)
+  local cmd = ("LUA_PATH=%s LUA_CPATH=%s %s %s %s 2>%s"):format(
+    shquote(package.path), shquote(package.cpath), interpreter(), shquote(MAIN),
+    table.concat(words, " "), ERR)
   if stdin then cmd = "printf '%s' " .. shquote(stdin) .. " | " .. cmd end
   local p = assert(io.popen(cmd .. "; echo \"exit=$?\""))
   local out = p:read("*a")
