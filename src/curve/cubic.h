@@ -103,11 +103,10 @@ void arclen_hodo_local(const double *c, int dim, double t0, double t1,
 /* Speed in scaled units, |a2 t^2 + a1 t + a0| by Horner per coordinate;
 ** inline, since quadrature spends most of its time here. */
 static inline double arclen_hodo_speed(const arclen_hodo *h, double t) {
-  double x = arclen_muladd(arclen_muladd(h->a2[0], t, h->a1[0]), t, h->a0[0]);
-  double y = arclen_muladd(arclen_muladd(h->a2[1], t, h->a1[1]), t, h->a0[1]);
-  double z = h->dim == 3
-             ? arclen_muladd(arclen_muladd(h->a2[2], t, h->a1[2]), t, h->a0[2]) : 0;
-  return sqrt(arclen_muladd(z, z, arclen_muladd(y, y, x * x)));
+  double x = (h->a2[0] * t + h->a1[0]) * t + h->a0[0];
+  double y = (h->a2[1] * t + h->a1[1]) * t + h->a0[1];
+  double z = h->dim == 3 ? (h->a2[2] * t + h->a1[2]) * t + h->a0[2] : 0;
+  return sqrt(x * x + y * y + z * z);
 }
 /* Chord |z(b) - z(a)| in scaled units, from the antiderivative of the
 ** hodograph (z(t) - P0 = a2 t^3/3 + a1 t^2/2 + a0 t).  It bounds the

@@ -6,13 +6,14 @@
 ** or eight of them in one packed instruction about as often as one: SSE2
 ** (every x86-64) puts the two points of a pair in one register, AVX two
 ** pairs, AVX-512 four.  Each lane does the scalar code's operations in its
-** order (c + (-half_width) x is c - half_width x exactly; no FMA contraction, see the
-** Makefile) and each pair's two speeds are added as the scalar code adds
-** them.  The pairs go to four sums in turn, added up as (s0 + s1) + (s2 +
+** order (c + (-half_width) x is c - half_width x exactly) and each pair's
+** two speeds are added as the scalar code adds them.  The pairs go to four sums in turn, added up as (s0 + s1) + (s2 +
 ** s3) at the end -- one sum in a chain of additions would bound the wide
 ** kernels -- and every kernel keeps that order, so every kernel gives the
 ** same result to the bit and results do not depend on the machine
-** (fuzz/fuzz_kernels.c checks them against each other).
+** (fuzz/fuzz_kernels.c checks them against each other) in a build without
+** contraction, the Makefile's; one that fuses a*b+c may fuse lanes and
+** scalar code apart, within a rounding (make check-builds).
 */
 #include <math.h>
 
