@@ -8,6 +8,14 @@
 #   make bench-icount    instructions per call under callgrind (valgrind)
 #   make bench-latency   each set-up step's time as a dependent chain
 #   make install PREFIX=/usr/local
+#   make rock            the LuaRocks source rocks in build/rock (tools/pack-rock.sh)
+#
+# GNU make is required: `gmake` on the BSDs (macOS's make 3.81 is GNU make).
+# Lua's headers come from pkg-config when it knows this Lua, else from
+# Debian's place; point LUA_INC at others, e.g. Homebrew's Lua:
+#   make LUA_INC=$(brew --prefix lua)/include/lua
+# Shared objects: `-bundle -undefined dynamic_lookup` on macOS (UNAME_S=Darwin),
+# `-shared` elsewhere.
 
 LUA ?= 5.4
 PREFIX ?= /usr/local
@@ -21,13 +29,39 @@ WARN = -std=c99 -Wall -Wextra -Wpedantic -Werror=implicit-function-declaration
 CORE_FLAGS = $(WARN) -ffp-contract=off -fno-math-errno -fPIC -D_POSIX_C_SOURCE=200809L
 
 ifeq ($(LUA),jit)
-  LUA_INC ?= /usr/include/luajit-2.1
   LUA_BIN ?= luajit
   LUA_ABI = 5.1
+  LUA_PC_NAMES = luajit
+  LUA_PC_VERSION = 2.
+  LUA_INC_DEFAULT = /usr/include/luajit-2.1
 else
-  LUA_INC ?= /usr/include/lua$(LUA)
   LUA_BIN ?= lua$(LUA)
   LUA_ABI = $(LUA)
+  # The names Debian and Alpine (lua5.4), FreeBSD (lua-5.4, lua54) and
+  # Homebrew (lua) give Lua's pkg-config file; "lua" only if its version is ours.
+  LUA_PC_NAMES = lua$(LUA) lua-$(LUA) lua$(subst .,,$(LUA)) lua
+  LUA_PC_VERSION = $(LUA).
+  LUA_INC_DEFAULT = /usr/include/lua$(LUA)
+endif
+ifndef LUA_INC
+  LUA_PC := $(shell for n in $(LUA_PC_NAMES); do \
+    v=$$(pkg-config --modversion $$n 2>/dev/null) || continue; \
+    case "$$v." in ($(LUA_PC_VERSION)*) echo $$n; break ;; esac; done)
+  ifneq ($(LUA_PC),)
+    LUA_INC := $(patsubst -I%,%,$(firstword $(shell pkg-config --cflags-only-I $(LUA_PC))))
+  endif
+  ifeq ($(LUA_INC),)
+    LUA_INC := $(LUA_INC_DEFAULT)
+  endif
+endif
+
+# A Lua module is a shared object that leaves lua_* to the interpreter;
+# Apple's linker accepts that only for a bundle told so (ld(1), -undefined).
+UNAME_S ?= $(shell uname -s 2>/dev/null)
+ifeq ($(UNAME_S),Darwin)
+  MODULE_LDFLAGS = -bundle -undefined dynamic_lookup
+else
+  MODULE_LDFLAGS = -shared
 endif
 
 BUILD = build
@@ -47,8 +81,18 @@ DOC_OBJ = $(patsubst src/%.c,$(BUILD)/core/%.o,$(DOC_SRC))
 # The C part is the module arclen.core; require "arclen" is lua/arclen/init.lua.
 MODULE = $(OUT)/arclen/core.so
 DOC_MODULE = $(OUT)/arclen/svgdoc.so
-# Without expat's header (Debian libexpat1-dev) the core still builds.
-HAVE_EXPAT := $(shell printf '\043include <expat.h>\n' | $(CC) -E - >/dev/null 2>&1 && echo yes)
+# expat from pkg-config when it knows it, else the compiler's own paths
+# (EXPAT_CFLAGS, EXPAT_LIBS override).  Without expat.h (Debian
+# libexpat1-dev) the core still builds.
+ifndef EXPAT_LIBS
+  ifeq ($(shell pkg-config --exists expat 2>/dev/null && echo yes),yes)
+    EXPAT_CFLAGS := $(shell pkg-config --cflags expat)
+    EXPAT_LIBS := $(shell pkg-config --libs expat)
+  else
+    EXPAT_LIBS := -lexpat
+  endif
+endif
+HAVE_EXPAT := $(shell printf '\043include <expat.h>\n' | $(CC) $(EXPAT_CFLAGS) -E - >/dev/null 2>&1 && echo yes)
 ifeq ($(HAVE_EXPAT),yes)
   ALL_MODULES = $(MODULE) $(DOC_MODULE)
 else
@@ -57,14 +101,14 @@ endif
 LIBDIR = $(PREFIX)/lib/lua/$(LUA_ABI)
 SHAREDIR = $(PREFIX)/share/lua/$(LUA_ABI)
 
-.PHONY: all lib check-layers test deps demo bench bench-icount bench-latency install uninstall clean
+.PHONY: all lib check-layers test deps demo bench bench-icount bench-latency install uninstall clean rock
 
 all: $(ALL_MODULES)
 
 .PHONY: no-expat
 no-expat:
 	@echo "make: expat.h not found: arclen.svg (SVG documents) is not built;" \
-	  "install Debian libexpat1-dev (sh tools/deps.sh)" >&2
+	  "install expat's headers (sh tools/deps.sh says how) or set EXPAT_CFLAGS, EXPAT_LIBS" >&2
 
 lib: $(BUILD)/libarclen.a
 
@@ -72,13 +116,16 @@ lib: $(BUILD)/libarclen.a
 check-layers: $(CORE_OBJ) $(DOC_OBJ)
 	python3 tools/check_layers.py $(BUILD)/core
 
+# The document reader's files see expat's header (XFLAGS: per target).
+$(DOC_OBJ) $(OUT)/lua/svgdoc.o: XFLAGS = $(EXPAT_CFLAGS)
+
 $(BUILD)/core/%.o: src/%.c $(HEADERS)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(CORE_FLAGS) -Isrc -c $< -o $@
+	$(CC) $(CFLAGS) $(CORE_FLAGS) $(XFLAGS) -Isrc -c $< -o $@
 
 $(OUT)/%.o: src/%.c $(HEADERS)
 	@mkdir -p $(dir $@)
-	$(CC) $(CFLAGS) $(CORE_FLAGS) -Isrc -I$(LUA_INC) -c $< -o $@
+	$(CC) $(CFLAGS) $(CORE_FLAGS) $(XFLAGS) -Isrc -I$(LUA_INC) -c $< -o $@
 
 $(BUILD)/libarclen.a: $(CORE_OBJ)
 	rm -f $@
@@ -86,11 +133,11 @@ $(BUILD)/libarclen.a: $(CORE_OBJ)
 
 $(MODULE): $(CORE_OBJ) $(BIND_OBJ)
 	@mkdir -p $(dir $@)
-	$(CC) -shared -o $@ $^ -lm
+	$(CC) $(MODULE_LDFLAGS) -o $@ $^ -lm
 
 $(DOC_MODULE): $(OUT)/lua/svgdoc.o $(OUT)/lua/subpaths.o $(DOC_OBJ) $(BUILD)/libarclen.a
 	@mkdir -p $(dir $@)
-	$(CC) -shared -o $@ $^ -lexpat -lm
+	$(CC) $(MODULE_LDFLAGS) -o $@ $^ $(EXPAT_LIBS) -lm
 
 # The test command builds the module for every Lua on the machine (5.4 and,
 # where installed, 5.1, 5.2, 5.3 -- also LuaTeX's texlua -- and LuaJIT).
@@ -103,6 +150,11 @@ test:
 
 deps:
 	@sh tools/deps.sh base
+
+# The core rock and the SVG reader's rock, packed by `luarocks pack` from a
+# source archive of the work tree (doc/testing.md, "LuaRocks").
+rock:
+	sh tools/pack-rock.sh $(BUILD)/rock
 
 demo: $(MODULE)
 	LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) lua/arclen/cli.lua henkel
@@ -192,7 +244,7 @@ bench-paths: $(MODULE)
 # The floor: the binding with no lengths measured (bench/bench_scale_floor.c).
 FLOOR = $(OUT)/bench_scale_floor.so
 $(FLOOR): bench/bench_scale_floor.c src/lua/batch.c $(HEADERS) $(BIND_OBJ) $(BUILD)/libarclen.a
-	$(CC) $(CFLAGS) $(CORE_FLAGS) -Isrc -I$(LUA_INC) -shared -o $@ $< \
+	$(CC) $(CFLAGS) $(CORE_FLAGS) -Isrc -I$(LUA_INC) $(MODULE_LDFLAGS) -o $@ $< \
 	  $(filter-out %/batch.o,$(BIND_OBJ)) $(BUILD)/libarclen.a -lm
 
 bench-scale: $(MODULE) $(BUILD)/libarclen.a $(FLOOR)

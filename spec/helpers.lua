@@ -116,4 +116,14 @@ function helpers.rng(seed)
   end
 end
 
+-- An optional part (the SVG document reader): the module, or a stand-in
+-- whose every field raises the message require gave, so that a file of
+-- specs loads without it and only the specs that use it fail (those are
+-- tagged #svgdoc; tools/check-rock.sh leaves them out on the core rock).
+function helpers.optional(name)
+  local ok, m = pcall(require, name)
+  if ok then return m end
+  return setmetatable({}, {__index = function() error(m, 2) end})
+end
+
 return helpers

@@ -6,7 +6,7 @@
 -- (as hostile_spec does for path data): every mutant is read to a result
 -- with finite lengths or to such an error, within a time limit
 -- (ARCLEN_TIME_SCALE stretches it for valgrind and sanitizer runs).
-local svg = require("arclen.svg")
+local svg = require("helpers").optional("arclen.svg")   -- #svgdoc specs need it
 
 local TIME_SCALE = tonumber(os.getenv("ARCLEN_TIME_SCALE")) or 1
 local H = '<svg xmlns="http://www.w3.org/2000/svg" xmlns:xlink="http://www.w3.org/1999/xlink" viewBox="0 0 10 10">'
@@ -19,7 +19,7 @@ local function err_of(text, name, opts)
   return e
 end
 
-describe("arclen.svg: bad documents, each a clear error naming the file and place", function()
+describe("arclen.svg: bad documents, each a clear error naming the file and place #svgdoc", function()
   local cases = {
     {"malformed XML (line and column from expat)", "<svg xmlns='http://www.w3.org/2000/svg'>\n  <path d='M0 0'>\n</svg>",
      "^bad%.svg:3:3: malformed XML: mismatched tag$"},
@@ -102,7 +102,7 @@ describe("arclen.svg: bad documents, each a clear error naming the file and plac
   end)
 end)
 
-describe("arclen.svg: seeded random mutations of the real documents", function()
+describe("arclen.svg: seeded random mutations of the real documents #svgdoc", function()
   local files = {}
   for _, row in ipairs(require("helpers").tsv("svg/SOURCES.tsv")) do files[#files + 1] = row.file end
   local texts = {}
@@ -173,7 +173,7 @@ end)
 
 -- The C reader's own module is private (arclen.svg is its user), but its
 -- misuse is still a named argument error, never a crash.
-describe("arclen.svgdoc (the reader arclen.svg drives)", function()
+describe("arclen.svgdoc (the reader arclen.svg drives) #svgdoc", function()
   local svgdoc = require("arclen.svgdoc")
   it("names the bad argument of new, feed and finish", function()
     assert.matches("bad argument #1 to '[^']*' %(table expected", select(2, pcall(svgdoc.new, "x")))

@@ -9,7 +9,7 @@
 -- length within 2 pi times that (README, "Paths"): |L - ref| <= tol * ref +
 -- 2 pi arc_tol arcscale, arcscale from the reference file.
 local arclen = require("arclen")
-local svg = require("arclen.svg")
+local svg = require("helpers").optional("arclen.svg")   -- #svgdoc specs need it
 local helpers = require("helpers")
 
 local DIR = "spec/data/svg/"
@@ -35,7 +35,7 @@ local function close(a, b, rel, what)
     what or "value", a, b, err / math.abs(b), rel))
 end
 
-describe("arclen.svg: documents against the mpmath reference", function()
+describe("arclen.svg: documents against the mpmath reference #svgdoc", function()
   local rows = helpers.tsv("svg_refs.tsv")
   it("has the real and the hand-written files", function()
     local real, seen = 0, {}
@@ -68,7 +68,7 @@ describe("arclen.svg: documents against the mpmath reference", function()
   end
 end)
 
-describe("arclen.svg: shapes (SVG 2 chapter 10)", function()
+describe("arclen.svg: shapes (SVG 2 chapter 10) #svgdoc", function()
   local doc = svg.read(DIR .. "hand/shapes.svg")
   local e = by_id(doc)
   local tol = 1e-12
@@ -125,7 +125,7 @@ describe("arclen.svg: shapes (SVG 2 chapter 10)", function()
   end)
 end)
 
-describe("arclen.svg: transforms (SVG 1.1 section 7.6)", function()
+describe("arclen.svg: transforms (SVG 1.1 section 7.6) #svgdoc", function()
   local doc = svg.read(DIR .. "hand/transforms.svg")
   local e = by_id(doc)
   local path = arclen.path
@@ -174,7 +174,7 @@ describe("arclen.svg: transforms (SVG 1.1 section 7.6)", function()
   end)
 end)
 
-describe("arclen.svg: viewports and units", function()
+describe("arclen.svg: viewports and units #svgdoc", function()
   local function total(f, u) return svg.read(DIR .. f, {units = u}).total end
   it("lengths with units inside the document are user units (96 px per inch)", function()
     local e = by_id(svg.read(DIR .. "hand/units.svg"))
@@ -215,7 +215,7 @@ describe("arclen.svg: viewports and units", function()
   end)
 end)
 
-describe("arclen.svg: <use>, defs and the non-rendered containers", function()
+describe("arclen.svg: <use>, defs and the non-rendered containers #svgdoc", function()
   local doc = svg.read(DIR .. "hand/use.svg")
   it("draws uses in document order, forward references too; nothing of defs, clipPath, mask, marker, pattern", function()
     assert.are.same({"tick", "tick", "tick", "rect", "rect", "circle", "later-c", "ellipse",
@@ -250,7 +250,7 @@ describe("arclen.svg: <use>, defs and the non-rendered containers", function()
   end)
 end)
 
-describe("arclen.svg: display, visibility, stroke, layers", function()
+describe("arclen.svg: display, visibility, stroke, layers #svgdoc", function()
   local path = DIR .. "hand/display.svg"
   it("display:none (attribute, style, ancestors) and visibility:hidden are not drawn", function()
     assert.are.same({"shown", "visible-child", "unstroked", "unstroked-style", "restroked", "sub",
@@ -303,7 +303,7 @@ describe("arclen.path.svg(d, {transform = ...})", function()
                      10 - 6 + 10, 2.5 + 18 + 20, 14 - 8 + 10, 3.5 + 24 + 20}, p:segment(1))
     assert.are.same({1, 2, 3, 4, 5, 6, 7, 8}, path.svg("M1 2 C3 4 5 6 7 8"):segment(1))
   end)
-  it("an arc keeps its tolerance relative to the size of its image", function()
+  it("an arc keeps its tolerance relative to the size of its image #svgdoc", function()
     local d = "M10 0 A10 10 0 1 1 -10 0"
     local n0 = path.svg(d):segments()
     local n1 = path.svg(d, {transform = {1, 0, 0, 1e-3, 0, 0}}):segments()

@@ -12,7 +12,7 @@
 
 #include <stddef.h>
 
-#define ARCLEN_VERSION "arclen 0.1.0"
+#define ARCLEN_VERSION "arclen 1.0.0"
 
 /* Tolerance range accepted by every error-controlled method. */
 #define ARCLEN_RTOL_MIN 1e-15

@@ -132,7 +132,7 @@ local function g17(x) return ("%.17g"):format(x) end
 local function json_lib()
   local ok, dk = pcall(require, "dkjson")
   if not ok then
-    fail("--json needs dkjson: install the Debian package lua-dkjson or the rock dkjson")
+    fail("--json needs dkjson: luarocks install dkjson (Debian: apt-get install lua-dkjson)")
   end
   return dk
 end
@@ -181,11 +181,17 @@ end
 
 local UNIT_NAMES = "user, px, mm, cm, in, pt, pc"
 
+-- arclen.svg, or a failure that says what to install (the document reader
+-- is an optional part: the rock arclen-svg, or make with expat's headers).
+local function svg_lib()
+  return call(1, require, "arclen.svg")
+end
+
 -- The reader's options from the command line's.
 local function svg_opts(opts)
   local o = method_opts(opts)
   if opts.units then
-    if opts.units ~= "user" and not require("arclen.svg").UNITS[opts.units] then
+    if opts.units ~= "user" and not svg_lib().UNITS[opts.units] then
       fail(("--units: unknown unit '%s' (%s)"):format(opts.units, UNIT_NAMES), 2)
     end
     o.units = opts.units
@@ -198,7 +204,7 @@ end
 -- Read an SVG document (a file name, or text from stdin): the doc; its
 -- warnings go to stderr.
 local function read_svg(name, text, opts)
-  local svg = require("arclen.svg")
+  local svg = svg_lib()
   local o = svg_opts(opts)
   local ok, doc
   if text then ok, doc = pcall(svg.parse, text, o, name)
@@ -352,7 +358,7 @@ local function stat_lines(name, st, units)
 end
 
 function commands.stat(opts, args)
-  local svg = require("arclen.svg")
+  local svg = svg_lib()
   if #args < 2 then fail("stat: no file (one or more SVG files)", 2) end
   local files, all = {}, {length = 0, travel = 0, paths = 0, elements = 0, segments = 0}
   local units

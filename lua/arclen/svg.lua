@@ -23,6 +23,16 @@
 local path = require("arclen.path")
 local core = require("arclen.core")
 
+-- The reader is an optional part (it links libexpat; the core does not):
+-- without it this module does not load, and says what to install.
+local has_reader, svgdoc = pcall(require, "arclen.svgdoc")
+if not has_reader then
+  error("arclen.svg needs its document reader, the C module arclen.svgdoc over libexpat: "
+    .. "install the rock arclen-svg (luarocks install arclen-svg), or expat's headers "
+    .. "(Debian libexpat1-dev, Homebrew expat; sh tools/deps.sh) and make again ["
+    .. tostring(svgdoc):match("^[^\n]*"):gsub(":$", "") .. "]", 0)
+end
+
 local M = {}
 
 local format, find, sub, floor, huge = string.format, string.find,
@@ -60,11 +70,6 @@ end
 -- Read the document from next_chunk() (nil at the end): the C reader's
 -- results, each drawn element with its arclen.path.
 local function run(o, name, next_chunk, uses)
-  local ok, svgdoc = pcall(require, "arclen.svgdoc")
-  if not ok then
-    error("arclen.svg needs its document reader, the module arclen.svgdoc "
-      .. "(built with libexpat: Debian libexpat1-dev): " .. tostring(svgdoc), 0)
-  end
   local r = svgdoc.new({arc_tol = o.arc_tol or o.tol, hidden = o.hidden,
     stroked = o.stroked, max_depth = o.max_depth or MAX_DEPTH, uses = uses,
     unit_px = o.units ~= "user" and UNITS[o.units] or 0})
