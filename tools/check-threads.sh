@@ -5,7 +5,8 @@
 # where expat's header is found, the SVG document reader's) are compiled
 # with -fsanitize=thread in build/tsan/CC/ (the normal build is untouched).
 # Any TSan report ends the run (halt_on_error, exit code 66) and counts as
-# a failure.  Ends with "N passed, N failed".
+# a failure; so does an object file with writable data (global state).
+# Ends with "N passed, N failed".
 #   CC=gcc sh tools/check-threads.sh      (default clang, else gcc)
 #   THREADS=8 ROUNDS=6 sh tools/check-threads.sh   (default 6 threads, 4 rounds)
 cd "$(dirname "$0")/.." || exit 2
@@ -47,6 +48,17 @@ if ! $CC -O1 -g $TSAN $WARN -Werror $DOC_FLAGS -Isrc -o "$OUT/threads" spec/c/th
   cat "$OUT/build.log"
   fail "spec/c/threads.c did not build"
 fi
+# No global state: no object of the core or the reader has writable data
+# (.data, .bss or thread-local sections; .data.rel.ro is constant after
+# loading).  One check per object.
+OBJ_OK=0 OBJ_BAD=0
+for o in "$OUT"/core/*/*.o; do
+  w=$(objdump -h "$o" | awk '$2 ~ /^\.(data|bss|tdata|tbss)/ && $2 !~ /rel\.ro/ && $3 !~ /^0+$/ {print $2}')
+  if [ -z "$w" ]; then OBJ_OK=$((OBJ_OK + 1)); else
+    echo "check-threads: $o has writable data: $w"
+    OBJ_BAD=$((OBJ_BAD + 1))
+  fi
+done
 start=$(date +%s)
 # shellcheck disable=SC2086
 # history_size=7: the longest history (4M accesses a thread), so that an
@@ -63,4 +75,8 @@ if grep -q 'ThreadSanitizer' "$LOG" || [ "$rc" -eq 66 ]; then
   fail "a ThreadSanitizer report (exit $rc), after ${P:-0} passed"
 fi
 [ -n "$line" ] || fail "no count printed (exit $rc)"
-[ "$rc" -eq 0 ]
+P=$(echo "$line" | cut -d' ' -f1)
+F=$(echo "$line" | cut -d' ' -f3)
+echo "check-threads: $OBJ_OK objects without writable data, $OBJ_BAD with"
+echo "$((P + OBJ_OK)) passed, $((F + OBJ_BAD)) failed"
+[ "$rc" -eq 0 ] && [ "$OBJ_BAD" -eq 0 ]
