@@ -47,7 +47,7 @@ typedef struct sink {
 } sink;
 
 static void put(sink *s, const void *p, size_t n) {
-  if (s->full) return;
+  if (s->full || n == 0) return;   /* (p may be NULL when n is 0) */
   if (s->n + n > s->room) {
     size_t room = s->room ? s->room : 4096;
     unsigned char *b;
@@ -84,7 +84,8 @@ static void put_info(sink *s, const arclen_info *in) {
 
 /* ---- the curves --------------------------------------------------------- */
 
-/* Henkel's arc, a cusp, a loop, near-lines, a point, tiny and huge scales. */
+/* The README's curve, a cusp, a loop, near-lines, lines that turn back, a
+** point, tiny and huge scales, a near-cusp. */
 static const double CURVES2[][8] = {
   {0, 0, 10, 0, 10, 10, 0, 0},
   {0, 0, 10, 10, 0, 10, 10, 0},
@@ -111,7 +112,8 @@ static const double CURVES3[][12] = {
 static const double TOLS[] = {1e-15, 1e-12, 1e-9, 1e-6, 1e-3, 0.1};
 #define NTOLS (sizeof TOLS / sizeof TOLS[0])
 
-/* SplitMix64 (Steele, Lea, Flood 2014): the same curves on any host. */
+/* SplitMix64 (Steele, Lea and Flood 2014, Vigna's constants): the same
+** curves on any host, and no rand(). */
 static double uniform(unsigned long long *state) {
   unsigned long long z = (*state += 0x9e3779b97f4a7c15ULL);
   z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
@@ -139,7 +141,7 @@ static void job_gauss(sink *s) {
       double L = dim == 2 ? arclen_length(c, TOLS[k]) : arclen_length3(c, TOLS[k]);
       arclen_opts o;
       arclen_info in;
-      double v;
+      double v = 0;
       put_d(s, L);
       put_d(s, dim == 2 ? arclen_length_range(c, 0.2, 0.9, TOLS[k])
                         : arclen_length3_range(c, 0.2, 0.9, TOLS[k]));
@@ -176,6 +178,9 @@ static void job_times(sink *s) {
     const double *c = i < NCURVES2 ? CURVES2[i] : CURVES3[i - NCURVES2];
     double L = dim == 2 ? arclen_length(c, 1e-12) : arclen_length3(c, 1e-12);
     for (k = 0; k < 50; k++) d[k] = L * (k - 2) / 45;   /* from below 0 to beyond L */
+    memset(t, 0, sizeof t);
+    memset(pts, 0, sizeof pts);
+    memset(tan, 0, sizeof tan);
     put_l(s, arclen_times(c, dim, d, 50, 1e-12, t, pts, tan));
     put_ds(s, t, 50);
     put_ds(s, pts, 50 * (size_t)dim);
@@ -185,7 +190,7 @@ static void job_times(sink *s) {
   }
 }
 
-/* Many curves at once, by the default method and the elliptic one. */
+/* Many curves at once, by the default method, the elliptic one and MetaPost's. */
 static void job_batch(sink *s) {
   static const char *const names[] = {"gauss", "elliptic", "metapost"};
   double *c = malloc(4 * 3 * NRANDOM * sizeof *c);
@@ -200,7 +205,7 @@ static void job_batch(sink *s) {
     for (m = 0; m < 3; m++)
       for (k = 0; k < 3; k++) {
         arclen_opts o;
-        long failed;
+        long failed = -2;
         arclen_opts_init(&o);
         o.rtol = TOLS[2 * k];
         put_l(s, arclen_lengths(c, NRANDOM, dim, arclen_find_method(names[m]),
@@ -223,7 +228,7 @@ static void job_elliptic(sink *s) {
     for (r = 0; r < sizeof RANGES / sizeof RANGES[0]; r++) {
       arclen_opts o;
       arclen_info in;
-      double v;
+      double v = 0;
       arclen_opts_init(&o);
       o.t0 = RANGES[r][0];
       o.t1 = RANGES[r][1];
@@ -257,7 +262,7 @@ static void job_metapost(sink *s) {
     const double *c = CURVES2[i];
     arclen_info in;
     arclen_opts o;
-    double L, t;
+    double L = 0, t = 0;
     arclen_info_init(&in);
     put_l(s, arclen_mp_arclength(c, &L, &in));
     put_d(s, L);
@@ -290,7 +295,7 @@ static void job_metapost(sink *s) {
     }
   }
   for (cyc = 0; cyc <= 1; cyc++) {
-    double L, t;
+    double L = 0, t = 0;
     arclen_info in;
     if (cyc) {
       seg[30] = seg[0];
@@ -319,7 +324,7 @@ static void job_methods(sink *s) {
       const double *c = i < NCURVES2 ? CURVES2[i] : CURVES3[i - NCURVES2];
       arclen_opts o;
       arclen_info in;
-      double v;
+      double v = 0;
       arclen_opts_init(&o);
       o.rtol = 1e-8;
       o.steps = 2000;
@@ -351,7 +356,7 @@ static void job_fit(sink *s) {
     for (method = ARCLEN_FIT_HERMITE; method <= ARCLEN_FIT_PAPER; method++) {
       arclen_fit_opts o;
       arclen_fit f;
-      double mx, mean, arg;
+      double mx = 0, mean = 0, arg = 0;
       int rc;
       arclen_fit_opts_init(&o);
       o.method = method;
@@ -393,9 +398,9 @@ static void job_conic(sink *s) {
     {1, 0, 1, 1, 0, 1}, {0, 0, 5, 8, 10, 0}, {-3, 1, 0, 1e-3, 3, 1},
     {0, 0, 1, 1, 2, 2}};
   static const double W[] = {1e-6, 0.3, 0.7071067811865476, 1, 1.5, 40};
-  double out[8 << 6], c[28], v, A, B;
+  double out[8 << 6], c[28], v = 0, A = 0, B = 0;
   size_t p, w;
-  int sc, lev, n;
+  int sc, lev = 0, n = 0;
   for (sc = 0; sc < ARCLEN_CONIC_NSCHEMES; sc++) {
     put_s(s, arclen_conic_scheme_name(sc));
     put_l(s, arclen_conic_scheme(arclen_conic_scheme_name(sc)));
@@ -439,10 +444,12 @@ static void job_conic(sink *s) {
     }
   put_l(s, arclen_conic_normal_weight(0.5, 2, 3, &v));
   put_d(s, v);
+  memset(c, 0, sizeof c);
   n = arclen_ellipse_conics(1, 2, 3, 1, 0.3, 0.1, -5.5, c);
   put_l(s, n);
   put_ds(s, c, 28);
   for (sc = 0; sc < 8; sc++) {
+    memset(c, 0, sizeof c);
     put_l(s, arclen_svg_arc_center(0, 0, 5, 3, 30 * sc, sc & 1, (sc >> 1) & 1,
                                    7, 2, c));
     put_ds(s, c, 7);
@@ -460,8 +467,8 @@ static void job_roots(sink *s) {
     {1, -10, 35, -50, 24}, {1, 0, -5, 0, 4}, {5e-324, 0, -5, 0, 4},
     {1, 4, 6, 4, 1}, {1e-10, 1, 1e10, 1, 1e-10}, {1, 0, 0, 0, -1},
     {3, -2, 1e-20, 7, 1e300}};
-  double re[4], im[4], q[4], x[ARCLEN_GL_MAXN], w[ARCLEN_GL_MAXN];
-  double p[3], l[12], r[12], a2[3], a1[3], a0[3];
+  double re[4], im[4], q[4] = {0, 0, 0, 0}, x[ARCLEN_GL_MAXN], w[ARCLEN_GL_MAXN];
+  double p[3] = {0, 0, 0}, l[12], r[12], a2[3], a1[3], a0[3];
   size_t i;
   int k, n;
   for (i = 0; i < sizeof Q / sizeof Q[0]; i++) {
