@@ -769,7 +769,11 @@ static int build_shared(void) {
 static void free_shared(void) {
   arclen_pathdata_free(&shared_pd);
 #if defined(THREADS_SVGDOC)
-  svgdoc_free(shared_doc);
+  {
+    size_t i;
+    svgdoc_free(shared_doc);
+    for (i = NDOCS; i < ndocs; i++) free((char *)docs[i].s);   /* the files */
+  }
 #endif
 }
 
