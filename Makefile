@@ -259,3 +259,13 @@ bench-scale: $(MODULE) $(BUILD)/libarclen.a $(FLOOR)
 luatex:
 	$(MAKE) LUA=5.3
 	sh tools/check-luatex.sh
+
+# ---- thread safety -----------------------------------------------------
+#   make check-threads   spec/c/threads.c: every family of the C API (and the
+#                        SVG document reader, with expat) from 6 threads at
+#                        once, each result bit for bit as on one thread,
+#                        under ThreadSanitizer (tools/check-threads.sh; the
+#                        core compiled anew in build/tsan/; clang, or CC=gcc)
+.PHONY: check-threads
+check-threads:
+	sh tools/check-threads.sh

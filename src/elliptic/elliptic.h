@@ -1,7 +1,10 @@
 /*
-** elliptic.h -- internals shared by elliptic.c (dispatch, closed forms,
-** Carlson's [1,1,1,1]) and elliptic_far.c (series for far roots).
-** Not part of the public API.
+** elliptic.h -- what the files of elliptic/ share, and the one place that
+** defines ELL_RHO, ELL_NMAX and ell_hypot.  The calls run one way:
+** elliptic.c (the method, 2D) -> elliptic3d.c (3D) -> product.c (the
+** integral by branch) -> elliptic_far.c (far-root series, J0, J1) and
+** carlson.c (R-functions); no file calls back up the chain (make
+** check-layers).  Not part of the public API.
 **
 ** Every integral here is I = int_y^x |t - s1| |t - s2| dt, y < x, with the
 ** roots s_k = a_k + i b_k (b_k >= 0) of the complex hodograph (2D) or of
@@ -37,7 +40,7 @@ double arclen_ell_series_one(double an, double bn, double af, double bf,
 double arclen_ell_series_both(double a1, double b1, double a2, double b2,
                               double y, double x);
 /* I = int_y^x |t - s1||t - s2| dt by the branch that suits the roots
-** (elliptic.c); *branch names it, *calls counts R-function calls. */
+** (product.c); *branch names it, *calls counts R-function calls. */
 double arclen_ell_product(double a1, double b1, double a2, double b2,
                           double y, double x, const char **branch,
                           long *calls);
@@ -46,7 +49,8 @@ double arclen_ell_product(double a1, double b1, double a2, double b2,
 int arclen_ell_length3d(const double a2[3], const double a1[3],
                         const double a0[3], double y, double x,
                         const char **branch, long *calls, double *len);
-/* int_y^x |t - s| dt, s = a + ib (one factor; a series when s is far). */
+/* int_y^x |t - s| dt, s = a + ib (one factor; a series when s is far;
+** elliptic_far.c, as the two below). */
 double arclen_ell_single(double a, double b, double y, double x);
 /* int_v^w sqrt(u^2 + b^2) du and int_v^w u sqrt(u^2 + b^2) du. */
 double arclen_ell_j0(double v, double w, double b);

@@ -5,7 +5,7 @@
 ** c4 |t - s1|^2 |t - s2|^2 by its roots in the upper half plane
 ** (roots/roots3d.c, which keeps their imaginary parts to full accuracy near
 ** a cusp), and the length is then sqrt(c4) int |t - s1||t - s2| dt, the
-** same integral as in the plane (elliptic.c).
+** same integral as in the plane (product.c).
 */
 #include <math.h>
 

@@ -4,7 +4,6 @@
 ** by one multiplication or division (Clinger's fast path), the rest by
 ** strtod on a terminated copy.
 */
-#include <ctype.h>
 #include <math.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -102,7 +101,10 @@ size_t arclen_decimal_scan(const char *s, size_t n, size_t i, double *v) {
   return *v > -HUGE_VAL && *v < HUGE_VAL ? e : i;
 }
 
-static int is_space(unsigned char c) { return isspace(c) != 0; }
+/* C's isspace in the C locale, whatever LC_CTYPE the host sets. */
+static int is_space(unsigned char c) {
+  return c == ' ' || (c >= '\t' && c <= '\r');   /* \t \n \v \f \r */
+}
 
 size_t arclen_decimal_list_start(const char *s, size_t n) {
   size_t i = 0;

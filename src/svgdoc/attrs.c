@@ -5,7 +5,6 @@
 ** and the four properties it reads from style="" or the presentation
 ** attributes (SVG 2 section 6.6).
 */
-#include <ctype.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -15,7 +14,19 @@
 
 #define FONT_SIZE 16.0   /* em (CSS "medium"); ex is half of it */
 
-int svgdoc_space(unsigned char c) { return isspace(c) != 0; }
+/* The C locale's character classes, whatever LC_CTYPE the host sets:
+** tolower('I') is 'I' under tr_TR.UTF-8 (0xFD under tr_TR.ISO-8859-9), so
+** "1IN" would be an unknown unit, and 8-bit locales make bytes above 127
+** letters. */
+int svgdoc_space(unsigned char c) {
+  return c == ' ' || (c >= '\t' && c <= '\r');   /* \t \n \v \f \r */
+}
+static int is_letter(unsigned char c) {
+  return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
+}
+static unsigned char lower(unsigned char c) {
+  return c >= 'A' && c <= 'Z' ? (unsigned char)(c - 'A' + 'a') : c;
+}
 #define space svgdoc_space
 
 const char *svgdoc_attr(const char **atts, const char *name) {
@@ -58,7 +69,7 @@ static int unit_of(const char *u, size_t n) {
   size_t i;
   for (k = 0; k < (int)(sizeof UNITS / sizeof UNITS[0]); k++) {
     if (strlen(UNITS[k].name) != n) continue;
-    for (i = 0; i < n && tolower((unsigned char)u[i]) == UNITS[k].name[i]; i++) {}
+    for (i = 0; i < n && lower((unsigned char)u[i]) == UNITS[k].name[i]; i++) {}
     if (i == n) return k;
   }
   return -1;
@@ -74,7 +85,7 @@ double svgdoc_length(svgdoc *D, unsigned long line, unsigned long col,
   if (i == n) i = 0;
   e = i < n ? arclen_decimal_scan(s, n, i, &v) : i;
   if (e == i) goto bad;
-  for (u = e; u < n && isalpha((unsigned char)s[u]); u++) {}
+  for (u = e; u < n && is_letter((unsigned char)s[u]); u++) {}
   if (u < n && s[u] == '%') u++;
   for (i = u; i < n && space((unsigned char)s[i]); i++) {}
   if (i < n) goto bad;
@@ -92,7 +103,7 @@ double svgdoc_length(svgdoc *D, unsigned long line, unsigned long col,
   }
   {
     char *unit = svgdoc_strdup(D, s + e, u - e);
-    for (i = 0; unit[i]; i++) unit[i] = (char)tolower((unsigned char)unit[i]);
+    for (i = 0; unit[i]; i++) unit[i] = (char)lower((unsigned char)unit[i]);
     svgdoc_fail(D, line, col, "%s='%s': unknown unit '%s'", what, s, unit);
   }
 bad:
@@ -195,7 +206,7 @@ void svgdoc_transform(svgdoc *D, unsigned long line, unsigned long col,
     int f, na = 0, comma, ok;
     double a[7];
     svgdoc_matrix R;
-    while (e < n && isalpha((unsigned char)s[e])) e++;
+    while (e < n && is_letter((unsigned char)s[e])) e++;
     if (e == i) { why = "a transform function expected"; goto bad; }
     len = e - i;
     for (f = 0; f < 6; f++)
@@ -367,7 +378,9 @@ static const char *const PROPS[SVGDOC_NPROPS] = {"display", "visibility",
                                                  "stroke", "stroke-width"};
 
 /* May byte c precede a property's name?  (The name must be whole.) */
-static int name_byte(unsigned char c) { return isalnum(c) || c == '-'; }
+static int name_byte(unsigned char c) {
+  return is_letter(c) || (c >= '0' && c <= '9') || c == '-';
+}
 
 /* Trimmed and lower-cased s[0 .. n-1] into b. */
 static const char *normalised(svgdoc *D, svgdoc_buffer *b, const char *s,
@@ -376,7 +389,7 @@ static const char *normalised(svgdoc *D, svgdoc_buffer *b, const char *s,
   while (n > 0 && space((unsigned char)*s)) s++, n--;
   while (n > 0 && space((unsigned char)s[n - 1])) n--;
   svgdoc_reserve(D, b, n + 1);
-  for (i = 0; i < n; i++) b->s[i] = (char)tolower((unsigned char)s[i]);
+  for (i = 0; i < n; i++) b->s[i] = (char)lower((unsigned char)s[i]);
   b->s[n] = '\0';
   return b->s;
 }

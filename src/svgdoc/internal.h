@@ -112,8 +112,8 @@ void svgdoc_append(svgdoc *D, svgdoc_buffer *b, const char *s, size_t n);
 /* The value of attribute name among expat's name/value pairs, or NULL. */
 const char *svgdoc_attr(const char **atts, const char *name);
 
-/* Is s empty or only whitespace?  (Whitespace is C's isspace, as Lua's
-** %s and the number scanner of svg/decimal.c take it.) */
+/* Is s empty or only whitespace?  (Whitespace is C's isspace in the C
+** locale, as Lua's %s and the number scanner of svg/decimal.c take it.) */
 int svgdoc_blank(const char *s);
 int svgdoc_space(unsigned char c);
 
