@@ -118,6 +118,7 @@ build = {
     ["arclen.luatex"] = "lua/arclen/luatex.lua",
     ["arclen.mplib"] = "lua/arclen/mplib.lua",
     ["arclen.mpost"] = "lua/arclen/mpost.lua",
+    ["arclen.numtext"] = "lua/arclen/numtext.lua",
     ["arclen.path"] = "lua/arclen/path.lua",
     ["arclen.repro.conicplot"] = "lua/arclen/repro/conicplot.lua",
     ["arclen.repro.fitstats"] = "lua/arclen/repro/fitstats.lua",
