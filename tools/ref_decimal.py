@@ -12,7 +12,7 @@ Every value is found twice, independently, and the two must agree:
 decimal_hard.tsv: the hard cases -- halfway points between neighbouring
 doubles written out exactly (normal and subnormal, up to 767 significant
 digits), one digit past them (just above and just below, also beyond the
-800 digits the parser keeps), long mantissas (hundreds of digits), the
+800 digits the parser keeps; integer ones plus and minus 1), long mantissas (hundreds of digits), the
 smallest subnormal, the largest subnormal, the smallest normal, the largest
 double and the points just past them (overflow -> inf, underflow -> 0),
 powers of ten across the range, and the grammar's forms (.5e+2, 5., +1).
@@ -123,6 +123,12 @@ def halfway_cases(rng, out):
         out.append(row("halfway+", digits + "1e" + str(ex - 1)))
         short = str(int(digits) - 1) + "9"
         out.append(row("halfway-", short + "e" + str(ex - 1)))
+        # an integer halfway point (doubles from 2^54 up) plus or minus 1:
+        # the difference sits in the lowest bits of a long integer
+        if h.denominator == 1:
+            out.append(row("halfway+1", str(h.numerator + 1)))
+            out.append(row("halfway-1", str(h.numerator - 1)))
+            out.append(row("halfway+1", str(h.numerator * 10 + 1) + "e-1"))
         # past it beyond the 800 digits the parser keeps
         pad = 820 - len(digits)
         if pad > 0:
