@@ -51,6 +51,8 @@ build = {
         "src/roots/roots.c",
         "src/roots/roots3d.c",
         "src/svg/decimal.c",
+        "src/svg/decimal_exact.c",
+        "src/svg/decimal_print.c",
         "src/svg/pathdata.c",
         "src/svg/pathdata_message.c",
       },

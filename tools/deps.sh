@@ -8,8 +8,10 @@
 #           texlive-luatex, lualatex from texlive-latex-base, MetaPost's
 #           plain.mp from texlive-metapost), LuaRocks, poppler-utils to
 #           render the TeX examples, python3 for the check of the core's
-#           layers (base has libexpat1-dev for the SVG document reader,
-#           arclen.svgdoc, and lua-dkjson for the command line's --json)
+#           layers, locales with de_DE.UTF-8 and tr_TR.UTF-8 made by
+#           localedef for spec/locale_spec.lua and spec/ctype_spec.lua
+#           (base has libexpat1-dev for the SVG document reader,
+#           arclen.svgdoc, and lua-dkjson for --json)
 #   refs    regenerate spec/data (python3-mpmath, real MetaPost;
 #           python3-svgelements: tools/ref_svg.py's second opinion)
 # Without dpkg and apt-get (macOS, Alpine, Fedora, Arch, FreeBSD, MSYS2) it
@@ -74,7 +76,7 @@ other_system() {
   return 0
 }
 BASE="gcc make libc6-dev lua5.4 liblua5.4-dev lua-busted libexpat1-dev lua-dkjson"
-MATRIX="lua5.1 liblua5.1-0-dev lua5.2 liblua5.2-dev lua5.3 liblua5.3-dev luajit libluajit-5.1-dev texlive-binaries texlive-base texlive-luatex texlive-latex-base texlive-metapost luarocks poppler-utils python3"
+MATRIX="lua5.1 liblua5.1-0-dev lua5.2 liblua5.2-dev lua5.3 liblua5.3-dev luajit libluajit-5.1-dev texlive-binaries texlive-base texlive-luatex texlive-latex-base texlive-metapost luarocks poppler-utils python3 locales"
 REFS="python3 python3-mpmath python3-svgelements texlive-binaries texlive-base python3-fonttools fonts-urw-base35"
 case "${1:-base}" in
   base) WANT="$BASE" ;;
@@ -95,12 +97,29 @@ MISSING=""
 for p in $WANT; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || MISSING="$MISSING $p"
 done
-[ -z "$MISSING" ] && exit 0
+# The locales the specs run under (after the packages): de_DE.UTF-8, a
+# comma decimal point (spec/locale_spec.lua), and tr_TR.UTF-8, whose
+# tolower('I') is not 'i' (spec/ctype_spec.lua).
+test_locales() {
+  case "${1:-base}" in matrix|all) ;; *) return 0 ;; esac
+  for l in de_DE tr_TR; do
+    locale -a 2>/dev/null | grep -qi "^$l\.utf-\?8\$" && continue
+    if [ "$(id -u)" = 0 ]; then
+      echo "tools/deps.sh: generating the locale $l.UTF-8"
+      localedef -i $l -f UTF-8 $l.UTF-8 || return 1
+    else
+      echo "run as root: localedef -i $l -f UTF-8 $l.UTF-8" >&2
+      return 1
+    fi
+  done
+}
+[ -z "$MISSING" ] && { test_locales "$1"; exit $?; }
 if [ "$(id -u)" = 0 ]; then
   echo "tools/deps.sh: installing$MISSING"
   export DEBIAN_FRONTEND=noninteractive
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends $MISSING >/dev/null
+  test_locales "$1"
 else
   echo "tools/deps.sh: missing Debian packages:$MISSING" >&2
   echo "run as root: apt-get install$MISSING" >&2

@@ -5,6 +5,21 @@
 -- option, missing or malformed arguments).
 local cli = {}
 
+-- Executed as a script, not required: from a clone (lua5.4
+-- lua/arclen/cli.lua), the clone's modules and build come first -- set
+-- before the requires below.
+local as_script = arg and arg[0] and arg[0]:match("cli%.lua$")
+if as_script then
+  local root = (arg[0]:match("^(.*)[/\\][^/\\]*$") or ".") .. "/../.."
+  local version = type(jit) == "table" and "jit" or _VERSION:match("%d+%.%d+")
+  package.path = root .. "/lua/?.lua;" .. root .. "/lua/?/init.lua;" .. package.path
+  package.cpath = root .. "/build/" .. version .. "/?.so;" .. package.cpath
+end
+
+-- Numbers in and out the same in every locale (arclen.numtext).
+local numtext = require("arclen.numtext")
+local tonumber, format = numtext.tonumber, numtext.format
+
 local USAGE = [[
 usage: arclen COMMAND [options] ARGS
 
@@ -121,7 +136,7 @@ local function call(status, f, ...)
   return a, b
 end
 
-local function g17(x) return ("%.17g"):format(x) end
+local g17 = numtext.g17
 
 -- ---- JSON: dkjson (lua-dkjson) --------------------------------------------
 -- dkjson writes numbers with 14 digits, as lua-cjson 2.1 does at most; a
@@ -139,11 +154,7 @@ end
 
 local function shortest(x)
   if x ~= x or x == math.huge or x == -math.huge then return "null" end
-  for p = 15, 17 do
-    local t = ("%." .. p .. "g"):format(x)
-    if tonumber(t) == x then return t end
-  end
-  return g17(x)
+  return numtext.shortest(x)
 end
 
 local NUMBER = {__tojson = function(self) return self[1] end}
@@ -192,7 +203,7 @@ local function svg_opts(opts)
   local o = method_opts(opts)
   if opts.units then
     if opts.units ~= "user" and not svg_lib().UNITS[opts.units] then
-      fail(("--units: unknown unit '%s' (%s)"):format(opts.units, UNIT_NAMES), 2)
+      fail(format("--units: unknown unit '%s' (%s)", opts.units, UNIT_NAMES), 2)
     end
     o.units = opts.units
   end
@@ -238,12 +249,12 @@ local function targets(args, from, opts, what)
   end
   if allnum then
     if #nums ~= 8 and #nums ~= 12 then
-      fail(("%s: a cubic needs 8 (2D) or 12 (3D) numbers, got %d"):format(what, #nums), 2)
+      fail(format("%s: a cubic needs 8 (2D) or 12 (3D) numbers, got %d", what, #nums), 2)
     end
     return {{label = "cubic", path = call(2, arclen.path, {nums}, o)}}, nums
   end
   if #rest > 1 then
-    fail(("%s: expected one path (quote path data), got %d arguments"):format(what, #rest), 2)
+    fail(format("%s: expected one path (quote path data), got %d arguments", what, #rest), 2)
   end
   local a = rest[1]
   local text, source = nil, nil
@@ -272,14 +283,14 @@ end
 
 local function one(list, what)
   if #list ~= 1 then
-    fail(("%s needs one path; the file has %d (extract one, e.g. by its d attribute)"):format(what, #list), 2)
+    fail(format("%s needs one path; the file has %d (extract one, e.g. by its d attribute)", what, #list), 2)
   end
   return list[1].path
 end
 
 local function distance(args, i, what)
   local s = tonumber(args[i] or "")
-  if s == nil then fail(("%s: the distance S must be a number, got '%s'"):format(what, tostring(args[i])), 2) end
+  if s == nil then fail(format("%s: the distance S must be a number, got '%s'", what, tostring(args[i])), 2) end
   return s
 end
 
@@ -317,7 +328,7 @@ function commands.length(opts, args)
     if opts.json then
       print(json({paths = rows, total = doc.total, units = doc.units}))
     else
-      for _, r in ipairs(rows) do print(("%s\t%s"):format(r.id, g17(r.length))) end
+      for _, r in ipairs(rows) do print(format("%s\t%s", r.id, g17(r.length))) end
       print("total\t" .. g17(doc.total))
     end
     return
@@ -341,15 +352,15 @@ local function stat_lines(name, st, units)
   local out = {"== " .. name .. " (units: " .. units .. ")"}
   local function block(title, r, layers)
     out[#out + 1] = title
-    if layers then out[#out + 1] = "  Layer count: " .. layers end
+    if layers then out[#out + 1] = "  Layer count: " .. numtext.tostring(layers) end
     out[#out + 1] = "  Length: " .. g17(r.length)
     out[#out + 1] = "  Pen-up length: " .. g17(r.travel)
-    out[#out + 1] = "  Path count: " .. r.paths
-    out[#out + 1] = "  Element count: " .. r.elements
-    out[#out + 1] = "  Segment count: " .. r.segments
+    out[#out + 1] = "  Path count: " .. numtext.tostring(r.paths)
+    out[#out + 1] = "  Element count: " .. numtext.tostring(r.elements)
+    out[#out + 1] = "  Segment count: " .. numtext.tostring(r.segments)
     out[#out + 1] = "  Mean segment length: " .. (r.segments > 0 and g17(r.length / r.segments) or "n/a")
     local b = r.bbox
-    out[#out + 1] = "  Bounding box: " .. (b and ("(%s, %s, %s, %s)"):format(
+    out[#out + 1] = "  Bounding box: " .. (b and format("(%s, %s, %s, %s)",
       g17(b[1]), g17(b[2]), g17(b[3]), g17(b[4])) or "n/a")
   end
   for _, L in ipairs(st.layers) do block("Layer " .. L.name, L) end
@@ -409,7 +420,7 @@ function commands.point(opts, args)
   if opts.json then
     print(json({x = x, y = y, tx = tx, ty = ty, time = p:time(s)}))
   else
-    print(("%s %s %s %s"):format(g17(x), g17(y), g17(tx), g17(ty)))
+    print(format("%s %s %s %s", g17(x), g17(y), g17(tx), g17(ty)))
   end
 end
 
@@ -433,7 +444,7 @@ function commands.resample(opts, args)
     end
     print(json(out))
   else
-    for _, q in ipairs(pts) do print(("%s %s"):format(g17(q.x), g17(q.y))) end
+    for _, q in ipairs(pts) do print(format("%s %s", g17(q.x), g17(q.y))) end
   end
 end
 
@@ -442,10 +453,10 @@ function commands.fit(opts, args)
   local nums = {}
   for i = 2, #args do
     nums[#nums + 1] = tonumber(args[i])
-    if nums[#nums] == nil then fail(("fit: '%s' is not a number"):format(args[i]), 2) end
+    if nums[#nums] == nil then fail(format("fit: '%s' is not a number", args[i]), 2) end
   end
   if #nums ~= 8 and #nums ~= 12 then
-    fail(("fit: a cubic needs 8 (2D) or 12 (3D) numbers, got %d"):format(#nums), 2)
+    fail(format("fit: a cubic needs 8 (2D) or 12 (3D) numbers, got %d", #nums), 2)
   end
   local o = method_opts(opts)
   if opts.n then
@@ -462,7 +473,7 @@ function commands.fit(opts, args)
     r.span = spans
     print(json(r))
   else
-    print(("method\t%s\nspans\t%d\ntotal\t%s\nmax_error\t%.3g\nmean_error\t%.3g"):format(
+    print(format("method\t%s\nspans\t%d\ntotal\t%s\nmax_error\t%.3g\nmean_error\t%.3g",
       r.method, r.spans, g17(r.total), max, mean))
   end
 end
@@ -490,14 +501,7 @@ function cli.main(argv)
   cmd(opts, args)
 end
 
--- Run when executed as a script, not when required: from a clone
--- (lua5.4 lua/arclen/cli.lua), the clone's modules and build come first.
-if arg and arg[0] and arg[0]:match("cli%.lua$") then
-  local root = (arg[0]:match("^(.*)[/\\][^/\\]*$") or ".") .. "/../.."
-  local version = type(jit) == "table" and "jit" or _VERSION:match("%d+%.%d+")
-  package.path = root .. "/lua/?.lua;" .. root .. "/lua/?/init.lua;" .. package.path
-  package.cpath = root .. "/build/" .. version .. "/?.so;" .. package.cpath
-  cli.main(arg)
-end
+-- Run when executed as a script, not when required.
+if as_script then cli.main(arg) end
 
 return cli

@@ -12,7 +12,10 @@
 local arclen = require("arclen")
 local path = require("arclen.path")
 
-local format, floor, abs, huge = string.format, math.floor, math.abs, math.huge
+local numtext = require("arclen.numtext")
+-- '.' as the decimal point in any locale (MetaPost reads only that)
+local format, tonumber = numtext.format, numtext.tonumber
+local floor, abs, huge = math.floor, math.abs, math.huge
 local atan2 = math.atan2 or math.atan
 local unpack = table.unpack or unpack
 local M = {}
@@ -322,7 +325,7 @@ function M.run(op, sys, method, tol, knots, ...)
     end
     if type(tol) ~= "number" or tol == 0 then tol = 1e-12 end
     if not (tol >= arclen.tol_min and tol <= arclen.tol_max) then
-      fail(("arclen_tol must be 0 (the default) or in [%g, %g]"):format(arclen.tol_min, arclen.tol_max))
+      fail(format("arclen_tol must be 0 (the default) or in [%g, %g]", arclen.tol_min, arclen.tol_max))
     end
     local p = path_of(knots, method, tol)
     return f(p, sys, unpack(args, 1, nargs))

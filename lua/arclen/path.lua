@@ -22,7 +22,8 @@ local svgpath = require("arclen.svgpath")
 local mplibpath = require("arclen.mplib")
 
 local floor, abs, sqrt, huge = math.floor, math.abs, math.sqrt, math.huge
-local format = string.format
+local numtext = require("arclen.numtext")
+local format = numtext.format     -- '.' as the decimal point in any locale
 
 local Path = {}
 Path.__index = Path
@@ -871,13 +872,7 @@ function Path:segment(k)
 end
 
 -- The shortest of %.15g, %.16g, %.17g that reads back as x.
-local function num(x)
-  for p = 15, 17 do
-    local s = format("%." .. p .. "g", x)
-    if tonumber(s) == x then return s end
-  end
-  return format("%.17g", x)
-end
+local num = numtext.shortest
 
 -- p:svg() -> SVG path data (absolute M and C, Z on a cyclic path) that
 -- reads back to the same segments (2D paths).

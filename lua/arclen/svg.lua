@@ -35,8 +35,8 @@ end
 
 local M = {}
 
-local format, find, sub, floor, huge = string.format, string.find,
-  string.sub, math.floor, math.huge
+local format = require("arclen.numtext").format   -- '.' in any locale
+local find, sub, floor, huge = string.find, string.sub, math.floor, math.huge
 local abs, sqrt = math.abs, math.sqrt
 
 local MAX_DEPTH = 1000                -- element nesting (the reader's cap)
@@ -98,7 +98,7 @@ local function read_opts(opts, fname)
   for k, v in pairs(opts) do
     if k == "tol" or k == "arc_tol" then
       if type(v) ~= "number" or not (v >= core.tol_min and v <= core.tol_max) then
-        argerror4(2, fname, ("%s must be in [%g, %g]"):format(k, core.tol_min, core.tol_max))
+        argerror4(2, fname, format("%s must be in [%g, %g]", k, core.tol_min, core.tol_max))
       end
     elseif k == "method" then
       if type(v) ~= "string" then argerror4(2, fname, "method must be a string") end

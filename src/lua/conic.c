@@ -7,6 +7,7 @@
 
 #include "lua/binding.h"
 #include "curve/numeric.h"
+#include "svg/decimal.h"
 
 
 /* What opts asks for: the scheme and either a level or a tolerance. */
@@ -119,10 +120,12 @@ static int pick_level(lua_State *L, int optarg, const double *c, int n,
     double b;
     int rc = arclen_conic_level(c + 7 * k, c[7 * k + 6], co->scheme, co->tol,
                                 &lk, &b);
-    if (rc == ARCLEN_ENOCONV)
+    if (rc == ARCLEN_ENOCONV) {
+      char num[32];                    /* %.14g as Lua's, in any locale */
+      arclen_decimal_print(num, b, 14);
       luaL_argerror(L, optarg, lua_pushfstring(L,
-          "tol not reached by level %d (bound %f)", ARCLEN_CONIC_MAXLEVEL, b));
-    else if (rc != ARCLEN_OK)
+          "tol not reached by level %d (bound %s)", ARCLEN_CONIC_MAXLEVEL, num));
+    } else if (rc != ARCLEN_OK)
       arclenL_argcode(L, optarg, rc);
     if (lk > level) level = lk;
   }

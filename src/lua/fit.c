@@ -13,6 +13,7 @@
 #include <string.h>
 
 #include "lua/binding.h"
+#include "svg/decimal.h"
 
 #define FIT_MT "arclen.fit"
 
@@ -208,10 +209,11 @@ static int l_errors(lua_State *L) {
 
 static int l_tostring(lua_State *L) {
   arclen_fit *f = check_fit(L, 1);
-  char buf[128];
-  snprintf(buf, sizeof buf, "arclen.fit(%s, %d span%s, total %.17g)",
+  char buf[128], total[32];
+  arclen_decimal_print(total, f->total, 17);     /* in any locale */
+  snprintf(buf, sizeof buf, "arclen.fit(%s, %d span%s, total %s)",
            method_names[f->method == ARCLEN_FIT_PAPER], f->nspans,
-           f->nspans == 1 ? "" : "s", f->total);
+           f->nspans == 1 ? "" : "s", total);
   lua_pushstring(L, buf);
   return 1;
 }

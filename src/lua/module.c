@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "lua/binding.h"
+#include "svg/decimal.h"
 
 /* ---- argument checking ------------------------------------------------ */
 
@@ -107,9 +108,13 @@ static double opt_number(lua_State *L, int arg, const char *key, double lo,
   if (lua_type(L, -1) != LUA_TNUMBER)
     luaL_argerror(L, arg, lua_pushfstring(L, "%s must be a number", key));
   v = lua_tonumber(L, -1);
-  if (!(v >= lo && v <= hi))
-    luaL_argerror(L, arg, lua_pushfstring(L, "%s must be in [%f, %f]", key,
-                                          lo, hi));
+  if (!(v >= lo && v <= hi)) {
+    char a[32], b[32];                 /* %.14g as Lua's, in any locale */
+    arclen_decimal_print(a, lo, 14);
+    arclen_decimal_print(b, hi, 14);
+    luaL_argerror(L, arg, lua_pushfstring(L, "%s must be in [%s, %s]", key,
+                                          a, b));
+  }
   return v;
 }
 

@@ -2,11 +2,10 @@
 ** decimal.c -- scanning SVG's numbers and converting them to doubles.  Most
 ** numbers of real documents have few digits: those are converted exactly
 ** by one multiplication or division (Clinger's fast path), the rest by
-** strtod on a terminated copy.
+** decimal_exact.c: never strtod, whose decimal point is LC_NUMERIC's.
 */
 #include <math.h>
 #include <stdint.h>
-#include <stdlib.h>
 #include <string.h>
 
 #include "svg/decimal.h"
@@ -68,7 +67,7 @@ static int exact_value(const char *s, size_t len, double *v) {
     i++;
     if (s[i] == '+' || s[i] == '-') eneg = s[i++] == '-';
     for (; i < len; i++) {
-      if (x > 1000) return 0;                   /* far out: strtod */
+      if (x > 1000) return 0;                   /* far out: the slow path */
       x = x * 10 + (s[i] - '0');
     }
     e += eneg ? -x : x;
@@ -80,17 +79,9 @@ static int exact_value(const char *s, size_t len, double *v) {
 }
 
 int arclen_decimal_value(const char *s, size_t len, double *v) {
-  char buf[64], *p = buf;
   if (exact_value(s, len, v)) return 0;
-  if (len >= sizeof buf) {
-    p = (char *)malloc(len + 1);
-    if (p == NULL) return -1;
-  }
-  memcpy(p, s, len);
-  p[len] = '\0';
-  *v = strtod(p, NULL);
-  if (p != buf) free(p);
-  return 0;
+  *v = arclen_decimal_exact(s, len);
+  return *v == *v ? 0 : -1;
 }
 
 size_t arclen_decimal_scan(const char *s, size_t n, size_t i, double *v) {

@@ -18,9 +18,19 @@ size_t arclen_decimal_mantissa(const char *s, size_t n, size_t i,
 size_t arclen_decimal_exponent(const char *s, size_t n, size_t i);
 
 /* The value of a scanned number s[0 .. len-1], correctly rounded (as
-** strtod in the C locale); +-HUGE_VAL beyond the doubles.  Returns 0, or
-** -1 when memory for a very long number ran out. */
+** strtod in the C locale, in any locale); +-HUGE_VAL beyond the doubles.
+** Returns 0 (-1 only if decimal_exact.c's fixed bounds were wrong). */
 int arclen_decimal_value(const char *s, size_t len, double *v);
+
+/* The same without the fast path (decimal_exact.c): the nearest double,
+** ties to even, +-0 below half the least subnormal; NaN only if its fixed
+** buffers were too small (they are not: see its bounds). */
+double arclen_decimal_exact(const char *s, size_t len);
+
+/* x as printf's "%.<digits>g" writes it in the C locale, whatever the
+** process's LC_NUMERIC: "inf", "-inf" and "nan" when not finite.  buf has
+** room for 32 bytes (digits <= 17); returns the length written. */
+size_t arclen_decimal_print(char buf[32], double x, int digits);
 
 /* The number at s[i] with its value in *v: returns the end, or i when
 ** there is none, when it is beyond the doubles, or without memory.  An

@@ -6,6 +6,7 @@
 #include <stdio.h>
 
 #include "arclen.h"
+#include "svg/decimal.h"
 #include "svg/pathdata.h"
 
 typedef struct out {
@@ -52,10 +53,13 @@ static void put_arc_reason(out *o, const arclen_pathdata_error *e) {
     put(o, "the arc's radii, centre or control points lie beyond the "
            "largest double");
     break;
-  case ARCLEN_PD_ARC_LEVEL:   /* %.14g: Lua's own format of a number */
-    put(o, "tol not reached by level %d (bound %.14g)", ARCLEN_CONIC_MAXLEVEL,
-        e->bound);
+  case ARCLEN_PD_ARC_LEVEL: {  /* %.14g: Lua's own format of a number */
+    char num[32];
+    arclen_decimal_print(num, e->bound, 14);
+    put(o, "tol not reached by level %d (bound %s)", ARCLEN_CONIC_MAXLEVEL,
+        num);
     break;
+  }
   case ARCLEN_PD_ARC_CUBICS:
     put(o, "a control point of the cubics lies beyond the largest double");
     break;

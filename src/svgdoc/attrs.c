@@ -41,7 +41,7 @@ int svgdoc_blank(const char *s) {
   return 1;
 }
 
-void svgdoc_num(char buf[32], double x) { snprintf(buf, 32, "%.17g", x); }
+void svgdoc_num(char buf[32], double x) { arclen_decimal_print(buf, x, 17); }
 
 double svgdoc_nonneg(svgdoc *D, unsigned long line, unsigned long col,
                      double v, const char *what) {

@@ -117,7 +117,7 @@ const char *svgdoc_attr(const char **atts, const char *name);
 int svgdoc_blank(const char *s);
 int svgdoc_space(unsigned char c);
 
-/* %.17g of x (shapes and messages write numbers so). */
+/* %.17g of x in any locale (shapes and messages write numbers so). */
 void svgdoc_num(char buf[32], double x);
 /* v, or a located error "what must not be negative (v)". */
 double svgdoc_nonneg(svgdoc *D, unsigned long line, unsigned long col,

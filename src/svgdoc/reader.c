@@ -12,6 +12,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "svg/decimal.h"
 #include "svgdoc/internal.h"
 
 #define SVG_NS "http://www.w3.org/2000/svg"
@@ -227,16 +228,11 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
 static void expand(svgdoc *D, const svgdoc_use *u);
 
 /* Lua's tonumber(s) == 0 for the number-like prefix of a stroke-width
-** (a width of zero draws no stroke). */
-static int zero_width(svgdoc *D, const char *s) {
+** (a width of zero draws no stroke), read in any locale. */
+static int zero_width(const char *s) {
   size_t n = strspn(s, "0123456789.eE+-");
-  char *end;
   double v;
-  if (n == 0) return 0;
-  D->scratch.len = 0;
-  svgdoc_append(D, &D->scratch, s, n);
-  v = strtod(D->scratch.s, &end);
-  return *end == '\0' && v == 0;
+  return n > 0 && arclen_decimal_scan(s, n, 0, &v) == n && v == 0;
 }
 
 /* The child frame f of element (tag, atts) under parent; f->skip when
@@ -274,7 +270,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
     if (strcmp(s, "none") == 0) f->stroked = 0;
     else if (strcmp(s, "inherit") != 0) f->stroked = 1;
   }
-  if ((s = P[SVGDOC_STROKE_WIDTH]) != NULL && zero_width(D, s)) f->stroked = 0;
+  if ((s = P[SVGDOC_STROKE_WIDTH]) != NULL && zero_width(s)) f->stroked = 0;
   if (lookup(NOT_RENDERED, tag) >= 0 && !(sh && sh->root && is_symbol)) return;
   skipped = find_tag(svgdoc_skipped_tags, SVGDOC_NSKIPPED, tag);
   if (skipped >= 0) {

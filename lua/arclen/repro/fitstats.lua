@@ -12,6 +12,7 @@
 --
 -- As a script: lua5.4 lua/arclen/fitstats.lua [--curves N] [--seed S]
 --   [--fonts path] [--quick]
+local numtext = require("arclen.numtext")   -- numbers in any locale
 local arclen = require "arclen"
 
 local M = {}
@@ -69,7 +70,7 @@ function M.font_sets(path)
     else
       local fam, name, _, rest = line:match("^([^\t]+)\t([^\t]+)\t([^\t]+)\t(.*)$")
       local c = {}
-      for v in rest:gmatch("[^\t]+") do c[#c + 1] = tonumber(v) end
+      for v in rest:gmatch("[^\t]+") do c[#c + 1] = numtext.tonumber(v) end
       if not byname[name] then
         byname[name] = {name = name, family = fam, curves = {}}
         fonts[#fonts + 1] = byname[name]
@@ -130,12 +131,12 @@ M.published = {
 }
 
 local function fmt_row(set, label, r)
-  return string.format("%-22s %-40s %6d  %9.6f  %9.6f  %9.6f  %5d %6.2f%%  %7.2f",
+  return numtext.format("%-22s %-40s %6d  %9.6f  %9.6f  %9.6f  %5d %6.2f%%  %7.2f",
                        set, label, r.curves, r.max, r.avgmax, r.avgavg, r.nonmono,
                        100 * r.nonmono / math.max(1, r.curves), r.evals)
 end
 
-M.header = string.format("%-22s %-40s %6s  %9s  %9s  %9s  %13s  %7s", "set", "method",
+M.header = numtext.format("%-22s %-40s %6s  %9s  %9s  %9s  %13s  %7s", "set", "method",
                          "curves", "max", "avg max", "avg avg", "non-monotone",
                          "evals")
 
@@ -147,8 +148,8 @@ function M.main(args)
   local i = 1
   while i <= #args do
     local a = args[i]
-    if a == "--curves" then ncurves = tonumber(args[i + 1]); i = i + 1
-    elseif a == "--seed" then seed = tonumber(args[i + 1]); i = i + 1
+    if a == "--curves" then ncurves = numtext.tonumber(args[i + 1]); i = i + 1
+    elseif a == "--seed" then seed = numtext.tonumber(args[i + 1]); i = i + 1
     elseif a == "--fonts" then fontpath = args[i + 1]; i = i + 1
     elseif a == "--quick" then quick = true
     else error("fitstats: unknown argument " .. tostring(a)) end
@@ -160,10 +161,10 @@ function M.main(args)
   out:write(" evaluations per curve; truth: accurate length unless marked qsimp)\n\n")
   out:write(M.header, "\n")
   for _, p in ipairs(M.published) do
-    out:write(string.format("%-22s %-40s %6d  %9.6f  %9.6f  %9.6f  %13s  %7s\n", p[1],
+    out:write(numtext.format("%-22s %-40s %6d  %9.6f  %9.6f  %9.6f  %13s  %7s\n", p[1],
                             "published, n=10", p[2], p[3], p[4], p[5], "-", "-"))
   end
-  local sets = {{string.format("random (ran1 seed %d)", seed), M.random_set(ncurves, seed)}}
+  local sets = {{numtext.format("random (ran1 seed %d)", seed), M.random_set(ncurves, seed)}}
   local fonts = {}
   local ok, result = pcall(M.font_sets, fontpath)
   if ok then fonts = result else out:write("(no font data: ", tostring(result), ")\n") end

@@ -11,6 +11,7 @@
 --
 --   require("arclen.repro.henkel").report()  -> the text of the six tables
 --   require("arclen.repro.henkel").rows()    -> the same as data
+local numtext = require("arclen.numtext")   -- numbers in any locale
 local arclen = require("arclen")
 
 local M = {}
@@ -77,7 +78,7 @@ local KEYS = {"x0", "y0", "x1", "y1", "x2", "y2", "x3", "y3"}
 
 local function coords(row)
   local c = {}
-  for i, k in ipairs(KEYS) do c[i] = assert(tonumber(row[k]), k) end
+  for i, k in ipairs(KEYS) do c[i] = assert(numtext.tonumber(row[k]), k) end
   return c
 end
 
@@ -94,14 +95,14 @@ local function load(dir)
   local arcs = {}
   assert(pub, "arclen.henkel: " .. dir .. "henkel_published.tsv not found")
   for _, r in ipairs(pub) do
-    local k = tonumber(r.arc)
+    local k = numtext.tonumber(r.arc)
     arcs[k] = arcs[k] or {curve = coords(r), published = {}}
-    arcs[k].published[tonumber(r.row)] = {value = r.value, steps = r.steps}
+    arcs[k].published[numtext.tonumber(r.row)] = {value = r.value, steps = r.steps}
   end
   if ref then
     for _, r in ipairs(ref) do
       if r.family == "henkel" then
-        local k = tonumber(r.id:match("(%d+)$"))
+        local k = numtext.tonumber(r.id:match("(%d+)$"))
         if arcs[k] then
           assert(same(arcs[k].curve, coords(r)),
                  "curves2d.tsv henkel-" .. k .. " differs from Henkel's arc")
@@ -115,7 +116,7 @@ end
 
 -- 12 decimals cut off as Henkel printed mpost's double-mode values.
 local function truncate12(x)
-  local s = string.format("%.20f", x)
+  local s = numtext.format("%.20f", x)
   return (s:match("^(%-?%d+%.%d%d%d%d%d%d%d%d%d%d%d%d)"))
 end
 
@@ -139,7 +140,7 @@ function M.rows(dir)
   local out = {}
   for k = 1, #arcs do
     local a = arcs[k]
-    local L = a.ref and tonumber(a.ref)
+    local L = a.ref and numtext.tonumber(a.ref)
     local list = {}
     local all = {}
     for i, r in ipairs(M.ROWS) do all[#all + 1] = {r, a.published[i]} end
@@ -152,7 +153,7 @@ function M.rows(dir)
       if e.value and L then e.err = math.abs(e.value - L) / L end
       if p then
         e.published, e.published_steps = p.value, p.steps
-        local pv = tonumber(p.value)
+        local pv = numtext.tonumber(p.value)
         if pv and L then
           e.pub_err = math.abs(pv - L) / L
           if r.method == "metapost" then
@@ -173,12 +174,12 @@ end
 local function fmt_err(e)
   if e == nil then return "" end
   if e == 0 then return "0" end
-  return string.format("%.1e", e)
+  return numtext.format("%.1e", e)
 end
 
 local function curve_text(c)
-  local function n(v) return (string.format("%.15g", v)) end
-  return string.format("{{%s,%s},{%s,%s},{%s,%s},{%s,%s}}", n(c[1]), n(c[2]),
+  local function n(v) return (numtext.format("%.15g", v)) end
+  return numtext.format("{{%s,%s},{%s,%s},{%s,%s},{%s,%s}}", n(c[1]), n(c[2]),
                        n(c[3]), n(c[4]), n(c[5]), n(c[6]), n(c[7]), n(c[8]))
 end
 
@@ -186,7 +187,7 @@ end
 function M.report(dir)
   local all = M.rows(dir)
   local b = {}
-  local function w(...) b[#b + 1] = string.format(...) end
+  local function w(...) b[#b + 1] = numtext.format(...) end
   w("Henkel (2014), section 6: six cubic arcs by every method, recomputed by %s\n",
     arclen._VERSION or "arclen")
   w("err: relative error against the 40-digit reference; Henkel's published values\n")
@@ -198,9 +199,9 @@ function M.report(dir)
     w("%-4s %-20s %-18s %-8s %-9s | %-17s %-8s %-7s\n", "Eqn", "Method",
       "arclen", "err", "Steps", "Henkel", "err", "Steps")
     for _, e in ipairs(a.rows) do
-      local v = e.value and string.format("%.15g", e.value) or "n/a"
+      local v = e.value and numtext.format("%.15g", e.value) or "n/a"
       w("%-4s %-20s %-18s %-8s %-9s | %-17s %-8s %-7s %s\n", e.eqn, e.label,
-        v, fmt_err(e.err), e.steps and string.format("%d", e.steps) or "",
+        v, fmt_err(e.err), e.steps and numtext.format("%d", e.steps) or "",
         e.published or "(not in Henkel)", fmt_err(e.pub_err),
         e.published_steps or "", e.flag or (e.failure and "arclen: " .. e.failure) or "")
     end

@@ -14,6 +14,7 @@
 -- As a script (LUA_PATH=lua/?.lua, LUA_CPATH=build/5.4/?.so):
 --   lua5.4 lua/arclen/plot.lua fit x0 y0 x1 y1 x2 y2 x3 y3 [out.svg]
 --   lua5.4 lua/arclen/plot.lua all [dir]     every figure into dir (.)
+local numtext = require("arclen.numtext")   -- numbers in any locale
 local arclen = require "arclen"
 local svg = require "arclen.repro.svgplot"
 
@@ -29,7 +30,7 @@ M.default_methods = {
 
 local function curve_label(c)
   local parts = {}
-  for i = 1, #c do parts[i] = string.format("%g", c[i]) end
+  for i = 1, #c do parts[i] = numtext.format("%g", c[i]) end
   return table.concat(parts, " ")
 end
 
@@ -49,7 +50,7 @@ local function marks(fig, fits, at)
   local crit = fits[1] and fits[1].fit.critical or {}
   for i, t in ipairs(crit) do
     fig:vline(t, {color = "#777777", dash = "2 3", width = 1.2,
-                  text = string.format("inflexion t = %.4f", t),
+                  text = numtext.format("inflexion t = %.4f", t),
                   label = i == 1 and "inflexion points (speed's critical points)" or nil})
   end
   local shapes = {"square", "diamond", "circle"}
@@ -61,7 +62,7 @@ local function marks(fig, fits, at)
     pts[#pts + 1] = {1, at(f.fit, 1)}
     fig:markers(pts, {color = f.color, shape = shapes[(i - 1) % 3 + 1],
                       size = i == 1 and 5.5 or 4,
-                      label = string.format("%s: span ends (%d span%s)", f.label, #spans,
+                      label = numtext.format("%s: span ends (%d span%s)", f.label, #spans,
                                             #spans == 1 and "" or "s")})
   end
 end
@@ -92,7 +93,7 @@ function M.fit(c, opts)
     for k = 0, samples do pts[k + 1] = {k / samples, f.fit:value(k / samples)} end
     local maxe = f.fit:errors{truth = "exact"}
     fig:line(pts, {color = f.color, width = 1.6,
-                   label = string.format("%s (max error %.2g)", f.label, maxe)})
+                   label = numtext.format("%s (max error %.2g)", f.label, maxe)})
   end
   marks(fig, fits, function(fit, t) return fit:value(t) end)
   return fig:render()
@@ -272,7 +273,7 @@ local function main(args)
   local cmd = args[1]
   if cmd == "fit" then
     local c = {}
-    for i = 2, 9 do c[#c + 1] = assert(tonumber(args[i]), "fit: 8 numbers expected") end
+    for i = 2, 9 do c[#c + 1] = assert(numtext.tonumber(args[i]), "fit: 8 numbers expected") end
     local text = M.fit(c)
     if args[10] then svg.write(args[10], text) else io.write(text) end
   elseif cmd == "all" then

@@ -29,13 +29,14 @@
 -- marks = {{x=, label=}, ...}} returns SVG text; svg.histogram(values,
 -- {bins=, range=, log=}) returns edges, counts.
 
+local numtext = require("arclen.numtext")   -- numbers in any locale
 local M = {}
 
 -- A colour-blind-safe cycle (Okabe & Ito 2008).
 M.palette = {"#0072b2", "#d55e00", "#009e73", "#cc79a7", "#e69f00",
              "#56b4e9", "#000000", "#f0e442"}
 
-local fmt = string.format
+local fmt = numtext.format
 local floor = math.floor
 -- math.log has no base argument in Lua 5.1 and LuaJIT; 5.4 has no log10.
 local log10 = math.log10 or function(x) return math.log(x, 10) end
