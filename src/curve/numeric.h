@@ -7,6 +7,7 @@
 #define ARCLEN_NUMERIC_H
 
 #include <math.h>
+#include <string.h>
 
 #define ARCLEN_PI 3.14159265358979323846
 
@@ -22,6 +23,55 @@ static inline arclen_dd arclen_two_sum(double a, double b) {
   r.lo = (a - (s - bb)) + (b - bb);
   return r;
 }
+
+/* TwoProduct without fma (Dekker 1971, Veltkamp's split into 26-bit
+** halves): hi + lo = a b exactly when |a|, |b| lie in [2^-400, 2^500]
+** (no half overflows, no partial product underflows). */
+static inline arclen_dd arclen_two_prod_split(double a, double b) {
+  const double split = 134217729.0;                  /* 2^27 + 1 */
+  double ca = split * a, cb = split * b;
+  double ah = ca - (ca - a), al = a - ah, bh = cb - (cb - b), bl = b - bh;
+  arclen_dd r;
+  r.hi = a * b;
+  r.lo = ((ah * bh - r.hi) + ah * bl + al * bh) + al * bl;
+  return r;
+}
+
+/* a b + c rounded once, as C99's fma should.  MinGW-w64's fma (libmingwex
+** 10, Debian 12's cross-compiler) is not: fma(0x1.ff7ced9168761p-1,
+** -0x1.6d1cbffffffdap+4, 0x1.6cbf480000001p+4) is 2^-69 off, and the
+** double-double sub-range hodograph (cubic.c) lost 7 digits.  There (and
+** wherever ARCLEN_SOFT_FMA is defined) Boldo & Melquiond's emulation
+** ("Emulation of FMA and correctly rounded sums: proved algorithms using
+** rounding to odd", IEEE TC 57(4), 2008, Alg. 5.4): a b = uh + ul and
+** c + uh = th + tl exactly, v = tl + ul rounded to odd, the result th + v
+** rounded to nearest.  Operands outside TwoProduct's range above go to
+** the library's fma (arclen's are scaled, far inside it). */
+#if defined(__MINGW32__) && !defined(ARCLEN_SOFT_FMA)
+#define ARCLEN_SOFT_FMA 1
+#endif
+#if defined(ARCLEN_SOFT_FMA)
+static inline double arclen_fma(double a, double b, double c) {
+  double fa = fabs(a), fb = fabs(b), v, e, bb;
+  arclen_dd u, t;
+  unsigned long long bits;
+  if (!(fa >= 0x1p-400 && fa <= 0x1p500 && fb >= 0x1p-400 && fb <= 0x1p500 &&
+        fabs(c) <= 0x1p1000))
+    return fma(a, b, c);                /* zeros, inf, NaN, extreme ranges */
+  u = arclen_two_prod_split(a, b);
+  t = arclen_two_sum(c, u.hi);
+  /* v = tl + ul rounded to odd: round to nearest, and if that was inexact
+  ** and gave an even significand, step one ulp toward the exact sum */
+  v = t.lo + u.lo;
+  bb = v - t.lo;
+  e = (t.lo - (v - bb)) + (u.lo - bb);
+  memcpy(&bits, &v, sizeof bits);
+  if (e != 0 && (bits & 1) == 0) v = nextafter(v, e > 0 ? HUGE_VAL : -HUGE_VAL);
+  return t.hi + v;
+}
+#else
+#define arclen_fma fma
+#endif
 
 /* Neumaier's compensated sum (1974): s + c, with the error of each
 ** addition carried in c whichever operand is larger. */
