@@ -59,7 +59,6 @@ build = {
         "src/svg/pathdata_message.c",
       },
       defines = { "_POSIX_C_SOURCE=200809L" },
-      libraries = { "m" },
       incdirs = { "src" },
     },
     ["arclen.svgdoc"] = {
@@ -105,7 +104,7 @@ build = {
         "src/svg/pathdata_message.c",
       },
       defines = { "_POSIX_C_SOURCE=200809L" },
-      libraries = { "expat", "m" },
+      libraries = { "expat" },
       incdirs = { "src", "$(EXPAT_INCDIR)" },
       libdirs = { "$(EXPAT_LIBDIR)" },
     },
@@ -122,6 +121,14 @@ build = {
     ["arclen.repro.svgplot"] = "lua/arclen/repro/svgplot.lua",
     ["arclen.svg"] = "lua/arclen/svg.lua",
     ["arclen.svgpath"] = "lua/arclen/svgpath.lua",
+  },
+  platforms = {
+    unix = {
+      modules = {
+        ["arclen.core"] = { libraries = { "m" } },
+        ["arclen.svgdoc"] = { libraries = { "expat", "m" } },
+      },
+    },
   },
   install = { bin = { arclen = "bin/arclen" } },
 }
