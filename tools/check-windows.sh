@@ -1,5 +1,6 @@
 #!/bin/sh
 # tools/check-windows.sh -- arclen on Windows, checked from Debian 12:
+#   0. no direct fma() in src/ (arclen_fma instead: MinGW's is inexact);
 #   1. `make windows`: core.dll and svgdoc.dll cross-built with MinGW
 #      (-Werror) against a Windows Lua 5.4 and a static expat built from
 #      Debian's source packages (tools/windows-lua.sh, windows-expat.sh);
@@ -43,6 +44,17 @@ if [ -n "$need" ]; then
     bad "apt-get install$need"
     finish
   fi
+fi
+
+# 0. the core calls arclen_fma (curve/numeric.h), never fma(): MinGW's is
+#    not exactly rounded (comment lines, "** ..." and "/* ...", aside)
+direct=$(grep -rn -E '(^|[^_[:alnum:]])fma[[:space:]]*\(' src --include='*.c' --include='*.h' |
+  grep -v -E '^src/curve/numeric\.h:|^[^:]*:[0-9]+:[[:space:]]*(\*\*|/\*)')
+if [ -z "$direct" ]; then
+  ok
+else
+  echo "$direct"
+  bad "fma() called directly (write arclen_fma: MinGW's fma is inexact)"
 fi
 
 # 1. the cross-build; -Werror: a warning fails it
