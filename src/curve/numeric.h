@@ -46,8 +46,12 @@ static inline arclen_dd arclen_two_prod_split(double a, double b) {
 ** rounding to odd", IEEE TC 57(4), 2008, Alg. 5.4): a b = uh + ul and
 ** c + uh = th + tl exactly, v = tl + ul rounded to odd, the result th + v
 ** rounded to nearest.  Operands outside TwoProduct's range above go to
-** the library's fma (arclen's are scaled, far inside it). */
-#if defined(__MINGW32__) && !defined(ARCLEN_SOFT_FMA)
+** the library's fma (arclen's are scaled, far inside it).  A target with
+** an FMA instruction (-mfma: __FMA__; arm64) gets it for fma(), exact; only
+** without one is the emulation used -- where no contraction can fuse the
+** split's products either. */
+#if defined(__MINGW32__) && !defined(ARCLEN_SOFT_FMA) && \
+    !defined(__FMA__) && !defined(__ARM_FEATURE_FMA)
 #define ARCLEN_SOFT_FMA 1
 #endif
 #if defined(ARCLEN_SOFT_FMA)
@@ -66,7 +70,8 @@ static inline double arclen_fma(double a, double b, double c) {
   bb = v - t.lo;
   e = (t.lo - (v - bb)) + (u.lo - bb);
   memcpy(&bits, &v, sizeof bits);
-  if (e != 0 && (bits & 1) == 0) v = nextafter(v, e > 0 ? HUGE_VAL : -HUGE_VAL);
+  if (e != 0 && (bits & 1) == 0)
+    v = nextafter(v, e > 0 ? HUGE_VAL : -HUGE_VAL);
   return t.hi + v;
 }
 #else
