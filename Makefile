@@ -269,3 +269,51 @@ luatex:
 .PHONY: check-threads
 check-threads:
 	sh tools/check-threads.sh
+
+# ---- Windows: a MinGW cross-build --------------------------------------
+#   make windows   build/windows/arclen/core.dll and svgdoc.dll for a
+#                  Windows Lua 5.4, cross-built with x86_64-w64-mingw32-gcc
+#                  (Debian gcc-mingw-w64-x86-64), no warnings allowed,
+#                  against lua54.dll (tools/windows-lua.sh) and a static
+#                  expat (tools/windows-expat.sh), both built from Debian's
+#                  source packages.  tools/check-windows.sh runs the specs
+#                  under Wine.
+WIN_CC ?= x86_64-w64-mingw32-gcc
+WIN_AR ?= x86_64-w64-mingw32-ar
+WIN_OUT = $(BUILD)/windows
+WIN_LUA ?= $(WIN_OUT)/lua
+WIN_EXPAT ?= $(WIN_OUT)/expat
+WIN_FLAGS = $(WARN) -Werror -Wvla -ffp-contract=off -fno-math-errno
+WIN_CORE_OBJ = $(patsubst src/%.c,$(WIN_OUT)/obj/%.o,$(CORE_SRC))
+WIN_BIND_OBJ = $(patsubst src/%.c,$(WIN_OUT)/obj/%.o,$(BIND_SRC))
+WIN_DOC_OBJ = $(patsubst src/%.c,$(WIN_OUT)/obj/%.o,$(DOC_SRC) src/lua/svgdoc.c)
+.PHONY: windows
+windows: $(WIN_OUT)/arclen/core.dll $(WIN_OUT)/arclen/svgdoc.dll
+
+$(WIN_LUA)/lua54.dll:
+	sh tools/windows-lua.sh $(WIN_LUA)
+
+$(WIN_EXPAT)/lib/libexpat.a:
+	sh tools/windows-expat.sh $(WIN_EXPAT)
+
+# The document reader's files see expat's header, for a static libexpat
+$(WIN_DOC_OBJ): WIN_DOC_FLAGS = -DXML_STATIC -I$(WIN_EXPAT)/include
+$(WIN_DOC_OBJ): $(WIN_EXPAT)/lib/libexpat.a
+
+$(WIN_OUT)/obj/%.o: src/%.c $(HEADERS) $(WIN_LUA)/lua54.dll
+	@mkdir -p $(dir $@)
+	$(WIN_CC) $(CFLAGS) $(WIN_FLAGS) $(WIN_DOC_FLAGS) -Isrc -I$(WIN_LUA)/include -c $< -o $@
+
+$(WIN_OUT)/libarclen.a: $(WIN_CORE_OBJ)
+	rm -f $@
+	$(WIN_AR) rcs $@ $^
+
+# Linked against lua54.dll itself, and against nothing else but the C
+# runtime: no -static-libgcc, so that a libgcc_s import shows in the check
+$(WIN_OUT)/arclen/core.dll: $(WIN_CORE_OBJ) $(WIN_BIND_OBJ)
+	@mkdir -p $(dir $@)
+	$(WIN_CC) -shared -o $@ $^ $(WIN_LUA)/lua54.dll
+
+$(WIN_OUT)/arclen/svgdoc.dll: $(WIN_DOC_OBJ) $(WIN_OUT)/obj/lua/subpaths.o $(WIN_OUT)/libarclen.a
+	@mkdir -p $(dir $@)
+	$(WIN_CC) -shared -o $@ $^ $(WIN_EXPAT)/lib/libexpat.a $(WIN_LUA)/lua54.dll

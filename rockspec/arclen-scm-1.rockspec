@@ -62,7 +62,6 @@ build = {
         "src/svg/pathdata_message.c",
       },
       defines = { "_POSIX_C_SOURCE=200809L" },
-      libraries = { "m" },
       incdirs = { "src" },
     },
     ["arclen.cli"] = "lua/arclen/cli.lua",
@@ -81,4 +80,11 @@ build = {
     ["arclen.svgpath"] = "lua/arclen/svgpath.lua",
   },
   install = { bin = { arclen = "bin/arclen" } },
+  platforms = {
+    unix = {
+      modules = {
+        ["arclen.core"] = { libraries = { "m" } },
+      },
+    },
+  },
 }

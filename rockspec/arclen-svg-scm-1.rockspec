@@ -57,9 +57,16 @@ build = {
         "src/svg/pathdata_message.c",
       },
       defines = { "_POSIX_C_SOURCE=200809L" },
-      libraries = { "expat", "m" },
+      libraries = { "expat" },
       incdirs = { "src", "$(EXPAT_INCDIR)" },
       libdirs = { "$(EXPAT_LIBDIR)" },
+    },
+  },
+  platforms = {
+    unix = {
+      modules = {
+        ["arclen.svgdoc"] = { libraries = { "expat", "m" } },
+      },
     },
   },
 }

@@ -2,7 +2,7 @@
 -- check a few exact values (Henkel's closed forms); for Lua versions and
 -- LuaTeX's texlua where busted is not run.  Prints "N passed, N failed".
 local dir = assert(arg and arg[1], "usage: lua spec/smoke.lua build/5.x")
-package.cpath = dir .. "/?.so;" .. package.cpath
+package.cpath = dir .. "/?.so;" .. dir .. "/?.dll;" .. package.cpath
 package.path = "lua/?.lua;lua/?/init.lua;" .. package.path
 
 local passed, failed = 0, 0

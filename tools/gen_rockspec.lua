@@ -32,7 +32,7 @@ local function c_module(lines, name, sources, libraries, incdirs, libdirs)
   end
   lines[#lines + 1] = '      },'
   lines[#lines + 1] = '      defines = { "_POSIX_C_SOURCE=200809L" },'
-  lines[#lines + 1] = ('      libraries = { %s },'):format(libraries)
+  if libraries then lines[#lines + 1] = ('      libraries = { %s },'):format(libraries) end
   lines[#lines + 1] = ('      incdirs = { %s },'):format(incdirs)
   if libdirs then lines[#lines + 1] = ('      libdirs = { %s },'):format(libdirs) end
   lines[#lines + 1] = '    },'
@@ -88,7 +88,7 @@ local function rockspec(package, version, url)
   lines[#lines + 1] = '  type = "builtin",'
   lines[#lines + 1] = '  modules = {'
   if package == "arclen" then
-    c_module(lines, "arclen.core", {csrc}, '"m"', '"src"')
+    c_module(lines, "arclen.core", {csrc}, nil, '"src"')
     for _, f in ipairs(lmods) do
       local mod = f:match("^lua/(.*)%.lua$"):gsub("/", "."):gsub("%.init$", "")
       lines[#lines + 1] = ('    ["%s"] = "%s",'):format(mod, f)
@@ -97,9 +97,23 @@ local function rockspec(package, version, url)
     lines[#lines + 1] = '  install = { bin = { arclen = "bin/arclen" } },'
   else
     c_module(lines, "arclen.svgdoc", {{"src/lua/svgdoc.c", "src/lua/subpaths.c"}, docsrc, core},
-      '"expat", "m"', '"src", "$(EXPAT_INCDIR)"', '"$(EXPAT_LIBDIR)"')
+      '"expat"', '"src", "$(EXPAT_INCDIR)"', '"$(EXPAT_LIBDIR)"')
     lines[#lines + 1] = '  },'
   end
+  -- libm is a library of its own on Unix only; on Windows it is part of
+  -- the C runtime, and MSVC would look for an m.lib.  (LuaRocks merges
+  -- these lists into the modules' element by element: the whole list.)
+  lines[#lines + 1] = '  platforms = {'
+  lines[#lines + 1] = '    unix = {'
+  lines[#lines + 1] = '      modules = {'
+  if package == "arclen" then
+    lines[#lines + 1] = '        ["arclen.core"] = { libraries = { "m" } },'
+  else
+    lines[#lines + 1] = '        ["arclen.svgdoc"] = { libraries = { "expat", "m" } },'
+  end
+  lines[#lines + 1] = '      },'
+  lines[#lines + 1] = '    },'
+  lines[#lines + 1] = '  },'
   lines[#lines + 1] = '}'
   return table.concat(lines, "\n") .. "\n"
 end

@@ -16,11 +16,10 @@
 #include <stddef.h>
 
 #include "arclen.h"
+#include "curve/cplx.h"
 #include "curve/numeric.h"
 
 #define MAX_STEPS 1000000000L   /* 10^9: a few seconds; keeps loops bounded */
-
-typedef struct cpx { double re, im; } cpx;
 
 /* The leg vectors d_k = P_{k+1} - P_k (d[3k + i]) divided by 2^e, e
 ** returned, that puts the largest component in [0.5, 1): sums of squares
@@ -162,41 +161,6 @@ int arclen_length_trapezoid(const double *c, int dim, const arclen_opts *o,
 
 /* ---- Eqn 10: the factored speed -------------------------------------- */
 
-static cpx cmul(cpx a, cpx b) {
-  cpx r;
-  r.re = a.re * b.re - a.im * b.im;
-  r.im = a.re * b.im + a.im * b.re;
-  return r;
-}
-
-static cpx cdiv(cpx a, cpx b) {   /* Smith's algorithm */
-  cpx r;
-  if (fabs(b.re) >= fabs(b.im)) {
-    double q = b.im / b.re, d = b.re + b.im * q;
-    r.re = (a.re + a.im * q) / d;
-    r.im = (a.im - a.re * q) / d;
-  } else {
-    double q = b.re / b.im, d = b.re * q + b.im;
-    r.re = (a.re * q + a.im) / d;
-    r.im = (a.im * q - a.re) / d;
-  }
-  return r;
-}
-
-static cpx csqrt_(cpx z) {        /* principal square root */
-  cpx r;
-  double m = hypot(z.re, z.im);
-  if (m == 0.0) { r.re = r.im = 0.0; return r; }
-  if (z.re >= 0.0) {
-    r.re = sqrt((m + z.re) / 2.0);
-    r.im = z.im / (2.0 * r.re);
-  } else {
-    r.im = copysign(sqrt((m - z.re) / 2.0), z.im);
-    r.re = z.im / (2.0 * r.im);
-  }
-  return r;
-}
-
 /* Speed as |lead| * sqrt(prod of (t - a_k)^2 + b_k^2) over nroots roots. */
 typedef struct factored {
   double lead;
@@ -222,14 +186,14 @@ static double factored_speed(const void *data, double t) {
 ** lead |s| is taken as (lead/|den|) |num|, never through s itself: with a
 ** subnormal den, |s| overflows where lead |s| does not (fuzz_length: NaN
 ** from lead = 4e-312 times inf). */
-static void add_root(factored *f, cpx num, cpx den) {
+static void add_root(factored *f, arclen_cx num, arclen_cx den) {
   double mn = hypot(num.re, num.im), md = hypot(den.re, den.im);
-  cpx s;
+  arclen_cx s;
   if (mn > 0x1p60 * md) {
     f->lead = f->lead / md * mn;
     return;
   }
-  s = cdiv(num, den);
+  s = arclen_cx_div(num, den);
   f->a[f->nroots] = s.re;
   f->b2[f->nroots] = s.im * s.im;
   f->nroots++;
@@ -240,7 +204,7 @@ static void add_root(factored *f, cpx num, cpx den) {
 ** s1 = q/A2 and s2 = A0/q.  Fills f (f->lead divided by 2^e, e returned,
 ** see legs_scaled); lower degrees when A2 (and A1) vanish. */
 static int factor_speed(const double *c, factored *f) {
-  cpx A0, A1, A2, d, q, s;
+  arclen_cx A0, A1, A2, d, q, s;
   double leg[9];
   int scale = legs_scaled(c, 2, leg);
   double d0x = leg[0], d0y = leg[1], d1x = leg[3];
@@ -262,11 +226,9 @@ static int factor_speed(const double *c, factored *f) {
     add_root(f, s, A1);
     return scale;
   }
-  d = cmul(A1, A1);
-  s = cmul(A2, A0);
-  d.re -= 4.0 * s.re;
-  d.im -= 4.0 * s.im;
-  d = csqrt_(d);
+  d = arclen_cx_sub(arclen_cx_mul(A1, A1),
+                    arclen_cx_scale(4.0, arclen_cx_mul(A2, A0)));
+  d = arclen_cx_sqrt(d);
   if (A1.re * d.re + A1.im * d.im < 0.0) { d.re = -d.re; d.im = -d.im; }
   q.re = -(A1.re + d.re) / 2.0;
   q.im = -(A1.im + d.im) / 2.0;
@@ -274,8 +236,7 @@ static int factor_speed(const double *c, factored *f) {
   f->nroots = 0;
   add_root(f, q, A2);
   if (q.re == 0.0 && q.im == 0.0) {            /* A1 = A0 = 0: t^2 */
-    cpx zero = {0.0, 0.0}, one = {1.0, 0.0};
-    add_root(f, zero, one);
+    add_root(f, arclen_cx_make(0.0, 0.0), arclen_cx_make(1.0, 0.0));
   } else {
     /* lead is |A2| or, if q/A2 went into it, |q|: divided by |q| below */
     add_root(f, A0, q);

@@ -194,7 +194,7 @@ void arclen_hodo_scaled(const double *c, int dim, arclen_hodo *h) {
 /* ---- the hodograph about a sub-range, to full relative accuracy ------- */
 
 /* Double-double arithmetic (numeric.h; TwoProduct as in Ogita, Rump &
-** Oishi 2005, by C99's exactly rounded fma). */
+** Oishi 2005, by arclen_fma: exactly rounded, MinGW included). */
 typedef arclen_dd dd;
 
 static dd dd_add(dd x, dd y) {
@@ -204,7 +204,7 @@ static dd dd_add(dd x, dd y) {
 
 static dd dd_mul(dd x, dd y) {
   double p = x.hi * y.hi;
-  double e = fma(x.hi, y.hi, -p) + (x.hi * y.lo + x.lo * y.hi);
+  double e = arclen_fma(x.hi, y.hi, -p) + (x.hi * y.lo + x.lo * y.hi);
   return arclen_two_sum(p, e);
 }
 

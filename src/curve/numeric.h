@@ -7,26 +7,9 @@
 #define ARCLEN_NUMERIC_H
 
 #include <math.h>
+#include <string.h>
 
 #define ARCLEN_PI 3.14159265358979323846
-
-/* a b + c, rounded once where the target has a fused multiply-add and
-** twice where it has none: a compiler contracts only into an FMA
-** instruction, so this is what every build for one target computes,
-** whatever its -ffp-contract.  Used where two code paths must agree to
-** the bit (the default method's fast and general paths): a product left
-** to the compiler may be fused at one inlined site and not at another.
-** Macros: GCC's (__FP_FAST_FMA), C99's, x86's -mfma, ARM's ACLE. */
-#if defined(FP_FAST_FMA) || defined(__FP_FAST_FMA) || defined(__FMA__) || \
-    defined(__ARM_FEATURE_FMA)
-static inline double arclen_muladd(double a, double b, double c) {
-  return fma(a, b, c);
-}
-#else
-static inline double arclen_muladd(double a, double b, double c) {
-  return a * b + c;
-}
-#endif
 
 /* A double-double number hi + lo (Dekker 1971). */
 typedef struct arclen_dd { double hi, lo; } arclen_dd;
@@ -40,6 +23,78 @@ static inline arclen_dd arclen_two_sum(double a, double b) {
   r.lo = (a - (s - bb)) + (b - bb);
   return r;
 }
+
+/* TwoProduct without fma (Dekker 1971, Veltkamp's split into 26-bit
+** halves): hi + lo = a b exactly when |a|, |b| lie in [2^-400, 2^500]
+** (no half overflows, no partial product underflows). */
+static inline arclen_dd arclen_two_prod_split(double a, double b) {
+  const double split = 134217729.0;                  /* 2^27 + 1 */
+  double ca = split * a, cb = split * b;
+  double ah = ca - (ca - a), al = a - ah, bh = cb - (cb - b), bl = b - bh;
+  arclen_dd r;
+  r.hi = a * b;
+  r.lo = ((ah * bh - r.hi) + ah * bl + al * bh) + al * bl;
+  return r;
+}
+
+/* a b + c rounded once, as C99's fma should.  MinGW-w64's fma (libmingwex
+** 10, Debian 12's cross-compiler) is not: fma(0x1.ff7ced9168761p-1,
+** -0x1.6d1cbffffffdap+4, 0x1.6cbf480000001p+4) is 2^-69 off, and the
+** double-double sub-range hodograph (cubic.c) lost 7 digits.  There (and
+** wherever ARCLEN_SOFT_FMA is defined) Boldo & Melquiond's emulation
+** ("Emulation of FMA and correctly rounded sums: proved algorithms using
+** rounding to odd", IEEE TC 57(4), 2008, Alg. 5.4): a b = uh + ul and
+** c + uh = th + tl exactly, v = tl + ul rounded to odd, the result th + v
+** rounded to nearest.  Operands outside TwoProduct's range above go to
+** the library's fma (arclen's are scaled, far inside it).  A target with
+** an FMA instruction (-mfma: __FMA__; arm64) gets it for fma(), exact; only
+** without one is the emulation used -- where no contraction can fuse the
+** split's products either. */
+#if defined(__MINGW32__) && !defined(ARCLEN_SOFT_FMA) && \
+    !defined(__FMA__) && !defined(__ARM_FEATURE_FMA)
+#define ARCLEN_SOFT_FMA 1
+#endif
+#if defined(ARCLEN_SOFT_FMA)
+static inline double arclen_fma(double a, double b, double c) {
+  double fa = fabs(a), fb = fabs(b), v, e, bb;
+  arclen_dd u, t;
+  unsigned long long bits;
+  if (!(fa >= 0x1p-400 && fa <= 0x1p500 && fb >= 0x1p-400 && fb <= 0x1p500 &&
+        fabs(c) <= 0x1p1000))
+    return fma(a, b, c);                /* zeros, inf, NaN, extreme ranges */
+  u = arclen_two_prod_split(a, b);
+  t = arclen_two_sum(c, u.hi);
+  /* v = tl + ul rounded to odd: round to nearest, and if that was inexact
+  ** and gave an even significand, step one ulp toward the exact sum */
+  v = t.lo + u.lo;
+  bb = v - t.lo;
+  e = (t.lo - (v - bb)) + (u.lo - bb);
+  memcpy(&bits, &v, sizeof bits);
+  if (e != 0 && (bits & 1) == 0)
+    v = nextafter(v, e > 0 ? HUGE_VAL : -HUGE_VAL);
+  return t.hi + v;
+}
+#else
+#define arclen_fma fma
+#endif
+
+/* a b + c, rounded once where the target has a fused multiply-add and
+** twice where it has none: a compiler contracts only into an FMA
+** instruction, so this is what every build for one target computes,
+** whatever its -ffp-contract.  Used where two code paths must agree to
+** the bit (the default method's fast and general paths): a product left
+** to the compiler may be fused at one inlined site and not at another.
+** Macros: GCC's (__FP_FAST_FMA), C99's, x86's -mfma, ARM's ACLE. */
+#if defined(FP_FAST_FMA) || defined(__FP_FAST_FMA) || defined(__FMA__) || \
+    defined(__ARM_FEATURE_FMA)
+static inline double arclen_muladd(double a, double b, double c) {
+  return arclen_fma(a, b, c);     /* the instruction: exact */
+}
+#else
+static inline double arclen_muladd(double a, double b, double c) {
+  return a * b + c;
+}
+#endif
 
 /* Neumaier's compensated sum (1974): s + c, with the error of each
 ** addition carried in c whichever operand is larger. */

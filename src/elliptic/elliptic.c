@@ -15,10 +15,10 @@
 ** - otherwise Carlson's formula with the corrected list and parameters
 **   free of cancellation.
 */
-#include <complex.h>
 #include <math.h>
 
 #include "arclen.h"
+#include "curve/cplx.h"
 #include "curve/cubic.h"
 #include "elliptic/elliptic.h"
 
@@ -64,39 +64,43 @@ static int local_hodograph(const double *c, int dim, double y, double x,
 static double length2d(const double a2[3], const double a1[3],
                        const double a0[3], double y, double x,
                        const char **branch, long *calls) {
-  double complex A2 = a2[0] + I * a2[1], A1 = a1[0] + I * a1[1];
-  double complex A0 = a0[0] + I * a0[1], d, q, s1, s2;
+  arclen_cx A2 = arclen_cx_make(a2[0], a2[1]);
+  arclen_cx A1 = arclen_cx_make(a1[0], a1[1]);
+  arclen_cx A0 = arclen_cx_make(a0[0], a0[1]), d, q, s1, s2;
   double aq, m2 = fmax(fabs(a2[0]), fabs(a2[1]));
   double m1 = fmax(fabs(a1[0]), fabs(a1[1])), m0 = fmax(fabs(a0[0]), fabs(a0[1]));
   /* terms below 2^-56 of the larger lower ones are below a rounding of
   ** the length (as in elliptic3d.c); kept, a subnormal A2 beside A1 ~ 1e-323
   ** put a root near the range and the length at 0 (fuzz/fuzz_length) */
-  if (m2 <= 0x1p-56 * fmax(m1, m0)) A2 = 0;
-  if (A2 == 0 && m1 <= 0x1p-56 * m0) A1 = 0;
-  if (A2 == 0 && A1 == 0) {              /* constant velocity: a line */
-    *branch = "line";
-    return cabs(A0) * (x - y);
+  if (m2 <= 0x1p-56 * fmax(m1, m0)) A2 = arclen_cx_make(0, 0);
+  if (arclen_cx_is_zero(A2) && m1 <= 0x1p-56 * m0) A1 = arclen_cx_make(0, 0);
+  if (arclen_cx_is_zero(A2) && arclen_cx_is_zero(A1)) {
+    *branch = "line";                    /* constant velocity */
+    return arclen_cx_abs(A0) * (x - y);
   }
-  d = csqrt(A1 * A1 - 4 * A2 * A0);
-  if (creal(conj(A1) * d) < 0) d = -d;
-  q = -(A1 + d) / 2;
-  aq = cabs(q);
+  /* d = sqrt(A1^2 - 4 A2 A0) on the side of A1, q = -(A1 + d)/2 */
+  d = arclen_cx_sqrt(arclen_cx_sub(arclen_cx_mul(A1, A1),
+                                   arclen_cx_mul(arclen_cx_scale(4, A2), A0)));
+  if (arclen_cx_mul(arclen_cx_conj(A1), d).re < 0) d = arclen_cx_neg(d);
+  q = arclen_cx_div_re(arclen_cx_neg(arclen_cx_add(A1, d)), 2);
+  aq = arclen_cx_abs(q);
   if (aq == 0) {              /* A1 = A0 = 0: z' = A2 t^2, a double root */
     *branch = "collinear";
-    return cabs(A2) * (x * x * x - y * y * y) / 3;
+    return arclen_cx_abs(A2) * (x * x * x - y * y * y) / 3;
   }
-  s2 = A0 / q;
+  s2 = arclen_cx_div(A0, q);
   /* |A2||t - s1| = |q - A2 t| = |q| (1 + O(|A2/q|)) for t in [0, 1]:
   ** with |A2| <= 2^-56 |q| (or A2 = 0, a degree-elevated quadratic) the
   ** far factor is the constant |q| to double precision. */
-  if (cabs(A2) <= 0x1p-56 * aq) {
-    double a = creal(s2), b = fabs(cimag(s2));
+  if (arclen_cx_abs(A2) <= 0x1p-56 * aq) {
+    double a = s2.re, b = fabs(s2.im);
     *branch = "quadratic";
     return aq * arclen_ell_single(a, b, y, x);
   }
-  s1 = q / A2;
-  return cabs(A2) * arclen_ell_product(creal(s1), fabs(cimag(s1)), creal(s2),
-                                     fabs(cimag(s2)), y, x, branch, calls);
+  s1 = arclen_cx_div(q, A2);
+  return arclen_cx_abs(A2) * arclen_ell_product(s1.re, fabs(s1.im), s2.re,
+                                                fabs(s2.im), y, x, branch,
+                                                calls);
 }
 
 int arclen_length_elliptic(const double *c, int dim, const arclen_opts *o,

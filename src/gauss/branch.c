@@ -6,10 +6,10 @@
 ** the simple complex zeros of Q; they set the Bernstein ellipse in which
 ** Gauss-Legendre converges, so the quadrature reads its error bound off them.
 */
-#include <complex.h>
 #include <math.h>
 
 #include "arclen.h"
+#include "curve/cplx.h"
 #include "curve/cubic.h"
 #include "roots/roots3d.h"
 
@@ -28,8 +28,8 @@
 #if defined(__GNUC__)
 __attribute__((always_inline))
 #endif
-static inline void add_pair(arclen_branch *b, double complex z, double rtol) {
-  double re = creal(z), im = fabs(cimag(z));
+static inline void add_pair(arclen_branch *b, arclen_cx z, double rtol) {
+  double re = z.re, im = fabs(z.im);
   /* x - x is 0 for finite x, NaN for inf and NaN: one test for both */
   if (b->n > 2 || !((re - re) + (im - im) == 0)) return;
   if (im <= rtol * (1 + fabs(re))) im = 0;
@@ -38,12 +38,12 @@ static inline void add_pair(arclen_branch *b, double complex z, double rtol) {
   b->n += 2;
 }
 
-static double complex cdiv(double complex p, double complex q) {
+static arclen_cx cdiv(arclen_cx p, arclen_cx q) {
   /* p / q by the textbook formula: the operands are scaled (hodo_scaled),
-  ** so |q|^2 cannot overflow, and C99's careful division is slow. */
-  double d = creal(q) * creal(q) + cimag(q) * cimag(q);
-  return ((creal(p) * creal(q) + cimag(p) * cimag(q)) +
-          I * (cimag(p) * creal(q) - creal(p) * cimag(q))) / d;
+  ** so |q|^2 cannot overflow, and Smith's division (cplx.h) is slower. */
+  double d = q.re * q.re + q.im * q.im;
+  return arclen_cx_make((p.re * q.re + p.im * q.im) / d,
+                        (p.im * q.re - p.re * q.im) / d);
 }
 
 /* 2D: z' = A2 t^2 + A1 t + A0 as a complex quadratic with roots s1, s2, so
@@ -51,8 +51,8 @@ static double complex cdiv(double complex p, double complex q) {
 ** their conjugates.  The root formula avoids cancellation: d is the square
 ** root of the discriminant D = A1^2 - 4 A2 A0 on the side of A1 (principal
 ** root in Kahan's formulation), q = -(A1 + d)/2, roots q/A2 and A0/q (see
-** doc/papers.md, "Henkel").  In real arithmetic: this runs on every default-method
-** call, and C99's complex product checks for NaN and may call out. */
+** doc/papers.md, "Henkel").  In real arithmetic: this runs on every
+** default-method call. */
 static void branch2(const arclen_hodo *h, arclen_branch *b) {
   double x2 = h->a2[0], y2 = h->a2[1], x1 = h->a1[0], y1 = h->a1[1];
   double x0 = h->a0[0], y0 = h->a0[1];
@@ -76,8 +76,8 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
       qi = -y1 / 2;
     }
     if (qr == 0 && qi == 0) {            /* A1 = A0 = 0: double root at 0 */
-      add_pair(b, 0, REAL_ROOT_RTOL2);
-      add_pair(b, 0, REAL_ROOT_RTOL2);
+      add_pair(b, arclen_cx_make(0, 0), REAL_ROOT_RTOL2);
+      add_pair(b, arclen_cx_make(0, 0), REAL_ROOT_RTOL2);
       return;
     }
     qq = qr * qr + qi * qi;
@@ -92,15 +92,16 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
       /* q / A2 = q conj(A2) / |A2|^2 and A0 / q = A0 conj(q) / |q|^2 */
       sr = (qr * x2 + qi * y2) * inv2;
       si = (qi * x2 - qr * y2) * inv2;
-      add_pair(b, sr + I * si, REAL_ROOT_RTOL2);
+      add_pair(b, arclen_cx_make(sr, si), REAL_ROOT_RTOL2);
     }
     nq = 1 / qq;
     sr = (x0 * qr + y0 * qi) * nq;
     si = (y0 * qr - x0 * qi) * nq;
-    add_pair(b, sr + I * si, REAL_ROOT_RTOL2);
+    add_pair(b, arclen_cx_make(sr, si), REAL_ROOT_RTOL2);
   } else if (n1 > 0) {
     b->lead2 = n1;
-    add_pair(b, -cdiv(h->a0[0] + I * h->a0[1], h->a1[0] + I * h->a1[1]),
+    add_pair(b, arclen_cx_neg(cdiv(arclen_cx_make(h->a0[0], h->a0[1]),
+                                   arclen_cx_make(h->a1[0], h->a1[1]))),
              REAL_ROOT_RTOL2);
   } else {
     b->lead2 = x0 * x0 + y0 * y0;
@@ -119,10 +120,10 @@ static void branch2(const arclen_hodo *h, arclen_branch *b) {
 ** and there Q(t) ~ Q(t*) + |h'|^2 (t - t*)^2, so the branch points sit at
 ** t* +- i |h(t*)| / |h'(t*)| (to first order, exact enough to tell a cusp
 ** from a near-cusp of 1e-9). */
-static double complex near_cusp(const arclen_hodo *h, double complex z) {
-  double t = creal(z), hv[3], d1[3], d2[3], g, dg, half_width, dd;
+static arclen_cx near_cusp(const arclen_hodo *h, arclen_cx z) {
+  double t = z.re, hv[3], d1[3], d2[3], g, dg, half_width, dd;
   int it, k;
-  if (!(fabs(cimag(z)) < 1e-3 * (1 + fabs(t))) || !(fabs(t) < 1e6)) return z;
+  if (!(fabs(z.im) < 1e-3 * (1 + fabs(t))) || !(fabs(t) < 1e6)) return z;
   for (it = 0; it < 20; it++) {
     g = dg = 0;
     for (k = 0; k < 3; k++) {
@@ -143,8 +144,8 @@ static double complex near_cusp(const arclen_hodo *h, double complex z) {
     half_width += hv[k] * hv[k];
     dd += d1[k] * d1[k];
   }
-  if (!(dd > 0) || !(fabs(t - creal(z)) < 1e-3 * (1 + fabs(t)))) return z;
-  return t + I * sqrt(half_width / dd);
+  if (!(dd > 0) || !(fabs(t - z.re) < 1e-3 * (1 + fabs(t)))) return z;
+  return arclen_cx_make(t, sqrt(half_width / dd));
 }
 
 /* Representatives of two roots of Q this close (relative) are a cluster:
@@ -158,7 +159,7 @@ __attribute__((noinline))
 #endif
 static void branch3(const arclen_hodo *h, arclen_branch *b) {
   double q[5] = {0, 0, 0, 0, 0}, re[4], im[4];
-  double complex z[4], rep[4];
+  arclen_cx z[4], rep[4];
   int used[4] = {0, 0, 0, 0};
   int k, j, n, nr = 0, deg = 4;
   for (k = 0; k < 3; k++) {
@@ -183,7 +184,7 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
   /* Q's coefficients are rounded sums: the refined roots of those digits
   ** buy the bound nothing, so the solver's plain form (roots3d.h) */
   n = arclen_quartic_plain(q[4], q[3], q[2], q[1], q[0], re, im);
-  for (k = 0; k < n; k++) z[k] = re[k] + I * im[k];
+  for (k = 0; k < n; k++) z[k] = arclen_cx_make(re[k], im[k]);
   for (k = 0; k < n; k++) {
     int best = -1;
     double bestd = HUGE_VAL;
@@ -192,23 +193,27 @@ static void branch3(const arclen_hodo *h, arclen_branch *b) {
     for (j = 0; j < n; j++) {
       double dist;
       if (used[j]) continue;
-      dist = cabs(z[j] - conj(z[k]));
+      dist = arclen_cx_abs(arclen_cx_sub(z[j], arclen_cx_conj(z[k])));
       if (dist < bestd) { bestd = dist; best = j; }
     }
     if (best >= 0) used[best] = 1;
     /* the pair's mean: (z + conj(partner)) / 2, in the upper half plane */
-    rep[nr] = best >= 0 ? (z[k] + conj(z[best])) / 2 : z[k];
-    rep[nr] = creal(rep[nr]) + I * fabs(cimag(rep[nr]));
+    rep[nr] = z[k];
+    if (best >= 0)
+      rep[nr] = arclen_cx_div_re(
+          arclen_cx_add(z[k], arclen_cx_conj(z[best])), 2);
+    rep[nr].im = fabs(rep[nr].im);
     nr++;
   }
   if (deg == 4 && nr == 2 &&
-      cabs(rep[0] - rep[1]) <= CLUSTER_REL * fmax(1, cabs(rep[0])) &&
+      arclen_cx_abs(arclen_cx_sub(rep[0], rep[1])) <=
+          CLUSTER_REL * fmax(1, arclen_cx_abs(rep[0])) &&
       arclen_roots3d(h->a2, h->a1, h->a0, re, im) == ARCLEN_OK) {
     /* close roots (a stop: a quadruple root, found to eps^(1/4) from Q's
     ** coefficients; a near double pair): the elliptic method's, set in a
     ** frame about their cluster (roots/roots3d.c) */
-    add_pair(b, re[0] + I * im[0], REAL_ROOT_RTOL3);
-    add_pair(b, re[1] + I * im[1], REAL_ROOT_RTOL3);
+    add_pair(b, arclen_cx_make(re[0], im[0]), REAL_ROOT_RTOL3);
+    add_pair(b, arclen_cx_make(re[1], im[1]), REAL_ROOT_RTOL3);
     return;
   }
   for (k = 0; k < nr; k++) add_pair(b, near_cusp(h, rep[k]), REAL_ROOT_RTOL3);

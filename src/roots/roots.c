@@ -56,9 +56,9 @@ int arclen_quadratic(double a2, double a1, double a0, double re[2],
   }
   /* the discriminant with one rounding error: fma keeps a1^2's low bits */
   {
-    double p = a1 * a1, pe = fma(a1, a1, -p);
+    double p = a1 * a1, pe = arclen_fma(a1, a1, -p);
     /* 4 (a2 a0), not (4 a2) a0: a2 near DBL_MAX with a0 = 0 gave inf * 0 */
-    double t = a2 * a0, r = 4 * t, re_ = 4 * fma(a2, a0, -t);
+    double t = a2 * a0, r = 4 * t, re_ = 4 * arclen_fma(a2, a0, -t);
     d = (p - r) + (pe - re_);
   }
   if (d >= 0) {
@@ -556,7 +556,8 @@ static void taylor_shift(double *b, int d, double s) {
   int i, j;
   for (i = 0; i < d; i++)
     for (j = d - 1; j >= i; j--) {
-      double ph = s * b[j + 1], pe = fma(s, b[j + 1], -ph) + s * lo[j + 1];
+      double ph = s * b[j + 1];
+      double pe = arclen_fma(s, b[j + 1], -ph) + s * lo[j + 1];
       double e, h = two_sum(b[j], ph, &e);
       e += lo[j] + pe;
       b[j] = h + e;                 /* renormalise (|e| <= ulp(h)) */
@@ -702,13 +703,13 @@ static int poly_roots(const double *p, int n, double *re, double *im) {
 ** coefficients as given -- the attainable accuracy when they are exact
 ** (Algorithm 1010 reaches it by Newton on its factors in the same way). */
 
-/* a b = p + *e exactly (TwoProduct by a fused multiply-add: fma rounds
-** once, so a b - p comes out exact whatever the compiler contracts; Dekker's
-** split in plain arithmetic does not survive contraction of its own
-** products).  dd_value's terms stay within 2^+-540: no underflow in e. */
+/* a b = p + *e exactly (TwoProduct by a fused multiply-add: arclen_fma
+** rounds once, so a b - p comes out exact whatever the compiler contracts;
+** Dekker's split in plain arithmetic does not survive contraction of its
+** own products).  dd_value's terms stay within 2^+-540: no underflow in e. */
 static double two_prod(double a, double b, double *e) {
   double p = a * b;
-  *e = fma(a, b, -p);
+  *e = arclen_fma(a, b, -p);
   return p;
 }
 

@@ -217,7 +217,8 @@ void svgdoc_transform(svgdoc *D, unsigned long line, unsigned long col,
                (int)(len > 64 ? 64 : len), s + i);
       if (len > 64) {
         svgdoc_fail(D, line, col, "transform='%s': unknown transform '%.*s' "
-                    "at character %zu", s, (int)len, s + i, i + 1);
+                    "at character %lu", s, (int)len, s + i,
+                    (unsigned long)(i + 1));
       }
       why = whybuf;
       goto bad;
@@ -283,8 +284,8 @@ void svgdoc_transform(svgdoc *D, unsigned long line, unsigned long col,
       svgdoc_fail(D, line, col, "transform='%s' overflows", s);
   return;
 bad:
-  svgdoc_fail(D, line, col, "transform='%s': %s at character %zu", s, why,
-              i + 1);
+  svgdoc_fail(D, line, col, "transform='%s': %s at character %lu", s, why,
+              (unsigned long)(i + 1));
 }
 
 /* ---- viewBox ------------------------------------------------------------ */

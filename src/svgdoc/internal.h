@@ -76,6 +76,10 @@ struct svgdoc {
 
 /* ---- memory and errors (memory.c) ---- */
 
+/* The formats below use only C89's conversions (sizes as %lu of an
+** unsigned long): MinGW checks them as msvcrt's printf, which has no %zu,
+** and that is the printf that runs there. */
+
 /* A located error: the message, then a jump to D->on_error. */
 #if defined(__GNUC__)
 __attribute__((noreturn, format(printf, 4, 5)))

@@ -190,7 +190,9 @@ static const char *pathdata_message(svgdoc *D, const arclen_pathdata *pd,
   size_t n = arclen_pathdata_message(pd, d, NULL, 0);
   char *m = svgdoc_alloc(D, n + 1);
   arclen_pathdata_message(pd, d, m, n + 1);
-  if (pd->err.pos) return svgdoc_format(D, "%s at position %zu", m, pd->err.pos);
+  if (pd->err.pos)
+    return svgdoc_format(D, "%s at position %lu", m,
+                         (unsigned long)pd->err.pos);
   return m;
 }
 
@@ -336,7 +338,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
       if (label || id) f->layer = copy(D, label ? label : id);
     } else if (parent->top && !sh) {
       D->ngroups++;
-      f->layer = id ? copy(D, id) : svgdoc_format(D, "g%zu", D->ngroups);
+      f->layer = id ? copy(D, id) : svgdoc_format(D, "g%lu", (unsigned long)D->ngroups);
     }
   } else if (strcmp(tag, "switch") == 0) {
     f->is_switch = 1;

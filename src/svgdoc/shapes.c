@@ -53,7 +53,8 @@ static const char *points_data(svgdoc *D, unsigned long line,
   for (i = arclen_decimal_list_start(s, n); i < n;) {
     size_t e = arclen_decimal_list_next(s, n, i, &v[count % 2]);
     if (e == i)
-      svgdoc_fail(D, line, col, "points: not a number at character %zu", i + 1);
+      svgdoc_fail(D, line, col, "points: not a number at character %lu",
+                  (unsigned long)(i + 1));
     i = e;
     count++;
     if (count == 2) first[0] = v[0], first[1] = v[1];
