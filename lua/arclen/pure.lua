@@ -19,8 +19,10 @@ local M = {engine = "lua", _VERSION = "arclen 0.1.0", tol_min = 1e-15, tol_max =
 local NEEDS_C = "needs the C core (arclen.core), which is not loaded: in plain Lua "
   .. "build it (make, or luarocks make); in LuaTeX run lualatex --shell-escape"
 
-local function argerror(n, fname, msg, level)
-  error(format("bad argument #%d to '%s' (%s)", n, fname, msg), (level or 2) + 1)
+-- "bad argument #n to 'fname' (msg)", as luaL_argerror raises it from a C
+-- function: without a position.
+local function argerror(n, fname, msg)
+  error(format("bad argument #%d to '%s' (%s)", n, fname, msg), 0)
 end
 
 local function isfinite(x)
@@ -39,40 +41,40 @@ local function check_curve(fname, ...)
   if type(a1) == "number" then
     local n, extra, k = select("#", ...), EXTRA[fname] or 0, 0
     while k < n and k < 12 + extra and type((select(k + 1, ...))) == "number" do k = k + 1 end
-    if k - extra == 12 then argerror(1, fname, "a 3D curve " .. NEEDS_C, 3) end
+    if k - extra == 12 then argerror(1, fname, "a 3D curve " .. NEEDS_C) end
     for i = 1, 8 do
       local v = select(i, ...)
       if type(v) ~= "number" then
         argerror(i, fname, format("coordinate must be a number, got %s",
-          v == nil and "no value" or type(v)), 3)
+          v == nil and "no value" or type(v)))
       end
-      if not isfinite(v) then argerror(i, fname, "coordinate must be finite", 3) end
+      if not isfinite(v) then argerror(i, fname, "coordinate must be finite") end
       c[i] = v * 1.0       -- a float: integer arithmetic (5.3+) could wrap
     end
     return c, 9
   end
   if type(a1) ~= "table" then
     argerror(1, fname, format("curve expected (a table of 8 or 12 numbers or of 4 points), got %s",
-      a1 == nil and "no value" or type(a1)), 3)
+      a1 == nil and "no value" or type(a1)))
   end
   if type(a1[1]) == "table" then
     local dim = #a1[1]
     if #a1 ~= 4 or (dim ~= 2 and dim ~= 3) then
-      argerror(1, fname, "curve must have 4 points of 2 or 3 coordinates", 3)
+      argerror(1, fname, "curve must have 4 points of 2 or 3 coordinates")
     end
-    if dim == 3 then argerror(1, fname, "a 3D curve " .. NEEDS_C, 3) end
+    if dim == 3 then argerror(1, fname, "a 3D curve " .. NEEDS_C) end
     for i = 1, 4 do
       local p = a1[i]
       if type(p) ~= "table" or #p ~= dim then
-        argerror(1, fname, format("point %d must be a table of %d numbers", i, dim), 3)
+        argerror(1, fname, format("point %d must be a table of %d numbers", i, dim))
       end
       for k = 1, 2 do
         local v = p[k]
         if type(v) ~= "number" then
-          argerror(1, fname, format("coordinate of point %d must be a number", i), 3)
+          argerror(1, fname, format("coordinate of point %d must be a number", i))
         end
         if not isfinite(v) then
-          argerror(1, fname, format("coordinate of point %d must be finite", i), 3)
+          argerror(1, fname, format("coordinate of point %d must be finite", i))
         end
         c[2 * (i - 1) + k] = v * 1.0
       end
@@ -81,15 +83,15 @@ local function check_curve(fname, ...)
   end
   local n = #a1
   if n ~= 8 and n ~= 12 then
-    argerror(1, fname, format("curve must have 8 (2D) or 12 (3D) numbers, got %d", n), 3)
+    argerror(1, fname, format("curve must have 8 (2D) or 12 (3D) numbers, got %d", n))
   end
-  if n == 12 then argerror(1, fname, "a 3D curve " .. NEEDS_C, 3) end
+  if n == 12 then argerror(1, fname, "a 3D curve " .. NEEDS_C) end
   for i = 1, 8 do
     local v = a1[i]
     if type(v) ~= "number" then
-      argerror(1, fname, format("curve coordinate %d must be a number", i), 3)
+      argerror(1, fname, format("curve coordinate %d must be a number", i))
     end
-    if not isfinite(v) then argerror(1, fname, format("curve coordinate %d must be finite", i), 3) end
+    if not isfinite(v) then argerror(1, fname, format("curve coordinate %d must be finite", i)) end
     c[i] = v * 1.0
   end
   return c, 2
@@ -97,7 +99,7 @@ end
 
 local function check_tol(v, arg, fname)
   if not (v >= M.tol_min and v <= M.tol_max) then
-    argerror(arg, fname, "tol must be in [1e-15, 0.1]", 4)
+    argerror(arg, fname, "tol must be in [1e-15, 0.1]")
   end
   return v
 end
@@ -118,31 +120,31 @@ local function check_opts(opts, arg, fname)
   local rtol, t0, t1, info = 1e-12, 0, 1, false
   if opts == nil then return rtol, t0, t1, info end
   if type(opts) ~= "table" then
-    argerror(arg, fname, "options table expected, got " .. type(opts), 3)
+    argerror(arg, fname, "options table expected, got " .. type(opts))
   end
   for key, v in pairs(opts) do
-    if type(key) ~= "string" then argerror(arg, fname, "option names must be strings", 3) end
+    if type(key) ~= "string" then argerror(arg, fname, "option names must be strings") end
     if key == "tol" then
-      if type(v) ~= "number" then argerror(arg, fname, "tol must be a number", 3) end
+      if type(v) ~= "number" then argerror(arg, fname, "tol must be a number") end
       rtol = check_tol(v, arg, fname)
     elseif key == "method" then
-      if type(v) ~= "string" then argerror(arg, fname, "method must be a string", 3) end
+      if type(v) ~= "string" then argerror(arg, fname, "method must be a string") end
       if C_METHODS[v] ~= nil then c_method_error(arg, fname, v, 3) end
-      if v ~= "gauss" then argerror(arg, fname, format("unknown method '%s'", v), 3) end
+      if v ~= "gauss" then argerror(arg, fname, format("unknown method '%s'", v)) end
     elseif key == "t0" or key == "t1" or key == "steps" then
-      if type(v) ~= "number" then argerror(arg, fname, key .. " must be a number", 3) end
+      if type(v) ~= "number" then argerror(arg, fname, key .. " must be a number") end
       if key == "steps" then
         if not (v >= 1 and v <= 1e9) then
-          argerror(arg, fname, "steps must be in [1.000000, 1000000000.000000]", 3)
+          argerror(arg, fname, "steps must be in [1.000000, 1000000000.000000]")
         end
-        if v ~= floor(v) then argerror(arg, fname, "steps must be an integer", 3) end
+        if v ~= floor(v) then argerror(arg, fname, "steps must be an integer") end
       elseif not (v >= 0 and v <= 1) then
-        argerror(arg, fname, key .. " must be in [0.000000, 1.000000]", 3)
+        argerror(arg, fname, key .. " must be in [0.000000, 1.000000]")
       elseif key == "t0" then t0 = v else t1 = v end
     elseif key == "info" then
       info = v and true or false
     else
-      argerror(arg, fname, format("unknown option '%s'", key), 3)
+      argerror(arg, fname, format("unknown option '%s'", key))
     end
   end
   return rtol, t0, t1, info
@@ -178,10 +180,10 @@ end
 
 local function check_t(t, arg, fname)
   if type(t) ~= "number" then
-    argerror(arg, fname, format("t must be a number, got %s", t == nil and "no value" or type(t)), 3)
+    argerror(arg, fname, format("t must be a number, got %s", t == nil and "no value" or type(t)))
   end
-  if not isfinite(t) then argerror(arg, fname, "t must be finite", 3) end
-  if not (t >= 0 and t <= 1) then argerror(arg, fname, "t must be in [0, 1]", 3) end
+  if not isfinite(t) then argerror(arg, fname, "t must be finite") end
+  if not (t >= 0 and t <= 1) then argerror(arg, fname, "t must be in [0, 1]") end
   return t
 end
 
@@ -299,9 +301,9 @@ end
 -- (Lua 5.3+); they only come from the C readers anyway.
 local function unpack_doubles(s, fname, arg)
   if not string.unpack then
-    argerror(arg, fname, "packed coordinates need Lua 5.3+ or the C core", 3)
+    argerror(arg, fname, "packed coordinates need Lua 5.3+ or the C core")
   end
-  if #s % 8 ~= 0 then argerror(arg, fname, "packed coordinates: a multiple of 8 bytes expected", 3) end
+  if #s % 8 ~= 0 then argerror(arg, fname, "packed coordinates: a multiple of 8 bytes expected") end
   local out, pos = {}, 1
   for i = 1, #s / 8 do out[i], pos = string.unpack("d", s, pos) end
   return out
@@ -343,10 +345,10 @@ local function read_distances(ds, arg, fname)
   for i = 1, #ds do
     local v = ds[i]
     if type(v) ~= "number" then
-      argerror(arg, fname, format("distance %d must be a number, got %s", i, v == nil and "nil" or type(v)), 3)
+      argerror(arg, fname, format("distance %d must be a number, got %s", i, v == nil and "nil" or type(v)))
     end
-    if v ~= v then argerror(arg, fname, format("distance %d is NaN", i), 3) end
-    if v < prev then argerror(arg, fname, "distances must be sorted (ascending)", 3) end
+    if v ~= v then argerror(arg, fname, format("distance %d is NaN", i)) end
+    if v < prev then argerror(arg, fname, "distances must be sorted (ascending)") end
     prev = v
     s[i] = v
   end
@@ -405,8 +407,11 @@ end
 
 -- arclen._cubics(packed) -> the packed cubics as tables of 8 numbers.
 function M._cubics(packed)
-  if type(packed) ~= "string" then argerror(1, "_cubics", "packed cubics (a string) expected") end
-  local v, out = unpack_doubles(packed, "_cubics", 1), {}
+  local v, out = packed, {}
+  if type(packed) == "string" then v = unpack_doubles(packed, "_cubics", 1)
+  elseif type(packed) ~= "table" then
+    argerror(1, "_cubics", "packed cubics (a string or a flat table) expected")
+  end
   for k = 1, #v / 8 do out[k] = {unpack(v, 8 * k - 7, 8 * k)} end
   return out
 end
@@ -432,13 +437,17 @@ function M._queries(ds, L, wrap)
   return r, ascending
 end
 
--- The path's segments: a list of cubics, or packed cubics (a string).
+-- The path's segments: a list of cubics, or packed cubics (a string, or
+-- a flat table of 8 numbers a cubic); returns their count and cubic(k).
 local function segments_of(segs)
-  if type(segs) == "string" then return M._cubics(segs) end
+  if type(segs) == "string" then segs = unpack_doubles(segs, "_walk", 1) end
   if type(segs) ~= "table" then
-    argerror(1, "_walk", "a list of cubics or packed cubics expected", 3)
+    argerror(1, "_walk", "a list of cubics or packed cubics expected")
   end
-  return segs
+  if type(segs[1]) ~= "number" then
+    return #segs, function(k) return segs[k] end
+  end
+  return floor(#segs / 8), function(k) return {unpack(segs, 8 * k - 7, 8 * k)} end
 end
 
 -- The walk: for the ascending distances ds (in [0, cum[n]]) on the path of
@@ -447,9 +456,9 @@ end
 -- segment that starts there (at_end: that ends there) -- each run of
 -- distances in one segment solved in one walk over its pieces.
 local function walk(segs, cum, ds, tol, at_end, emit)
-  segs = segments_of(segs)
+  local n, cubic = segments_of(segs)
   check_tol(tol, 4, "_walk")
-  local n, nd = #segs, #ds
+  local nd = #ds
   local d = read_distances(ds, 3, "_walk")
   if n == 0 or nd == 0 then return end
   local function past(x, k)         -- is x beyond segment k's end?
@@ -462,7 +471,7 @@ local function walk(segs, cum, ds, tol, at_end, emit)
     local j = i
     if k == n then j = nd
     else while j < nd and not past(d[j + 1], k) do j = j + 1 end end
-    local c, shift = segs[k], cum[k - 1]
+    local c, shift = cubic(k), cum[k - 1]
     local seglen = cum[k] - shift
     local s, inner, first = {}, {}, nil
     for q = i, j do
@@ -508,18 +517,22 @@ function M._walk_samples(segs, cum, ds, tol, out, tans, times)
   end)
 end
 
+-- arclen.svg_pathdata(d, arc_tol [, T]): SVG path data without arcs
+-- (pure_svgpath.lua), the cubics in a flat table rather than a string.
+M.svg_pathdata = require("arclen.pure_svgpath").svg_pathdata
+
 -- ---- what stays in the C core -----------------------------------------------
 
 local function c_only(name)
   return function()
-    error(format("arclen.%s %s", name, NEEDS_C), 2)
+    error(format("arclen.%s %s", name, NEEDS_C), 0)
   end
 end
 
 for _, name in ipairs({"carlson", "conic", "conic_length", "conic_scheme", "critical",
     "cubic", "ellipse_arc", "ellipse_conics", "fit", "fullcircle", "gauss_legendre",
     "lengths3", "quadratic", "quartic", "quartic_factor", "svg_arc", "svg_number",
-    "svg_numbers", "svg_pathdata"}) do
+    "svg_numbers"}) do
   M[name] = c_only(name)
 end
 M.metapost = {}
