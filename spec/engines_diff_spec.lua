@@ -120,6 +120,23 @@ describe("the Lua engine against the C core on random paths" .. NOTE, function()
     end)
   end
 
+  it("lengths of curves and sub-ranges at every scale, 1e-305 to 1e305 (tol 1e-12)", function()
+    -- found by fuzzing: Veltkamp's split overflowed for a sub-range of a
+    -- curve near 1e300, and the NaN hodograph measured 0
+    local r = H.rng(1305)
+    local worst = H.worst()
+    for i = 1, 2000 do
+      local sc, c = 10 ^ (math.floor(r() * 611) - 305), {}
+      for k = 1, 8 do c[k] = sc * (2 * r() - 1) end
+      local o = i % 2 == 0 and {t0 = r(), t1 = r()} or nil
+      local lc, ll = core.length(c, o), pure.length(c, o)
+      if lc ~= 0 then worst:add(math.abs(ll - lc) / math.abs(lc) / 2e-12, "curve " .. i) end
+    end
+    local big = {-9e299, 0, 9e299, 1e299, -9e299, 3e299, 9e299, 0}
+    worst:add(math.abs(pure.length(big, {t1 = 0.3}) / core.length(big, {t1 = 0.3}) - 1) / 2e-12, "near 1e300")
+    assert.is_true(worst.err <= 1, ("worst %s at %.3g of the bound"):format(tostring(worst.id), worst.err))
+  end)
+
   it("dashes and sub-paths agree (tol 1e-12)", function()
     local r = H.rng(4242)
     for i = 1, 300 do

@@ -88,9 +88,10 @@ local function dd_mul(xh, xl, yh, yl)
   return two_sum(p, e + (xh * yl + xl * yh))
 end
 
--- Coordinates beyond this may overflow in differences: such a curve is
--- scaled by 2^-64 first (exact), as the C core does (cubic.c).
-local HUGE_COORD = 1e300
+-- Coordinates beyond this may overflow in differences, or in Veltkamp's
+-- split (which multiplies by 2^27): such a curve is scaled by 2^-64 first
+-- (exact), as the C core does beyond 1e300 (cubic.c).
+local HUGE_COORD = 1e290
 
 -- The hodograph of the plane cubic c (8 numbers) over [t0, t1]: for the
 -- whole curve z'(t) = A2 t^2 + A1 t + A0 on [0, 1] (A0 = 3 d0, A1 = 6 (d1 -
@@ -140,7 +141,11 @@ function M.hodograph(c, t0, t1)
   end
   local big = 0
   for i = 1, 6 do
-    if abs(coef[i]) > big then big = abs(coef[i]) end
+    local v = coef[i]
+    if not (v - v == 0) then             -- inf or NaN: never a silent zero
+      error("arclen.pure: the hodograph overflowed (please report the curve)", 0)
+    end
+    if abs(v) > big then big = abs(v) end
   end
   if big == 0 then return nil end
   local e = exponent(big)
