@@ -2,15 +2,16 @@
 -- in plain Lua (5.1-5.4, LuaJIT), for where the C core cannot load (LuaTeX
 -- without --shell-escape, a platform without a binary).  Same names, same
 -- argument checks and messages, same guarantee (every distance within tol *
--- L): the default method on plane cubics (pure_gauss.lua).  3D curves, the
--- other methods (elliptic, metapost, fit, ...), conics, SVG path data and
--- the root solvers stay in the C core: asked for here, they raise an error
--- that says so and how to get it.
+-- L): the default method on plane cubics (pure_gauss.lua), SVG path data
+-- without arcs (pure_svgpath.lua).  3D curves, the other methods
+-- (elliptic, metapost, ...), conics, elliptical arcs, the root solvers and
+-- the speed's critical points stay in the C core: asked for here, they
+-- raise an error that says so and how to get it.
 --
 --   local core = require "arclen.engine"   -- this module or arclen.core
 local G = require("arclen.pure_gauss")
 
-local floor, abs, sqrt, huge = math.floor, math.abs, math.sqrt, math.huge
+local floor, sqrt, huge = math.floor, math.sqrt, math.huge
 local format = string.format
 local unpack = table.unpack or unpack
 
@@ -110,9 +111,14 @@ local C_METHODS = {["gravesen"] = false, ["gravesen-richardson"] = false,
   metapost = true, polyline = false, trapezoid = false,
   ["trapezoid-factored"] = false, elliptic = false}
 
-local function c_method_error(arg, fname, name, level)
-  argerror(arg, fname, format("method '%s' %s", name, NEEDS_C), level)
+local function c_method_error(arg, fname, name)
+  argerror(arg, fname, format("method '%s' %s", name, NEEDS_C))
 end
+
+-- The ranges in the C binding's messages: lua_pushfstring's %f prints
+-- numbers as this Lua's tostring does ("0.0" in 5.3+, "0" in 5.1).
+local function range(lo, hi) return "[" .. tostring(lo * 1.0) .. ", " .. tostring(hi * 1.0) .. "]" end
+local RANGE_T, RANGE_STEPS = range(0, 1), range(1, 1e9)
 
 -- The common options: tol, method, t0, t1, steps, info (as the C
 -- binding's arclenL_checkopts).  Returns rtol, t0, t1, info.
@@ -129,17 +135,15 @@ local function check_opts(opts, arg, fname)
       rtol = check_tol(v, arg, fname)
     elseif key == "method" then
       if type(v) ~= "string" then argerror(arg, fname, "method must be a string") end
-      if C_METHODS[v] ~= nil then c_method_error(arg, fname, v, 3) end
+      if C_METHODS[v] ~= nil then c_method_error(arg, fname, v) end
       if v ~= "gauss" then argerror(arg, fname, format("unknown method '%s'", v)) end
     elseif key == "t0" or key == "t1" or key == "steps" then
       if type(v) ~= "number" then argerror(arg, fname, key .. " must be a number") end
       if key == "steps" then
-        if not (v >= 1 and v <= 1e9) then
-          argerror(arg, fname, "steps must be in [1.000000, 1000000000.000000]")
-        end
+        if not (v >= 1 and v <= 1e9) then argerror(arg, fname, "steps must be in " .. RANGE_STEPS) end
         if v ~= floor(v) then argerror(arg, fname, "steps must be an integer") end
       elseif not (v >= 0 and v <= 1) then
-        argerror(arg, fname, key .. " must be in [0.000000, 1.000000]")
+        argerror(arg, fname, key .. " must be in " .. RANGE_T)
       elseif key == "t0" then t0 = v else t1 = v end
     elseif key == "info" then
       info = v and true or false
