@@ -30,6 +30,20 @@ local function isfinite(x)
   return x == x and x ~= huge and x ~= -huge
 end
 
+-- lauxlib's checks of a table and of a number (or numeric string)
+-- argument, with its messages.
+local function check_table(v, arg, fname)
+  if type(v) ~= "table" then argerror(arg, fname, "table expected, got " .. type(v)) end
+  return v
+end
+local function check_number(v, arg, fname)
+  local x = tonumber(v)
+  if type(v) ~= "number" and not (type(v) == "string" and x) then
+    argerror(arg, fname, "number expected, got " .. type(v))
+  end
+  return x
+end
+
 -- ---- arguments ---------------------------------------------------------------
 
 -- The curve at argument 1 of fname: a table of 8 numbers or of 4 points
@@ -415,6 +429,13 @@ function M._cubics(packed)
   if type(packed) == "string" then v = unpack_doubles(packed, "_cubics", 1)
   elseif type(packed) ~= "table" then
     argerror(1, "_cubics", "packed cubics (a string or a flat table) expected")
+  else
+    if #v % 8 ~= 0 then argerror(1, "_cubics", "packed cubics: a multiple of 8 numbers expected") end
+    for i = 1, #v do
+      if type(v[i]) ~= "number" or not isfinite(v[i]) then
+        argerror(1, "_cubics", format("cubic %d: coordinate %d must be finite", floor((i - 1) / 8) + 1, (i - 1) % 8 + 1))
+      end
+    end
   end
   for k = 1, #v / 8 do out[k] = {unpack(v, 8 * k - 7, 8 * k)} end
   return out
@@ -423,6 +444,8 @@ end
 -- arclen._queries(ds, L, wrap) -> r, ascending | nil, message: each
 -- distance a finite number, wrapped into [0, L) or clamped to [0, L].
 function M._queries(ds, L, wrap)
+  check_table(ds, 1, "_queries")
+  L = check_number(L, 2, "_queries")
   local r, prev, ascending = {}, -huge, true
   for i = 1, #ds do
     local v = ds[i]
@@ -451,6 +474,7 @@ local function segments_of(segs)
   if type(segs[1]) ~= "number" then
     return #segs, function(k) return segs[k] end
   end
+  if #segs % 8 ~= 0 then argerror(1, "_walk", "packed cubics: a multiple of 8 numbers expected") end
   return floor(#segs / 8), function(k) return {unpack(segs, 8 * k - 7, 8 * k)} end
 end
 
@@ -461,10 +485,18 @@ end
 -- distances in one segment solved in one walk over its pieces.
 local function walk(segs, cum, ds, tol, at_end, emit)
   local n, cubic = segments_of(segs)
-  check_tol(tol, 4, "_walk")
+  check_table(cum, 2, "_walk")
+  check_table(ds, 3, "_walk")
+  check_tol(check_number(tol, 4, "_walk"), 4, "_walk")
   local nd = #ds
   local d = read_distances(ds, 3, "_walk")
   if n == 0 or nd == 0 then return end
+  local cums = {}                   -- cum[0..n] as numbers (lua_tonumber: else 0)
+  for k = 0, n do
+    cums[k] = tonumber(cum[k]) or 0
+    if not isfinite(cums[k]) then argerror(2, "_walk", "cumulative lengths must be finite") end
+  end
+  cum = cums
   local function past(x, k)         -- is x beyond segment k's end?
     if at_end then return cum[k] < x end
     return cum[k] <= x
@@ -498,6 +530,8 @@ end
 
 -- arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts)
 function M._walk_times(segs, cum, ds, tol, at_end, ks, ts)
+  check_table(ks, 6, "_walk_times")
+  check_table(ts, 7, "_walk_times")
   walk(segs, cum, ds, tol, at_end, function(q, k, t)
     ks[q], ts[q] = k, t
   end)
@@ -507,7 +541,10 @@ end
 -- {x =, y =, s =, time =, tx =, ty =} into out, or (tans a table or
 -- false) flat arrays of points, unit tangents and path times.
 function M._walk_samples(segs, cum, ds, tol, out, tans, times)
+  check_table(out, 5, "_walk_samples")
   local flat = tans ~= nil
+  if type(tans) ~= "table" then tans = nil end      -- flat, no tangents
+  if type(times) ~= "table" then times = nil end
   walk(segs, cum, ds, tol, false, function(q, k, t, c)
     local x, y = point_at(c, t)
     local tx, ty = unit_tangent(c, t)
