@@ -17,7 +17,7 @@
 --
 -- Units: the hodograph is scaled by a power of two (exact), so that the
 -- result depends neither on the curve's size nor on where it sits; lengths
--- inside are in scaled units and leave multiplied by `scale`.
+-- inside are in scaled units and leave multiplied by unit 2^exp.
 local rules = require("arclen.pure_rules")
 
 local abs, sqrt, floor, log = math.abs, math.sqrt, math.floor, math.log
@@ -40,7 +40,6 @@ local function mul_pow2(x, e)
   local h = e > 0 and floor(e / 2) or -floor(-e / 2)
   return x * POW2[h] * POW2[e - h]
 end
-M.mul_pow2 = mul_pow2
 
 -- The e with 2^(e-1) <= x < 2^e for a finite x > 0 (frexp's exponent),
 -- settled by exact comparisons, so that it does not depend on log().
@@ -99,9 +98,10 @@ local HUGE_COORD = 1e290
 -- its middle tc on [-1, 1]: H(u) = z'(tc) + hw z''(tc) u + hw^2 A2 u^2 (t =
 -- tc + hw u), formed in double-double from the exact differences, so that
 -- a part beside a near-cusp keeps its relative precision.  Returns h =
--- {x2, x1, x0, y2, y1, y0, lo, hi, scale} (scale: the factor from the
--- scaled integral over [lo, hi] to the curve's length), or nil when the
--- hodograph is zero (a point).
+-- {x2, x1, x0, y2, y1, y0 (the scaled coefficients), lo, hi (the range
+-- of the variable), unit, exp (a length over [lo, hi] in scaled units,
+-- times unit 2^exp, is the curve's)}, or nil when the hodograph is zero
+-- (a point).
 function M.hodograph(c, t0, t1)
   local pre = 1.0
   for i = 1, 8 do
@@ -161,7 +161,6 @@ local function speed(h, t)
   local y = (h.y2 * t + h.y1) * t + h.y0
   return sqrt(x * x + y * y)
 end
-M.speed = speed
 
 -- |z(b) - z(a)| from the antiderivative of the hodograph: a lower bound of
 -- the length between (for the tolerance's share).
@@ -295,7 +294,6 @@ local function piece_bound(br, c, hw)
   local lrho2 = g < 0.0625 and g * (1 - g / 2) / LN2 or log(1 + g) / LN2
   return logc + LOG2_MARGIN, lrho2 * (1 - LOG2_MARGIN), m, e, inside
 end
-M.piece_bound = piece_bound
 
 -- The least order on the ladder at or above n.
 local ORDERS = rules.orders
@@ -341,7 +339,6 @@ local function apply(h, r, c, hw)
   end
   return hw * sum
 end
-M.apply = apply
 
 -- ---- the adaptive integration ------------------------------------------
 
@@ -498,13 +495,14 @@ function M.length(c, t0, t1, rtol, want_info)
   if not info then
     -- the common case first: every first piece meets its share with one
     -- rule (the same pieces, rules and sums as the integration below)
-    local a, width = h.lo, h.hi - h.lo
+    local from, width = h.lo, h.hi - h.lo
     for i = 1, #cuts + 1 do
-      local b = cuts[i] or h.hi
-      local r = choose(br, a + (b - a) / 2, (b - a) / 2, target * ((b - a) / width))
+      local to = cuts[i] or h.hi
+      local mid, hw = from + (to - from) / 2, (to - from) / 2
+      local r = choose(br, mid, hw, target * ((to - from) / width))
       if not r then sum = nil; break end
-      sum = sum + apply(h, r, a + (b - a) / 2, (b - a) / 2)
-      a = b
+      sum = sum + apply(h, r, mid, hw)
+      from = to
     end
     if sum then return curve_units(h, t0 > t1 and -sum or sum) end
     sum = 0
