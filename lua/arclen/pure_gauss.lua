@@ -184,15 +184,16 @@ local REAL_RTOL = 1e-14
 -- square root of the discriminant on the side of A1, roots q/A2 and A0/q
 -- (Kahan's form of the quadratic formula, in complex arithmetic written
 -- out in real numbers).
+local function add(br, re, im)
+  im = abs(im)
+  if re - re ~= 0 or im - im ~= 0 then return end        -- inf or NaN
+  if im <= REAL_RTOL * (1 + abs(re)) then im = 0 end
+  local n = br.n + 1
+  br.n, br.re[n], br.im[n] = n, re, im
+end
+
 function M.branch_points(h)
   local br = {n = 0, re = {}, im = {}, lead = 0}
-  local function add(re, im)
-    im = abs(im)
-    if re - re ~= 0 or im - im ~= 0 then return end      -- inf or NaN
-    if im <= REAL_RTOL * (1 + abs(re)) then im = 0 end
-    br.n = br.n + 1
-    br.re[br.n], br.im[br.n] = re, im
-  end
   local x2, y2, x1, y1, x0, y0 = h.x2, h.y2, h.x1, h.y1, h.x0, h.y0
   local n2, n1 = x2 * x2 + y2 * y2, x1 * x1 + y1 * y1
   if n2 > 0 then
@@ -212,8 +213,8 @@ function M.branch_points(h)
     end
     br.lead = sqrt(n2)
     if qr == 0 and qi == 0 then       -- A1 = A0 = 0: a double root at 0
-      add(0, 0)
-      add(0, 0)
+      add(br, 0, 0)
+      add(br, 0, 0)
       return br
     end
     local qq = qr * qr + qi * qi
@@ -222,12 +223,12 @@ function M.branch_points(h)
       -- 2^-340, so that root is dropped and |q| (rounded up) leads instead
       br.lead = sqrt(qq) * (1 + POW2[-50])
     else                              -- q/A2 = q conj(A2) / |A2|^2
-      add((qr * x2 + qi * y2) / n2, (qi * x2 - qr * y2) / n2)
+      add(br, (qr * x2 + qi * y2) / n2, (qi * x2 - qr * y2) / n2)
     end
-    add((x0 * qr + y0 * qi) / qq, (y0 * qr - x0 * qi) / qq)   -- A0/q
+    add(br, (x0 * qr + y0 * qi) / qq, (y0 * qr - x0 * qi) / qq)   -- A0/q
   elseif n1 > 0 then                  -- a quadratic: z' linear, one root
     br.lead = sqrt(n1)
-    add(-(x0 * x1 + y0 * y1) / n1, -(y0 * x1 - x0 * y1) / n1)
+    add(br, -(x0 * x1 + y0 * y1) / n1, -(y0 * x1 - x0 * y1) / n1)
   else
     br.lead = sqrt(x0 * x0 + y0 * y0) -- a line run at constant speed
   end
@@ -456,11 +457,12 @@ end
 -- cut) the chords of 4, then 16 equal parts of each piece, still true
 -- lower bounds; only where those vanish too, half an 8-point rule, as the
 -- C core takes it.
+local PARTS = {1, 4, 16}
 local function lower_length(h, lo, hi, cuts)
   local ends = {lo}
   for i = 1, #cuts do ends[#ends + 1] = cuts[i] end
   ends[#ends + 1] = hi
-  for _, parts in ipairs({1, 4, 16}) do
+  for _, parts in ipairs(PARTS) do
     local sum = 0
     for i = 1, #ends - 1 do
       local a, w = ends[i], (ends[i + 1] - ends[i]) / parts
