@@ -131,7 +131,9 @@ end
 
 -- The ranges in the C binding's messages: lua_pushfstring's %f prints
 -- numbers as this Lua's tostring does ("0.0" in 5.3+, "0" in 5.1).
-local function range(lo, hi) return "[" .. tostring(lo * 1.0) .. ", " .. tostring(hi * 1.0) .. "]" end
+local function range(lo, hi)
+  return "[" .. tostring(lo * 1.0) .. ", " .. tostring(hi * 1.0) .. "]"
+end
 local RANGE_T, RANGE_STEPS = range(0, 1), range(1, 1e9)
 
 -- The common options: tol, method, t0, t1, steps, info (as the C
@@ -154,7 +156,9 @@ local function check_opts(opts, arg, fname)
     elseif key == "t0" or key == "t1" or key == "steps" then
       if type(v) ~= "number" then argerror(arg, fname, key .. " must be a number") end
       if key == "steps" then
-        if not (v >= 1 and v <= 1e9) then argerror(arg, fname, "steps must be in " .. RANGE_STEPS) end
+        if not (v >= 1 and v <= 1e9) then
+          argerror(arg, fname, "steps must be in " .. RANGE_STEPS)
+        end
         if v ~= floor(v) then argerror(arg, fname, "steps must be an integer") end
       elseif not (v >= 0 and v <= 1) then
         argerror(arg, fname, key .. " must be in " .. RANGE_T)
@@ -306,7 +310,7 @@ function M.methods() return {"gauss"} end
 
 function M.method(name)
   if type(name) ~= "string" then
-    argerror(1, "method", format("string expected, got %s", name == nil and "no value" or type(name)))
+    argerror(1, "method", "string expected, got " .. (name == nil and "no value" or type(name)))
   end
   if name == "gauss" then return {name = "gauss", time = true} end
   if C_METHODS[name] ~= nil then return {name = name, time = C_METHODS[name]} end
@@ -349,7 +353,9 @@ function M.lengths(coords, opts)
         argerror(1, fname, format("coordinate %d must be a number, got %s", 8 * (k - 1) + i,
           v == nil and "nil" or type(v)))
       end
-      if not isfinite(v) then argerror(1, fname, format("coordinate %d must be finite", 8 * (k - 1) + i)) end
+      if not isfinite(v) then
+        argerror(1, fname, format("coordinate %d must be finite", 8 * (k - 1) + i))
+      end
       c[i] = v * 1.0
     end
     out[k] = G.length(c, t0, t1, rtol)
@@ -363,7 +369,8 @@ local function read_distances(ds, arg, fname)
   for i = 1, #ds do
     local v = ds[i]
     if type(v) ~= "number" then
-      argerror(arg, fname, format("distance %d must be a number, got %s", i, v == nil and "nil" or type(v)))
+      argerror(arg, fname, format("distance %d must be a number, got %s", i,
+        v == nil and "nil" or type(v)))
     end
     if v ~= v then argerror(arg, fname, format("distance %d is NaN", i)) end
     if v < prev then argerror(arg, fname, "distances must be sorted (ascending)") end
@@ -392,7 +399,9 @@ function M.times(c, ds, opts)
   end
   local rtol, want_p, want_v = 1e-12, false, false
   if opts ~= nil then
-    if type(opts) ~= "table" then argerror(3, fname, "options table expected, got " .. type(opts)) end
+    if type(opts) ~= "table" then
+      argerror(3, fname, "options table expected, got " .. type(opts))
+    end
     for key, v in pairs(opts) do
       if type(key) ~= "string" then argerror(3, fname, "option names must be strings") end
       if key == "tol" then
@@ -430,10 +439,13 @@ function M._cubics(packed)
   elseif type(packed) ~= "table" then
     argerror(1, "_cubics", "packed cubics (a string or a flat table) expected")
   else
-    if #v % 8 ~= 0 then argerror(1, "_cubics", "packed cubics: a multiple of 8 numbers expected") end
+    if #v % 8 ~= 0 then
+      argerror(1, "_cubics", "packed cubics: a multiple of 8 numbers expected")
+    end
     for i = 1, #v do
       if type(v[i]) ~= "number" or not isfinite(v[i]) then
-        argerror(1, "_cubics", format("cubic %d: coordinate %d must be finite", floor((i - 1) / 8) + 1, (i - 1) % 8 + 1))
+        argerror(1, "_cubics", format("cubic %d: coordinate %d must be finite",
+          floor((i - 1) / 8) + 1, (i - 1) % 8 + 1))
       end
     end
   end
