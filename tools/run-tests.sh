@@ -115,6 +115,25 @@ if command -v lualatex >/dev/null && { [ -f build/5.3/arclen.so ] || [ -f build/
   count "tools/check-luatex.sh"
 fi
 suite 5.4 lua5.4
+# The path-level specs again on the Lua engine (what LuaTeX runs without
+# --shell-escape): under Lua 5.4 and under texlua, LuaTeX's own Lua.
+LUA_ENGINE_SPECS="spec/engine_spec.lua spec/engines_diff_spec.lua spec/length_spec.lua
+  spec/times_spec.lua spec/subrange_spec.lua spec/path_spec.lua spec/badinput_spec.lua
+  spec/batch_spec.lua spec/hostile_spec.lua spec/mpost_spec.lua spec/refdata_spec.lua"
+engine_suite() {   # engine_suite LUA BIN: those specs with ARCLEN_ENGINE=lua
+  echo "== path-level specs on the Lua engine (ARCLEN_ENGINE=lua, $2)"
+  ( ARCLEN_ENGINE=lua; export ARCLEN_ENGINE
+    busted_under "$2" --cpath="build/$1/?.so" \
+      --lpath="lua/?.lua;lua/?/init.lua;spec/?.lua" \
+      -o spec/summary_output.lua $LUA_ENGINE_SPECS ) 2>&1 | tee "$OUT"
+  count "busted on the Lua engine under $2"
+}
+engine_suite 5.4 lua5.4
+if command -v texlua >/dev/null && [ -f /usr/share/lua/5.3/busted/runner.lua ]; then
+  ( texlua_env 5.3; engine_suite 5.3 texlua; echo "$PASSED $FAILED" >"$OUT.totals" )
+  read PASSED FAILED <"$OUT.totals"
+  rm -f "$OUT.totals"
+fi
 # The LuaRocks release: packed from the work tree, installed offline (the
 # core rock alone, then with arclen-svg), the suite on the installed copy.
 if command -v luarocks >/dev/null; then

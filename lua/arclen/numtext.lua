@@ -15,7 +15,9 @@
 --   tonumber(s)       a decimal number (SVG's grammar, surrounded by
 --                     whitespace) or a hexadecimal integer, nil for anything
 --                     else, "1,5" included; decimals correctly rounded by
---                     arclen's own reader (src/svg/decimal.c)
+--                     arclen's own reader (src/svg/decimal.c), or under
+--                     the Lua engine by Lua's (strtod's) with the
+--                     locale's decimal point put in
 local M = {}
 
 local sformat, find, sub, match, huge = string.format, string.find, string.sub,
@@ -92,7 +94,14 @@ function M.tonumber(s)
   if decimal_end(body, 1) ~= #body + 1 then return nil end
   -- required here, not on loading: cli.lua run as a script sets
   -- package.cpath after its own requires
-  local v, e = require("arclen.core").svg_number(body, 1)
+  local engine = require("arclen.engine")
+  if engine.engine ~= "c" then
+    -- the Lua engine (no C core): Lua's own reader, strtod's correct
+    -- rounding, given the locale's decimal point for SVG's '.'
+    local p = point()
+    return ltonumber(p == "." and body or (body:gsub("%.", p)))
+  end
+  local v, e = engine.svg_number(body, 1)
   if v == nil then                     -- beyond the doubles, as tonumber
     return sub(body, 1, 1) == "-" and -huge or huge
   end

@@ -17,7 +17,7 @@
 -- its segment.  Every distance is within tol * length of the truth: each
 -- segment's length is within tol of its own (a relative bound, so the sum is
 -- too), and the time inside a segment is within tol of the segment's length.
-local arclen = require("arclen.core")
+local arclen = require("arclen.engine")
 local svgpath = require("arclen.svgpath")
 local mplibpath = require("arclen.mplib")
 
@@ -908,7 +908,10 @@ local M = {svg = from_svg, mplib = from_mplib, Path = Path}
 -- the readers' own (finite); the structure is checked.
 function M._from_subpaths(R, tol, method)
   local fname = "arclen.path._from_subpaths"
-  if type(R) ~= "table" or type(R.packed) ~= "string" or type(R.n) ~= "number" then
+  -- packed: a string of doubles (the C readers), a flat table (the Lua engine's)
+  local pk = type(R) == "table" and R.packed
+  if type(R) ~= "table" or (type(pk) ~= "string" and type(pk) ~= "table")
+     or type(R.n) ~= "number" then
     argerror(1, fname, "the readers' subpaths {packed =, n =, ...} expected")
   end
   local count = 0
@@ -920,7 +923,7 @@ function M._from_subpaths(R, tol, method)
     end
     count = count + sp.n
   end
-  if count ~= R.n or #R.packed ~= 64 * R.n then
+  if count ~= R.n or #pk ~= (type(pk) == "string" and 64 or 8) * R.n then
     argerror(1, fname, "the subpaths' counts do not match the packed cubics")
   end
   if not tol_ok(tol) then argerror(2, fname, "tol must be in " .. TOL_RANGE) end

@@ -21,7 +21,7 @@
 -- doc/svg.md lists the semantic choices made where the specification leaves
 -- room.
 local path = require("arclen.path")
-local core = require("arclen.core")
+local core = require("arclen.engine")
 
 -- The reader is an optional part (it links libexpat; the core does not):
 -- without it this module does not load, and says what to install.
