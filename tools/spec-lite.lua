@@ -82,7 +82,15 @@ end
 function pending() end
 
 assert = A
+-- Each file with the modules as they were before the first (busted's
+-- insulation): a module's state, such as mpost's warning given once,
+-- starts afresh for every file.
+local preloaded = {}
+for name, m in pairs(package.loaded) do preloaded[name] = m end
 for _, file in ipairs(arg) do
+  for name in pairs(package.loaded) do
+    if preloaded[name] == nil then package.loaded[name] = nil end
+  end
   tests = {}
   local chunk, err = loadfile(file)
   local ok = chunk ~= nil
