@@ -7,14 +7,8 @@
 -- and its exit status.
 local arclen = require("arclen")
 
--- This Lua: texlua and texluajit (LuaTeX's, with kpse built in) or a plain one.
-local function interpreter()
-  local tex = type(kpse) == "table"
-  if type(jit) == "table" then return tex and "texluajit" or "luajit" end
-  return tex and "texlua" or "lua" .. _VERSION:match("%d+%.%d+")
-end
+local interpreter, shquote = require("helpers").interpreter, require("helpers").shquote
 
-local function shquote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end
 
 local ERR = os.tmpname()
 local MAIN = os.tmpname()   -- a script that runs arclen.cli from the search paths

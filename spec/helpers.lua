@@ -147,4 +147,16 @@ function helpers.optional(name)
   return setmetatable({}, {__index = function() error(m, 2) end})
 end
 
+-- The Lua running the specs, by the name a shell finds it: texlua and
+-- texluajit (LuaTeX's, with kpse built in) or a plain one; for specs that
+-- run the command line as a subprocess.
+function helpers.interpreter()
+  local tex = type(kpse) == "table"
+  if type(jit) == "table" then return tex and "texluajit" or "luajit" end
+  return tex and "texlua" or "lua" .. _VERSION:match("%d+%.%d+")
+end
+
+-- s quoted for a POSIX shell.
+function helpers.shquote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end
+
 return helpers

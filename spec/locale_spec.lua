@@ -151,12 +151,7 @@ end)
 -- cli_spec out for the same reason).
 local describe_sh = package.config:sub(1, 1) == "/" and describe or function() end
 describe_sh("the command line under LC_NUMERIC = de_DE.UTF-8", function()
-  local function interpreter()
-    local tex = type(kpse) == "table"
-    if type(jit) == "table" then return tex and "texluajit" or "luajit" end
-    return tex and "texlua" or "lua" .. _VERSION:match("%d+%.%d+")
-  end
-  local function shquote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end
+  local interpreter, shquote = require("helpers").interpreter, require("helpers").shquote
   local ERR = os.tmpname()
 
   local function run(args)

@@ -6,14 +6,8 @@
 -- first (package.preload in this process; LUA_PATH for the command line).
 require("arclen")
 
-local function shquote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end
 
--- This Lua: texlua and texluajit (LuaTeX's, with kpse built in) or a plain one.
-local function interpreter()
-  local tex = type(kpse) == "table"
-  if type(jit) == "table" then return tex and "texluajit" or "luajit" end
-  return tex and "texlua" or "lua" .. _VERSION:match("%d+%.%d+")
-end
+local interpreter, shquote = require("helpers").interpreter, require("helpers").shquote
 
 describe("without the SVG document reader", function()
   it("require 'arclen.svg' fails with what to install", function()

@@ -9,10 +9,9 @@
 # Ends with a line "N passed, N failed"; builds missing a compiler are
 # counted as a failure (sh tools/deps.sh matrix installs clang).
 cd "$(dirname "$0")/.." || exit 2
-PASSED=0
-FAILED=0
 OUT=$(mktemp)
 trap 'rm -f "$OUT"' EXIT
+. tools/counting.sh    # PASSED, FAILED, count NAME (the last count in $OUT)
 
 run() {   # run NAME MAKE-ARGS...: build into build/NAME, run the specs
   name=$1
@@ -27,14 +26,7 @@ run() {   # run NAME MAKE-ARGS...: build into build/NAME, run the specs
   lua5.4 "$(command -v busted)" --cpath="build/$name/5.4/?.so" \
     --lpath="lua/?.lua;lua/?/init.lua;spec/?.lua" \
     -o spec/summary_output.lua spec 2>&1 | tee "$OUT"
-  line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$OUT" | tail -1)
-  if [ -z "$line" ]; then
-    echo "check-builds: $name printed no count: counted as 1 failure"
-    FAILED=$((FAILED + 1))
-    return
-  fi
-  PASSED=$((PASSED + $(echo "$line" | cut -d' ' -f1)))
-  FAILED=$((FAILED + $(echo "$line" | cut -d' ' -f3)))
+  count "the $name build"
 }
 
 run contract CC="$PWD/tools/cc-contract.sh"

@@ -12,21 +12,9 @@
 #   SMOKE=1 tools/run-tests.sh   only a smoke run (spec/smoke.lua) under
 #                                the Lua versions other than 5.4
 cd "$(dirname "$0")/.." || exit 2
-PASSED=0
-FAILED=0
 OUT=$(mktemp)
 trap 'rm -f "$OUT"' EXIT
-
-count() {   # add the "N passed, N failed" line of $OUT to the totals
-  line=$(grep -E '^[0-9]+ passed, [0-9]+ failed' "$OUT" | tail -1)
-  if [ -z "$line" ]; then
-    echo "run-tests: $1 printed no count: counted as 1 failure"
-    FAILED=$((FAILED + 1))
-    return
-  fi
-  PASSED=$((PASSED + $(echo "$line" | cut -d' ' -f1)))
-  FAILED=$((FAILED + $(echo "$line" | cut -d' ' -f3)))
-}
+. tools/counting.sh    # PASSED, FAILED, count NAME (the last count in $OUT)
 
 # busted on PATH: a Lua script (Debian's) runs under the Lua given; a
 # LuaRocks wrapper (a shell script) runs under the Lua it was installed for
