@@ -142,6 +142,7 @@ describe("the Lua engine against the C core on random paths" .. NOTE, function()
   end)
 
   it("SVG path data without arcs: the same cubics, subpaths and messages (3000 strings)", function()
+    local EPS = 2 ^ -52
     local r = H.rng(5150)
     local function pick(s) local k = math.floor(r() * #s) + 1; return s:sub(k, k) end
     local function number()
@@ -175,10 +176,20 @@ describe("the Lua engine against the C core on random paths" .. NOTE, function()
           bad[#bad + 1] = ("%q: C %s %s, Lua %s %s"):format(d, tostring(am), tostring(ap), tostring(bm), tostring(bp))
         end
       else
+        -- the same cubics to the bit where the C reader is built without
+        -- contraction (the Makefile's); a build that fuses its a*b+c (the
+        -- quadratics raised, the reflections) may differ by an ulp or two
+        -- of the path's size (make check-builds runs this spec so)
         local ca = core._cubics(a.packed)
         local same = a.n == b.n and #a == #b
+        local size = 0
         for k = 1, same and a.n or 0 do
-          for q = 1, 8 do same = same and ca[k][q] == b.packed[8 * (k - 1) + q] end
+          for q = 1, 8 do size = math.max(size, math.abs(ca[k][q])) end
+        end
+        for k = 1, same and a.n or 0 do
+          for q = 1, 8 do
+            same = same and math.abs(ca[k][q] - b.packed[8 * (k - 1) + q]) <= 4 * EPS * size
+          end
         end
         for j = 1, same and #a or 0 do
           local u, v = a[j], b[j]
