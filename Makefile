@@ -7,6 +7,7 @@
 #   make bench           speed ratios within one run
 #   make bench-icount    instructions per call under callgrind (valgrind)
 #   make bench-latency   each set-up step's time as a dependent chain
+#   make bench-engines   the Lua engine against the C core (Lua 5.3, LuaJIT)
 #   make install PREFIX=/usr/local
 
 LUA ?= 5.4
@@ -115,6 +116,15 @@ bench-icount: $(BUILD)/libarclen.a
 
 bench-latency: $(BUILD)/libarclen.a
 	$(MAKE) -C bench latency
+
+# The Lua engine (lua/arclen/pure.lua) against the C core on the same
+# curves, as ratios within one run, under texlua's Lua (5.3) and LuaJIT.
+.PHONY: bench-engines
+bench-engines:
+	$(MAKE) LUA=5.3
+	$(MAKE) LUA=jit
+	LUA_PATH='lua/?.lua;lua/?/init.lua' LUA_CPATH='$(BUILD)/5.3/?.so' lua5.3 bench/bench_engines.lua
+	LUA_PATH='lua/?.lua;lua/?/init.lua' LUA_CPATH='$(BUILD)/jit/?.so' luajit bench/bench_engines.lua
 
 install: $(ALL_MODULES)
 	mkdir -p $(DESTDIR)$(LIBDIR)/arclen $(DESTDIR)$(SHAREDIR)/arclen/repro $(DESTDIR)$(PREFIX)/bin

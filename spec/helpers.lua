@@ -106,6 +106,27 @@ function helpers.error_of(f, ...)
   return tostring(msg)
 end
 
+-- The engine the specs run on: "c", or "lua" (ARCLEN_ENGINE=lua, or
+-- where the C core does not load; lua/arclen/engine.lua).
+helpers.engine = require("arclen").engine
+
+-- helpers.c_only(it, what) -> an `it` for a spec of what only the C core
+-- has (what: "3D curves", "method 'metapost'", ...).  On the C core it is
+-- busted's own; on the Lua engine it names the reason in the spec's
+-- title and checks instead that the spec fails with the error naming
+-- the C core -- not skipped silently, and not pending (which the summary
+-- counts as failed).
+function helpers.c_only(it, what)
+  if helpers.engine == "c" then return it end
+  return function(name, fn)
+    it(name .. " [Lua engine: " .. what .. " need(s) the C core; checks that it says so]", function()
+      local ok, err = pcall(fn)
+      assert(not ok, "expected an error naming the C core")
+      assert(tostring(err):find("needs the C core", 1, true), tostring(err))
+    end)
+  end
+end
+
 -- Park-Miller's minimal standard generator: the same numbers in [0, 1)
 -- under every Lua (the products stay below 2^46, exact in doubles).
 function helpers.rng(seed)

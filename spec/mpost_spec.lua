@@ -4,6 +4,7 @@
 local mpost = require("arclen.mpost")
 local path = require("arclen.path")
 local arclen = require("arclen")
+local H = require("helpers")
 
 -- An open wave of three segments, as "o x,y,lx,ly,rx,ry ..." (17 digits).
 local segs = {{0, 0, 10, 20, 30, 20, 40, 0}, {40, 0, 50, -20, 70, -20, 80, 0},
@@ -39,7 +40,7 @@ describe("arclen.mpost", function()
     assert.are.equal("0", mpost.run("time", "double", "gauss", 0, K, -1))
   end)
 
-  it("method metapost: arclen.metapost's values", function()
+  H.c_only(it, "method 'metapost'")("method metapost: arclen.metapost's values", function()
     local L = arclen.metapost.path_arclength(segs)
     assert.are.equal(L, tonumber(mpost.run("length", "double", "metapost", 0, K)))
     local t = arclen.metapost.path_arctime(segs, 70)

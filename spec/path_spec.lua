@@ -20,7 +20,7 @@ describe("arclen.path: construction", function()
     assert.are.equal(path.svg, arclen.path.svg)
   end)
 
-  it("takes a list of cubics (8 numbers or 4 points), 2D or 3D", function()
+  H.c_only(it, "3D curves")("takes a list of cubics (8 numbers or 4 points), 2D or 3D", function()
     local p = arclen.path({{0, 0, 1, 0, 2, 0, 3, 0}, {{3, 0}, {3, 1}, {3, 2}, {3, 3}}})
     assert.are.equal(2, p:segments())
     assert.are.equal(6, p:length())
@@ -249,12 +249,16 @@ describe("arclen.path: the cache and the search", function()
   local p = path.svg(table.concat(parts, " "))
 
   it("measures each segment once", function()
-    -- the path layer calls the C core (arclen.core) directly: a path read
-    -- from path data measures its packed cubics in one arclen.lengths call
-    local core = require "arclen.core"
+    -- the path layer calls the engine (arclen.engine) directly: a path read
+    -- from path data measures its packed cubics (a string of doubles; a
+    -- flat table on the Lua engine) in one arclen.lengths call
+    local core = require "arclen.engine"
     local real, real_batch, calls = core.length, core.lengths, 0
     core.length = function(...) calls = calls + 1; return real(...) end
-    core.lengths = function(packed, ...) calls = calls + #packed / 64; return real_batch(packed, ...) end
+    core.lengths = function(packed, ...)
+      calls = calls + (type(packed) == "string" and #packed / 64 or #packed / 8)
+      return real_batch(packed, ...)
+    end
     local ok, err = pcall(function()
       p:length(); p:time(5000); p:point(123); p:resample(50)
     end)
@@ -347,7 +351,7 @@ end
 describe("arclen.path.mplib: knot tables from LuaTeX's mplib", function()
   local rows = H.tsv("mplib_knots.tsv")
 
-  it("reads every path (open, cyclic, a lone point) and agrees with MetaPost bit for bit", function()
+  H.c_only(it, "method 'metapost'")("reads every path (open, cyclic, a lone point) and agrees with MetaPost bit for bit", function()
     assert.is_true(#rows >= 10)
     local bad, cyc = {}, 0
     for _, row in ipairs(rows) do
@@ -400,6 +404,7 @@ describe("arclen.path.mplib: knot tables from LuaTeX's mplib", function()
 end)
 
 describe("arclen.path with method = 'metapost' (spec/data/mpost_paths.tsv)", function()
+  local it = H.c_only(it, "method 'metapost'")
   local function csv(s)
     local out = {}
     for v in s:gmatch("[^,]+") do out[#out + 1] = tonumber(v) end

@@ -15,14 +15,24 @@ local function coords(row)
   return c
 end
 
+-- The Lua engine measures plane cubics: its run takes the 2D rows (3D
+-- needs the C core), and says so in the specs' names.
+local only2d = H.engine == "lua"
+local NOTE = only2d and " [Lua engine: the 2D rows; 3D needs the C core]" or ""
+
 local function check(opts, bound)
-  local worst = H.worst()
+  local worst, n = H.worst(), 0
   for _, row in ipairs(rows) do
-    local o = {t0 = tonumber(row.t0), t1 = tonumber(row.t1)}
-    for k, v in pairs(opts) do o[k] = v end
-    local got = arclen.length(coords(row), o)
-    worst:add(H.relerr(got, tonumber(row.L)), ("%s [%s, %s]"):format(row.id, row.t0, row.t1))
+    local c = coords(row)
+    if not (only2d and #c ~= 8) then
+      local o = {t0 = tonumber(row.t0), t1 = tonumber(row.t1)}
+      for k, v in pairs(opts) do o[k] = v end
+      worst:add(H.relerr(arclen.length(c, o), tonumber(row.L)),
+                ("%s [%s, %s]"):format(row.id, row.t0, row.t1))
+      n = n + 1
+    end
   end
+  assert.is_true(n >= 200, "rows measured: " .. n)
   assert.is_true(worst.err <= bound,
     ("worst %s: %.3g > %.3g"):format(tostring(worst.id), worst.err, bound))
 end
@@ -31,13 +41,13 @@ describe("sub-ranges next to cusps (" .. #rows .. " ranges 1e-2 .. 1e-14 wide)",
   it("has the reference rows", function()
     assert.is_true(#rows >= 200)
   end)
-  it("default method, tol 1e-12: relative error <= 1e-12", function()
+  it("default method, tol 1e-12: relative error <= 1e-12" .. NOTE, function()
     check({tol = 1e-12}, 1e-12)
   end)
-  it("default method, tol 1e-15: relative error <= 1e-14", function()
+  it("default method, tol 1e-15: relative error <= 1e-14" .. NOTE, function()
     check({tol = 1e-15}, 1e-14)
   end)
-  it("elliptic: relative error <= 1e-13", function()
+  H.c_only(it, "method 'elliptic'")("elliptic: relative error <= 1e-13", function()
     check({method = "elliptic"}, 1e-13)
   end)
 end)

@@ -28,6 +28,7 @@ local rng = require("helpers").rng
 for _, file in ipairs({"curves2d.tsv", "curves3d.tsv"}) do
   describe("arclen.times against mpmath (" .. file .. ")", function()
     local rows = H.tsv(file)
+    local it = file:find("3d") and H.c_only(it, "3D curves") or it
     for _, tol in ipairs({1e-12, 1e-15}) do
       it(("L/4, L/2, 3L/4 in one call: |s(t) - s| <= %g L (tol %g)"):format(bound(tol), tol), function()
         local worst = H.worst()
@@ -103,7 +104,7 @@ describe("arclen.times: points and tangents", function()
     assert.are.same({2, 3, 2, 3}, pts)
     assert.are.same({0, 0, 0, 0}, v)
   end)
-  it("measures 3D curves", function()
+  H.c_only(it, "3D curves")("measures 3D curves", function()
     local q = {0, 0, 0, 1, 1, 1, 2, 2, 2, 3, 3, 3}
     local ts, pts = arclen.times(q, {math.sqrt(3)}, {points = true})
     assert.is_true(math.abs(ts[1] - 1 / 3) < 1e-12)
@@ -271,22 +272,25 @@ describe("arclen.time and arclen.times where the speed nearly stops", function()
     for _, v in ipairs(d) do s = s + (v / m) ^ 2 end
     return m * math.sqrt(s)
   end
-  local curves = {}
+  local curves, only2d = {}, H.engine == "lua"  -- the Lua engine: 3D needs the C core
   for _, row in ipairs(rows) do
     local cv = curves[#curves]
-    if not cv or cv.id ~= row.id then
-      cv = {id = row.id, c = cubic(row), L = tonumber(row.L), u = {}, T = {}}
-      curves[#curves + 1] = cv
+    if not (only2d and row.dim ~= "2") then
+      if not cv or cv.id ~= row.id then
+        cv = {id = row.id, c = cubic(row), L = tonumber(row.L), u = {}, T = {}}
+        curves[#curves + 1] = cv
+      end
+      cv.u[#cv.u + 1] = tonumber(row.u)
+      cv.T[#cv.T + 1] = tonumber(row.T)
     end
-    cv.u[#cv.u + 1] = tonumber(row.u)
-    cv.T[#cv.T + 1] = tonumber(row.T)
   end
   it("the reference holds the curves and the distances", function()
-    assert.are.equal(9, #curves)
     assert.are.equal(9 * 15, #rows)
+    assert.is_true(#curves == 9 or only2d and #curves >= 3)
   end)
   for _, tol in ipairs({1e-6, 1e-9, 1e-12, 1e-15}) do
-    it(("every distance within %g L (tol %g), one at a time and in one pass"):format(bound(tol), tol), function()
+    it(("every distance within %g L (tol %g), one at a time and in one pass%s"):format(bound(tol), tol,
+        only2d and " [Lua engine: the 2D curves; 3D needs the C core]" or ""), function()
       local worst = H.worst()
       for _, cv in ipairs(curves) do
         local s = {}

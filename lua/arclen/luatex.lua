@@ -8,7 +8,9 @@
 -- arclen.path, arclen.mpost, ...).  BUILD defaults to ROOT/build/5.3:
 -- LuaTeX's Lua is 5.3 (texlua), so `make LUA=5.3` builds what it loads.
 -- LuaTeX loads binary modules only with --shell-escape (or a restricted
--- shell escape that allows it); without it this raises a clear error.
+-- shell escape that allows it); without it arclen answers with its Lua
+-- engine (arclen.engine = "lua", lua/arclen/engine.lua), and
+-- arclen.core_error says why the C core did not load.
 --
 -- All of arclen's module-finding inside TeX is this one function.
 return function(root, build)

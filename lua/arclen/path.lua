@@ -17,7 +17,7 @@
 -- its segment.  Every distance is within tol * length of the truth: each
 -- segment's length is within tol of its own (a relative bound, so the sum is
 -- too), and the time inside a segment is within tol of the segment's length.
-local arclen = require("arclen.core")
+local arclen = require("arclen.engine")
 local svgpath = require("arclen.svgpath")
 local mplibpath = require("arclen.mplib")
 

@@ -21,7 +21,7 @@
 -- doc/svg.md lists the semantic choices made where the specification leaves
 -- room.
 local path = require("arclen.path")
-local core = require("arclen.core")
+local core = require("arclen.engine")
 
 local M = {}
 

@@ -17,7 +17,7 @@
 -- to the size of its image.  Errors are raised as {pos = byte position,
 -- msg = text} tables (pos nil for the transform's overflow); the caller
 -- turns them into "bad argument" messages.
-local svg_pathdata = require("arclen.core").svg_pathdata
+local svg_pathdata = require("arclen.engine").svg_pathdata
 
 local M = {}
 

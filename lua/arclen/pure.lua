@@ -1,0 +1,548 @@
+-- arclen.pure -- the Lua engine: what arclen.core gives the path layer,
+-- in plain Lua (5.1-5.4, LuaJIT), for where the C core cannot load (LuaTeX
+-- without --shell-escape, a platform without a binary).  Same names, same
+-- argument checks and messages, same guarantee (every distance within tol *
+-- L): the default method on plane cubics (pure_gauss.lua).  3D curves, the
+-- other methods (elliptic, metapost, fit, ...), conics, SVG path data and
+-- the root solvers stay in the C core: asked for here, they raise an error
+-- that says so and how to get it.
+--
+--   local core = require "arclen.engine"   -- this module or arclen.core
+local G = require("arclen.pure_gauss")
+
+local floor, abs, sqrt, huge = math.floor, math.abs, math.sqrt, math.huge
+local format = string.format
+local unpack = table.unpack or unpack
+
+local M = {engine = "lua", _VERSION = "arclen 0.1.0", tol_min = 1e-15, tol_max = 0.1}
+
+local NEEDS_C = "needs the C core (arclen.core), which is not loaded: in plain Lua "
+  .. "build it (make, or luarocks make); in LuaTeX run lualatex --shell-escape"
+
+-- "bad argument #n to 'fname' (msg)", as luaL_argerror raises it from a C
+-- function: without a position.
+local function argerror(n, fname, msg)
+  error(format("bad argument #%d to '%s' (%s)", n, fname, msg), 0)
+end
+
+local function isfinite(x)
+  return x == x and x ~= huge and x ~= -huge
+end
+
+-- ---- arguments ---------------------------------------------------------------
+
+-- The curve at argument 1 of fname: a table of 8 numbers or of 4 points
+-- {x, y}, or 8 numbers in a row; returns the 8 coordinates and the index
+-- of the argument after the curve.  3D curves raise: they need the C core.
+local EXTRA = {time = 1, point = 1, derivative = 1, split = 1, subcurve = 2}
+local function check_curve(fname, ...)
+  local a1 = ...
+  local c = {}
+  if type(a1) == "number" then
+    local n, extra, k = select("#", ...), EXTRA[fname] or 0, 0
+    while k < n and k < 12 + extra and type((select(k + 1, ...))) == "number" do k = k + 1 end
+    if k - extra == 12 then argerror(1, fname, "a 3D curve " .. NEEDS_C) end
+    for i = 1, 8 do
+      local v = select(i, ...)
+      if type(v) ~= "number" then
+        argerror(i, fname, format("coordinate must be a number, got %s",
+          v == nil and "no value" or type(v)))
+      end
+      if not isfinite(v) then argerror(i, fname, "coordinate must be finite") end
+      c[i] = v * 1.0       -- a float: integer arithmetic (5.3+) could wrap
+    end
+    return c, 9
+  end
+  if type(a1) ~= "table" then
+    argerror(1, fname, format("curve expected (a table of 8 or 12 numbers or of 4 points), got %s",
+      a1 == nil and "no value" or type(a1)))
+  end
+  if type(a1[1]) == "table" then
+    local dim = #a1[1]
+    if #a1 ~= 4 or (dim ~= 2 and dim ~= 3) then
+      argerror(1, fname, "curve must have 4 points of 2 or 3 coordinates")
+    end
+    if dim == 3 then argerror(1, fname, "a 3D curve " .. NEEDS_C) end
+    for i = 1, 4 do
+      local p = a1[i]
+      if type(p) ~= "table" or #p ~= dim then
+        argerror(1, fname, format("point %d must be a table of %d numbers", i, dim))
+      end
+      for k = 1, 2 do
+        local v = p[k]
+        if type(v) ~= "number" then
+          argerror(1, fname, format("coordinate of point %d must be a number", i))
+        end
+        if not isfinite(v) then
+          argerror(1, fname, format("coordinate of point %d must be finite", i))
+        end
+        c[2 * (i - 1) + k] = v * 1.0
+      end
+    end
+    return c, 2
+  end
+  local n = #a1
+  if n ~= 8 and n ~= 12 then
+    argerror(1, fname, format("curve must have 8 (2D) or 12 (3D) numbers, got %d", n))
+  end
+  if n == 12 then argerror(1, fname, "a 3D curve " .. NEEDS_C) end
+  for i = 1, 8 do
+    local v = a1[i]
+    if type(v) ~= "number" then
+      argerror(1, fname, format("curve coordinate %d must be a number", i))
+    end
+    if not isfinite(v) then argerror(1, fname, format("curve coordinate %d must be finite", i)) end
+    c[i] = v * 1.0
+  end
+  return c, 2
+end
+
+local function check_tol(v, arg, fname)
+  if not (v >= M.tol_min and v <= M.tol_max) then
+    argerror(arg, fname, "tol must be in [1e-15, 0.1]")
+  end
+  return v
+end
+
+-- The methods of the C core's registry: known names, each with or
+-- without a time (inverse); only "gauss" runs here.
+local C_METHODS = {["gravesen"] = false, ["gravesen-richardson"] = false,
+  metapost = true, polyline = false, trapezoid = false,
+  ["trapezoid-factored"] = false, elliptic = false}
+
+local function c_method_error(arg, fname, name, level)
+  argerror(arg, fname, format("method '%s' %s", name, NEEDS_C), level)
+end
+
+-- The common options: tol, method, t0, t1, steps, info (as the C
+-- binding's arclenL_checkopts).  Returns rtol, t0, t1, info.
+local function check_opts(opts, arg, fname)
+  local rtol, t0, t1, info = 1e-12, 0, 1, false
+  if opts == nil then return rtol, t0, t1, info end
+  if type(opts) ~= "table" then
+    argerror(arg, fname, "options table expected, got " .. type(opts))
+  end
+  for key, v in pairs(opts) do
+    if type(key) ~= "string" then argerror(arg, fname, "option names must be strings") end
+    if key == "tol" then
+      if type(v) ~= "number" then argerror(arg, fname, "tol must be a number") end
+      rtol = check_tol(v, arg, fname)
+    elseif key == "method" then
+      if type(v) ~= "string" then argerror(arg, fname, "method must be a string") end
+      if C_METHODS[v] ~= nil then c_method_error(arg, fname, v, 3) end
+      if v ~= "gauss" then argerror(arg, fname, format("unknown method '%s'", v)) end
+    elseif key == "t0" or key == "t1" or key == "steps" then
+      if type(v) ~= "number" then argerror(arg, fname, key .. " must be a number") end
+      if key == "steps" then
+        if not (v >= 1 and v <= 1e9) then
+          argerror(arg, fname, "steps must be in [1.000000, 1000000000.000000]")
+        end
+        if v ~= floor(v) then argerror(arg, fname, "steps must be an integer") end
+      elseif not (v >= 0 and v <= 1) then
+        argerror(arg, fname, key .. " must be in [0.000000, 1.000000]")
+      elseif key == "t0" then t0 = v else t1 = v end
+    elseif key == "info" then
+      info = v and true or false
+    else
+      argerror(arg, fname, format("unknown option '%s'", key))
+    end
+  end
+  return rtol, t0, t1, info
+end
+
+-- ---- the curve functions ---------------------------------------------------
+
+-- arclen.length(c [, opts]) -> L [, info]
+function M.length(...)
+  local c, next = check_curve("length", ...)
+  local rtol, t0, t1, want = check_opts((select(next, ...)), next, "length")
+  local len, info = G.length(c, t0, t1, rtol, want)
+  if want then return len, info end
+  return len
+end
+
+-- arclen.time(c, s [, opts]) -> t with |s(t) - s| <= tol L; 0 for s <= 0,
+-- 1 for s at or past the length.
+function M.time(...)
+  local c, next = check_curve("time", ...)
+  local s = select(next, ...)
+  if type(s) ~= "number" or s ~= s then
+    argerror(next, "time", "length must be a number (not NaN)")
+  end
+  local rtol, t0, t1, want = check_opts((select(next + 1, ...)), next + 1, "time")
+  if t0 ~= 0 or t1 ~= 1 then argerror(next + 1, "time", "t0 and t1 do not apply to time") end
+  local ts, evals = G.times(c, {s}, rtol)
+  if want then
+    return ts[1], {evals = evals, pieces = 0, depth = 0, err = 0, calls = 0}
+  end
+  return ts[1]
+end
+
+local function check_t(t, arg, fname)
+  if type(t) ~= "number" then
+    argerror(arg, fname, format("t must be a number, got %s", t == nil and "no value" or type(t)))
+  end
+  if not isfinite(t) then argerror(arg, fname, "t must be finite") end
+  if not (t >= 0 and t <= 1) then argerror(arg, fname, "t must be in [0, 1]") end
+  return t
+end
+
+-- The point at t (Bernstein form, as the C core: exact at the ends).
+local function point_at(c, t)
+  local s = 1 - t
+  local b0, b1, b2, b3 = s * s * s, 3 * t * s * s, 3 * t * t * s, t * t * t
+  return b0 * c[1] + b1 * c[3] + b2 * c[5] + b3 * c[7],
+         b0 * c[2] + b1 * c[4] + b2 * c[6] + b3 * c[8]
+end
+
+-- z'(t) = 3 [(1-t)^2 (P1-P0) + 2t(1-t) (P2-P1) + t^2 (P3-P2)]
+local function derivative_at(c, t)
+  local s = 1 - t
+  local function d(k)
+    local d0, d1, d2 = c[k + 2] - c[k], c[k + 4] - c[k + 2], c[k + 6] - c[k + 4]
+    return 3 * (s * s * d0 + 2 * t * s * d1 + t * t * d2)
+  end
+  return d(1), d(2)
+end
+
+-- The unit tangent at t: z'(t) normalised; where z' vanishes the limit
+-- from z'' (its negative at t = 1, approached from the left), then z''';
+-- a point has none (zeros).
+local function unit_tangent(c, t)
+  local vx, vy = derivative_at(c, t)
+  local len = sqrt(vx * vx + vy * vy)
+  if len == 0 then
+    local u = 1 - t
+    vx = u * (c[5] - 2 * c[3] + c[1]) + t * (c[7] - 2 * c[5] + c[3])
+    vy = u * (c[6] - 2 * c[4] + c[2]) + t * (c[8] - 2 * c[6] + c[4])
+    if t == 1 then vx, vy = -vx, -vy end
+    len = sqrt(vx * vx + vy * vy)
+  end
+  if len == 0 then
+    vx = c[7] - 3 * c[5] + 3 * c[3] - c[1]
+    vy = c[8] - 3 * c[6] + 3 * c[4] - c[2]
+    len = sqrt(vx * vx + vy * vy)
+  end
+  if len == 0 then return 0, 0 end
+  return vx / len, vy / len
+end
+
+function M.point(...)
+  local c, next = check_curve("point", ...)
+  return point_at(c, check_t((select(next, ...)), next, "point"))
+end
+
+function M.derivative(...)
+  local c, next = check_curve("derivative", ...)
+  return derivative_at(c, check_t((select(next, ...)), next, "derivative"))
+end
+
+-- The blossom b(u1, u2, u3) by three de Casteljau steps.
+local function blossom(c, u1, u2, u3)
+  local out = {}
+  for k = 1, 2 do
+    local p0, p1, p2, p3 = c[k], c[k + 2], c[k + 4], c[k + 6]
+    local q0, q1, q2 = p0 + u1 * (p1 - p0), p1 + u1 * (p2 - p1), p2 + u1 * (p3 - p2)
+    local r0, r1 = q0 + u2 * (q1 - q0), q1 + u2 * (q2 - q1)
+    out[k] = r0 + u3 * (r1 - r0)
+  end
+  return out[1], out[2]
+end
+
+-- arclen.subcurve(c, t0, t1): b(t0,t0,t0), b(t0,t0,t1), b(t0,t1,t1),
+-- b(t1,t1,t1), the ends kept exact at 0 and 1.
+function M.subcurve(...)
+  local c, next = check_curve("subcurve", ...)
+  local t0 = check_t((select(next, ...)), next, "subcurve")
+  local t1 = check_t((select(next + 1, ...)), next + 1, "subcurve")
+  local out = {}
+  out[1], out[2] = blossom(c, t0, t0, t0)
+  out[3], out[4] = blossom(c, t0, t0, t1)
+  out[5], out[6] = blossom(c, t0, t1, t1)
+  out[7], out[8] = blossom(c, t1, t1, t1)
+  if t0 == 0 then out[1], out[2] = c[1], c[2] end
+  if t1 == 1 then out[7], out[8] = c[7], c[8] end
+  return out
+end
+
+-- arclen.split(c, t) -> left, right (de Casteljau).
+function M.split(...)
+  local c, next = check_curve("split", ...)
+  local t = check_t((select(next, ...)), next, "split")
+  local l, r = {}, {}
+  for k = 1, 2 do
+    local p0, p1, p2, p3 = c[k], c[k + 2], c[k + 4], c[k + 6]
+    local q0, q1, q2 = p0 + t * (p1 - p0), p1 + t * (p2 - p1), p2 + t * (p3 - p2)
+    local r0, r1 = q0 + t * (q1 - q0), q1 + t * (q2 - q1)
+    local s = r0 + t * (r1 - r0)
+    l[k], l[k + 2], l[k + 4], l[k + 6] = p0, q0, r0, s
+    r[k], r[k + 2], r[k + 4], r[k + 6] = s, r1, q2, p3
+  end
+  return l, r
+end
+
+-- arclen.methods() and arclen.method(name): the registry as this engine
+-- sees it -- gauss runs here; the C core's other methods are known (so
+-- that a path may name them) and raise when used.
+function M.methods() return {"gauss"} end
+
+function M.method(name)
+  if type(name) ~= "string" then
+    argerror(1, "method", format("string expected, got %s", name == nil and "no value" or type(name)))
+  end
+  if name == "gauss" then return {name = "gauss", time = true} end
+  if C_METHODS[name] ~= nil then return {name = name, time = C_METHODS[name]} end
+  return nil
+end
+
+-- ---- many curves, many distances ------------------------------------------
+
+-- Packed doubles (a string, as the C readers make them) need string.unpack
+-- (Lua 5.3+); they only come from the C readers anyway.
+local function unpack_doubles(s, fname, arg)
+  if not string.unpack then
+    argerror(arg, fname, "packed coordinates need Lua 5.3+ or the C core")
+  end
+  if #s % 8 ~= 0 then argerror(arg, fname, "packed coordinates: a multiple of 8 bytes expected") end
+  local out, pos = {}, 1
+  for i = 1, #s / 8 do out[i], pos = string.unpack("d", s, pos) end
+  return out
+end
+
+-- arclen.lengths(coords [, opts]) -> {L1, L2, ...}: 8 numbers a curve.
+function M.lengths(coords, opts)
+  local fname = "lengths"
+  if type(coords) == "string" then coords = unpack_doubles(coords, fname, 1)
+  elseif type(coords) ~= "table" then
+    argerror(1, fname, format("table of coordinates expected (8 numbers per curve), got %s",
+      coords == nil and "no value" or type(coords)))
+  end
+  local rtol, t0, t1, info = check_opts(opts, 2, fname)
+  if info then argerror(2, fname, "info does not apply to lengths") end
+  local n = #coords
+  if n % 8 ~= 0 then
+    argerror(1, fname, format("number of coordinates must be a multiple of 8, got %d", n))
+  end
+  local out, c = {}, {}
+  for k = 1, n / 8 do
+    for i = 1, 8 do
+      local v = coords[8 * (k - 1) + i]
+      if type(v) ~= "number" then
+        argerror(1, fname, format("coordinate %d must be a number, got %s", 8 * (k - 1) + i,
+          v == nil and "nil" or type(v)))
+      end
+      if not isfinite(v) then argerror(1, fname, format("coordinate %d must be finite", 8 * (k - 1) + i)) end
+      c[i] = v * 1.0
+    end
+    out[k] = G.length(c, t0, t1, rtol)
+  end
+  return out
+end
+
+-- The ascending distances of a table, checked (arg names it).
+local function read_distances(ds, arg, fname)
+  local s, prev = {}, -huge
+  for i = 1, #ds do
+    local v = ds[i]
+    if type(v) ~= "number" then
+      argerror(arg, fname, format("distance %d must be a number, got %s", i, v == nil and "nil" or type(v)))
+    end
+    if v ~= v then argerror(arg, fname, format("distance %d is NaN", i)) end
+    if v < prev then argerror(arg, fname, "distances must be sorted (ascending)") end
+    prev = v
+    s[i] = v
+  end
+  return s
+end
+
+-- G.times' results made ascending: each is within tol L of its distance,
+-- so the larger of two neighbours is too (s is monotone).
+local function times_of(c, s, rtol)
+  local ts = G.times(c, s, rtol)
+  for q = 2, #ts do
+    if ts[q] < ts[q - 1] then ts[q] = ts[q - 1] end
+  end
+  return ts
+end
+
+-- arclen.times(c, distances [, opts]) -> ts [, points [, tangents]]
+function M.times(c, ds, opts)
+  local fname = "times"
+  c = check_curve(fname, c)
+  if type(ds) ~= "table" then
+    argerror(2, fname, format("table expected, got %s", ds == nil and "no value" or type(ds)))
+  end
+  local rtol, want_p, want_v = 1e-12, false, false
+  if opts ~= nil then
+    if type(opts) ~= "table" then argerror(3, fname, "options table expected, got " .. type(opts)) end
+    for key, v in pairs(opts) do
+      if type(key) ~= "string" then argerror(3, fname, "option names must be strings") end
+      if key == "tol" then
+        if type(v) ~= "number" then argerror(3, fname, "tol must be a number") end
+        rtol = check_tol(v, 3, fname)
+      elseif key == "points" then want_p = v and true or false
+      elseif key == "tangents" then want_v = v and true or false
+      else argerror(3, fname, format("unknown option '%s'", key)) end
+    end
+  end
+  local ts = times_of(c, read_distances(ds, 2, fname), rtol)
+  local pts, tans = want_p and {} or nil, want_v and {} or nil
+  for q = 1, #ts do
+    if pts then pts[2 * q - 1], pts[2 * q] = point_at(c, ts[q]) end
+    if tans then tans[2 * q - 1], tans[2 * q] = unit_tangent(c, ts[q]) end
+  end
+  if pts and tans then return ts, pts, tans end
+  if pts then return ts, pts end
+  if tans then return ts, tans end
+  return ts
+end
+
+-- arclen._array(n) -> a table for n items (the C core presizes it).
+function M._array(n)
+  if type(n) ~= "number" or not (n >= 0 and n <= 715827882 and n == floor(n)) then
+    argerror(1, "_array", "size must be an integer in [0, 715827882]")
+  end
+  return {}
+end
+
+-- arclen._cubics(packed) -> the packed cubics as tables of 8 numbers.
+function M._cubics(packed)
+  local v, out = packed, {}
+  if type(packed) == "string" then v = unpack_doubles(packed, "_cubics", 1)
+  elseif type(packed) ~= "table" then
+    argerror(1, "_cubics", "packed cubics (a string or a flat table) expected")
+  end
+  for k = 1, #v / 8 do out[k] = {unpack(v, 8 * k - 7, 8 * k)} end
+  return out
+end
+
+-- arclen._queries(ds, L, wrap) -> r, ascending | nil, message: each
+-- distance a finite number, wrapped into [0, L) or clamped to [0, L].
+function M._queries(ds, L, wrap)
+  local r, prev, ascending = {}, -huge, true
+  for i = 1, #ds do
+    local v = ds[i]
+    if type(v) ~= "number" then
+      return nil, format("distance %d must be a number, got %s", i, v == nil and "nil" or type(v))
+    end
+    if not isfinite(v) then return nil, format("distance %d must be finite", i) end
+    local x = v
+    if wrap then x = v - floor(v / L) * L
+    elseif v < 0 then x = 0
+    elseif v > L then x = L end
+    r[i] = x
+    if x < prev then ascending = false end
+    prev = x
+  end
+  return r, ascending
+end
+
+-- The path's segments: a list of cubics, or packed cubics (a string, or
+-- a flat table of 8 numbers a cubic); returns their count and cubic(k).
+local function segments_of(segs)
+  if type(segs) == "string" then segs = unpack_doubles(segs, "_walk", 1) end
+  if type(segs) ~= "table" then
+    argerror(1, "_walk", "a list of cubics or packed cubics expected")
+  end
+  if type(segs[1]) ~= "number" then
+    return #segs, function(k) return segs[k] end
+  end
+  return floor(#segs / 8), function(k) return {unpack(segs, 8 * k - 7, 8 * k)} end
+end
+
+-- The walk: for the ascending distances ds (in [0, cum[n]]) on the path of
+-- segments with cumulative lengths cum[0..n], call emit(q, k, t) with the
+-- segment k and time t of ds[q] -- a distance at a joint belongs to the
+-- segment that starts there (at_end: that ends there) -- each run of
+-- distances in one segment solved in one walk over its pieces.
+local function walk(segs, cum, ds, tol, at_end, emit)
+  local n, cubic = segments_of(segs)
+  check_tol(tol, 4, "_walk")
+  local nd = #ds
+  local d = read_distances(ds, 3, "_walk")
+  if n == 0 or nd == 0 then return end
+  local function past(x, k)         -- is x beyond segment k's end?
+    if at_end then return cum[k] < x end
+    return cum[k] <= x
+  end
+  local k, i = 1, 1
+  while i <= nd do
+    while k < n and past(d[i], k) do k = k + 1 end
+    local j = i
+    if k == n then j = nd
+    else while j < nd and not past(d[j + 1], k) do j = j + 1 end end
+    local c, shift = cubic(k), cum[k - 1]
+    local seglen = cum[k] - shift
+    local s, inner, first = {}, {}, nil
+    for q = i, j do
+      local x = d[q] - shift
+      s[q - i + 1] = x
+      if x > 0 and x < seglen then
+        first = first or q
+        inner[#inner + 1] = x
+      end
+    end
+    local ts = #inner > 0 and times_of(check_curve("_walk", c), inner, tol) or {}
+    for q = i, j do
+      local x, t = s[q - i + 1], nil
+      if x <= 0 then t = 0 elseif x >= seglen then t = 1 else t = ts[q - first + 1] end
+      emit(q, k, t, c)
+    end
+    i = j + 1
+  end
+end
+
+-- arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts)
+function M._walk_times(segs, cum, ds, tol, at_end, ks, ts)
+  walk(segs, cum, ds, tol, at_end, function(q, k, t)
+    ks[q], ts[q] = k, t
+  end)
+end
+
+-- arclen._walk_samples(segs, cum, ds, tol, out [, tans, times]): samples
+-- {x =, y =, s =, time =, tx =, ty =} into out, or (tans a table or
+-- false) flat arrays of points, unit tangents and path times.
+function M._walk_samples(segs, cum, ds, tol, out, tans, times)
+  local flat = tans ~= nil
+  walk(segs, cum, ds, tol, false, function(q, k, t, c)
+    local x, y = point_at(c, t)
+    local tx, ty = unit_tangent(c, t)
+    if flat then
+      out[2 * q - 1], out[2 * q] = x, y
+      if tans then tans[2 * q - 1], tans[2 * q] = tx, ty end
+      if times then times[q] = (k - 1) + t end
+    else
+      out[q] = {x = x, y = y, s = ds[q], time = (k - 1) + t, tx = tx, ty = ty}
+    end
+  end)
+end
+
+-- arclen.svg_pathdata(d, arc_tol [, T]): SVG path data without arcs
+-- (pure_svgpath.lua), the cubics in a flat table rather than a string.
+M.svg_pathdata = require("arclen.pure_svgpath").svg_pathdata
+
+-- ---- what stays in the C core -----------------------------------------------
+
+local function c_only(name)
+  return function()
+    error(format("arclen.%s %s", name, NEEDS_C), 0)
+  end
+end
+
+for _, name in ipairs({"carlson", "conic", "conic_length", "conic_scheme", "critical",
+    "cubic", "ellipse_arc", "ellipse_conics", "fit", "fullcircle", "gauss_legendre",
+    "lengths3", "quadratic", "quartic", "quartic_factor", "svg_arc", "svg_number",
+    "svg_numbers"}) do
+  M[name] = c_only(name)
+end
+M.metapost = {}
+for _, name in ipairs({"arclength", "arctime", "path_arclength", "path_arctime"}) do
+  M.metapost[name] = c_only("metapost." .. name)
+end
+M.carlson = {}
+for _, name in ipairs({"rc", "rd", "rf", "rg", "rj"}) do
+  M.carlson[name] = c_only("carlson." .. name)
+end
+M.NEEDS_C = NEEDS_C
+
+return M

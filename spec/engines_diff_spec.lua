@@ -1,0 +1,148 @@
+-- spec/engines_diff_spec.lua -- the Lua engine (arclen.pure) against the C
+-- core on random plane paths: every length, time and point of the one
+-- within the guarantee of the other.  Each engine is within tol * L of the
+-- truth, so two lengths differ by at most 2 tol L, and two points at one
+-- distance by at most 2 tol L (the chord is shorter than the arc); a time
+-- t from the Lua engine is measured back by the C core at tol 1e-15
+-- (itself within 1e-14 L): |s(t) - s| <= (tol + 1e-14) L.  Points are
+-- coordinates, rounded at their own size: the bound on them adds 4 eps
+-- times the largest coordinate (a curve 1e-3 long at x = 100).
+-- The paths: random cubics, and the cases that break methods -- degenerate
+-- handles (a control point on its end point), coincident points,
+-- zero-length segments, cusps and near-cusps, straight reversals.
+local H = require("helpers")
+local pure = require("arclen.pure")
+local has_core, core = pcall(require, "arclen.core")
+
+-- arclen.path loaded afresh on the given engine (svgpath too, which takes
+-- the engine's reader), leaving the loaded modules as they were.
+local function path_on(engine)
+  local names = {"arclen.engine", "arclen.path", "arclen.svgpath"}
+  local saved = {}
+  for _, n in ipairs(names) do saved[n] = package.loaded[n] end
+  package.loaded["arclen.engine"] = engine
+  package.loaded["arclen.path"], package.loaded["arclen.svgpath"] = nil, nil
+  local ok, mod = pcall(require, "arclen.path")
+  for _, n in ipairs(names) do package.loaded[n] = saved[n] end
+  assert(ok, mod)
+  return mod
+end
+
+-- A random cubic from p0 of one of the kinds above, scaled by 10^k.
+local function random_cubic(r, x0, y0)
+  local kind = math.floor(r() * 8)
+  local s = 10 ^ math.floor(r() * 7 - 3)
+  local function pt() return x0 + s * (2 * r() - 1), y0 + s * (2 * r() - 1) end
+  local x1, y1 = pt()
+  local x2, y2 = pt()
+  local x3, y3 = pt()
+  if kind == 1 then x1, y1 = x0, y0                      -- handle on its end
+  elseif kind == 2 then x2, y2 = x3, y3
+  elseif kind == 3 then x1, y1, x2, y2, x3, y3 = x0, y0, x0, y0, x0, y0   -- a point
+  elseif kind == 4 then                                   -- a cusp: (0,0) (1,1) (0,1) (1,0)
+    x1, y1, x2, y2, x3, y3 = x0 + s, y0 + s, x0, y0 + s, x0 + s, y0
+  elseif kind == 5 then                                   -- a near-cusp
+    local e = 10 ^ -(2 + math.floor(r() * 10))
+    x1, y1, x2, y2, x3, y3 = x0 + s, y0 + s, x0 + e * s, y0 + s, x0 + s, y0
+  elseif kind == 6 then                                   -- a straight reversal
+    local dx, dy = s * (2 * r() - 1), s * (2 * r() - 1)
+    x1, y1, x2, y2, x3, y3 = x0 + 2 * dx, y0 + 2 * dy, x0 - dx, y0 - dy, x0 + dx, y0 + dy
+  elseif kind == 7 then x2, y2 = x1, y1                   -- coincident handles
+  end
+  return {x0, y0, x1, y1, x2, y2, x3, y3}
+end
+
+local function random_path(r)
+  local segs, x, y = {}, 100 * r(), 100 * r()
+  for k = 1, 1 + math.floor(r() * 4) do
+    segs[k] = random_cubic(r, x, y)
+    x, y = segs[k][7], segs[k][8]
+  end
+  return segs
+end
+
+local NOTE = has_core and "" or " [no C core here to compare with: checked where it loads]"
+
+describe("the Lua engine against the C core on random paths" .. NOTE, function()
+  if not has_core then
+    it("needs both engines", function() end)
+    return
+  end
+  local Pc, Pl = path_on(core), path_on(pure)
+
+  for _, tol in ipairs({1e-12, 1e-9}) do
+    it(("3000 paths: lengths, times and points within 2 tol L (tol %g)"):format(tol), function()
+      local r = H.rng(tol == 1e-12 and 20261203 or 777)
+      local wl, wt, wp, wr = H.worst(), H.worst(), H.worst(), H.worst()
+      local cubics = 0
+      for i = 1, 3000 do
+        local segs = random_path(r)
+        local pc, pl = Pc(segs, {tol = tol}), Pl(segs, {tol = tol})
+        local L = pc:length()
+        local scale = math.max(L, 1e-300)
+        wl:add(math.abs(pl:length() - L) / scale / (2 * tol), "path " .. i)
+        local big = 0
+        for _, c in ipairs(segs) do
+          for q = 1, 8 do big = math.max(big, math.abs(c[q])) end
+        end
+        local slack = 4 * 2.220446049250313e-16 * big
+        for _, c in ipairs(segs) do           -- each cubic: length and time
+          cubics = cubics + 1
+          local lc = core.length(c, {tol = tol})
+          local ll = pure.length(c, {tol = tol})
+          wl:add(math.abs(ll - lc) / math.max(lc, 1e-300) / (2 * tol), "path " .. i .. " cubic")
+          if lc > 0 then
+            local s = lc * r()
+            local t = pure.time(c, s, {tol = tol})
+            local back = t == 0 and 0 or core.length(c, {tol = 1e-15, t1 = t})
+            wt:add(math.abs(back - s) / lc / (tol + 1e-14), "path " .. i .. " s " .. s)
+          end
+        end
+        if L > 0 then
+          for _ = 1, 3 do                     -- points at distances
+            local s = L * (1.1 * r() - 0.05)
+            local xc, yc = pc:point(s)
+            local xl, yl = pl:point(s)
+            wp:add(math.sqrt((xc - xl) ^ 2 + (yc - yl) ^ 2) / (2 * tol * L + slack), "path " .. i .. " s " .. s)
+          end
+          local rc, rl = pc:resample(7), pl:resample(7)
+          for q = 1, 7 do
+            local d = math.sqrt((rc[q].x - rl[q].x) ^ 2 + (rc[q].y - rl[q].y) ^ 2)
+            wr:add(d / (2 * tol * L + slack), "path " .. i .. " resample " .. q)
+          end
+        end
+      end
+      assert.is_true(cubics >= 6000, "cubics: " .. cubics)
+      -- each ratio is the difference over what the guarantee allows
+      for name, w in pairs({length = wl, time = wt, point = wp, resample = wr}) do
+        assert.is_true(w.err <= 1, ("%s: worst %s at %.3g of the bound"):format(name, tostring(w.id), w.err))
+      end
+    end)
+  end
+
+  it("dashes and sub-paths agree (tol 1e-12)", function()
+    local r = H.rng(4242)
+    for i = 1, 300 do
+      local segs = random_path(r)
+      local pc, pl = Pc(segs), Pl(segs)
+      local L = pc:length()
+      local big = 0
+      for _, c in ipairs(segs) do
+        for q = 1, 8 do big = math.max(big, math.abs(c[q])) end
+      end
+      -- each end within 2 tol L of the other engine's, the parts measured
+      -- on control points rounded at the coordinates' size
+      local bound = 4e-12 * L + 8 * 2.220446049250313e-16 * big
+      if L > 0 then
+        local pat = {L * (0.05 + 0.2 * r()), L * (0.02 + 0.1 * r())}
+        local dc, dl = pc:dash(pat), pl:dash(pat)
+        assert.are.equal(#dc, #dl, "path " .. i)
+        for q = 1, #dc do
+          assert.is_true(math.abs(dc[q]:length() - dl[q]:length()) <= bound, "path " .. i .. " dash " .. q)
+        end
+        local a, b = L * r(), L * r()
+        assert.is_true(math.abs(pc:sub(a, b):length() - pl:sub(a, b):length()) <= bound, "path " .. i)
+      end
+    end
+  end)
+end)
