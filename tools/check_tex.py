@@ -6,7 +6,7 @@ tex_bend.tsv).  MODE "exact": every mark within 1e-4 pt, every tangent's
 cosine and sine within 1e-4, no mark missing or extra, the bending
 library's points within |z'| 2^-17 + 1e-4 pt (its contract returns the
 time as a dimension, 2^-16 apart); with OTHER_POSFILE, the two runs agree
-within 1e-4 pt.  MODE "stock": the same numbers for stock pgf, reported.
+within 1e-4 pt.  MODE "mp": MetaPost's numbers (check_mp).  MODE "stock": the same numbers for stock pgf, reported.
 Prints "ok"/"FAIL" lines and ends "N passed, N failed"."""
 import os
 import sys
@@ -40,8 +40,33 @@ def read_tsv(name):
     return rows
 
 
+def check_mp(path):
+    """MODE "mp": examples/tex/mp_arclen.tex's lengths and points (bp) within
+    1e-8 of spec/data/tex_mp.tsv (arclen's tol 1e-12 of a few hundred bp)."""
+    got = {}
+    for line in open(path):
+        f = line.split()
+        if len(f) == 4:
+            got[(f[0], f[1])] = (float(f[2]), float(f[3]))
+    passed = failed = 0
+    for r in read_tsv("tex_mp.tsv"):
+        g = got.get((r[0], r[1]))
+        what = "MetaPost %s %s" % (r[0], "length" if r[1] == "-1" else "point at " + r[1])
+        if g is None:
+            ok, msg = False, "not written"
+        else:
+            d = max(abs(g[0] - float(r[2])), abs(g[1] - float(r[3])))
+            ok, msg = d <= 1e-8, "error %.2e (<= 1e-8)" % d
+        print(("ok   " if ok else "FAIL ") + what + ": " + msg)
+        passed, failed = passed + ok, failed + (not ok)
+    print("%d passed, %d failed" % (passed, failed))
+    return 1 if failed else 0
+
+
 def main():
     mode, pos = sys.argv[1], sys.argv[2]
+    if mode == "mp":
+        return check_mp(pos)
     marks, bends = read_pos(pos)
     ref = {}
     for r in read_tsv("tex_marks.tsv"):
