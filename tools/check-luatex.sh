@@ -115,6 +115,7 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
   ltex tikz_marks "";  tm_lua=$st
   ltex tikz_marks_c --shell-escape tikz_marks.tex
   ltex tikz_marks_stock "" '\def\stockpgf{}\input{tikz_marks}'
+  ltex tikz_marks_luamath "" '\def\withluamath{}\input{tikz_marks}'
   ltex mp_arclen "";   mp_lua=$st
   cp "$TT/run/mp_arclen.mpd" "$TT/run/mp_arclen_lua.mpd" 2>/dev/null
   ltex mp_arclen_c --shell-escape mp_arclen.tex
@@ -126,6 +127,7 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
   grep -q "Package arclen Info: engine c," "$TT/run/tikz_marks_c.log" \
     && ok "--shell-escape: the C core, reported in the log" || bad "--shell-escape: no 'engine c' in the log"
   for pair in "tikz_marks exact tikz_marks.pos" "tikz_marks_c exact tikz_marks_c.pos tikz_marks.pos" \
+      "tikz_marks_luamath exact tikz_marks_luamath.pos" \
       "mp_arclen mp mp_arclen_lua.mpd" "mp_arclen_c mp mp_arclen.mpd"; do
     set -- $pair
     name=$1; shift
