@@ -87,7 +87,10 @@ echo "== 1000 placements (seconds, each figure timed inside the run)"
 sed 's/^BENCH /     /' "$OUT/luamplib_bench.dat-bench" 2>/dev/null
 
 # ---- arclen for every LaTeX document: make install-tex into a temporary
-# TEXMFHOME, then the documents of examples/tex/ compiled from a directory
+# TEXMFHOME, then the documents of examples/tex/ (tikz_marks: markings,
+# bending, text along a path; mp_arclen and plain_mp: input arclen; in
+# luamplib, LaTeX and plain; tikz_errors: bad input; tikz_bench: 1000
+# markings; pdflatex: the error under pdfLaTeX) compiled from a directory
 # outside the clone, in LuaTeX's default mode (no --shell-escape: the Lua
 # engine), with --shell-escape (the C core), and without the TikZ library
 # (stock pgf, reported beside).  tools/check_tex.py compares the positions
@@ -120,6 +123,15 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
   cp "$TT/run/mp_arclen.mpd" "$TT/run/mp_arclen_lua.mpd" 2>/dev/null
   ltex mp_arclen_c --shell-escape mp_arclen.tex
   ltex tikz_errors ""
+  (cd "$TT/run" && TEXMFHOME="$TT/texmf" luatex --interaction=nonstopmode plain_mp.tex >plain_mp.out 2>&1)
+  st=$?
+  echo "== luatex (default mode) plain_mp: exit $st"
+  if command -v pdflatex >/dev/null; then
+    (cd "$TT/run" && TEXMFHOME="$TT/texmf" pdflatex --interaction=nonstopmode pdflatex.tex >pdflatex.out 2>&1)
+    tr -d '\n' <"$TT/run/pdflatex.log" | grep -q "Package arclen Error: arclen needs LuaLaTeX: run lualatex, not pdflatex" \
+      && ok "pdfLaTeX: arclen.sty stops with a clear error" || bad "pdfLaTeX: no clear error from arclen.sty"
+  fi
+  [ $st -eq 0 ] && ok "plain_mp: no TeX error (plain LuaTeX, default mode)" || bad "plain_mp: exit $st"
   [ $tm_lua -eq 0 ] && ok "tikz_marks: no TeX error (default mode)" || bad "tikz_marks: exit $tm_lua"
   [ $mp_lua -eq 0 ] && ok "mp_arclen: no TeX error (default mode)" || bad "mp_arclen: exit $mp_lua"
   grep -q "Package arclen Info: engine lua (binary modules need --shell-escape)" "$TT/run/tikz_marks.log" \
@@ -128,7 +140,7 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
     && ok "--shell-escape: the C core, reported in the log" || bad "--shell-escape: no 'engine c' in the log"
   for pair in "tikz_marks exact tikz_marks.pos" "tikz_marks_c exact tikz_marks_c.pos tikz_marks.pos" \
       "tikz_marks_luamath exact tikz_marks_luamath.pos" \
-      "mp_arclen mp mp_arclen_lua.mpd" "mp_arclen_c mp mp_arclen.mpd"; do
+      "mp_arclen mp mp_arclen_lua.mpd" "mp_arclen_c mp mp_arclen.mpd" "plain_mp mp plain_mp.mpd"; do
     set -- $pair
     name=$1; shift
     (cd "$TT/run" && python3 "$OLDPWD/tools/check_tex.py" "$@") >"$OUT/tex/$name.check" 2>&1
