@@ -7,9 +7,10 @@
 -- (itself within 1e-14 L): |s(t) - s| <= (tol + 1e-14) L.  Points are
 -- coordinates, rounded at their own size: the bound on them adds 4 eps
 -- times the largest coordinate (a curve 1e-3 long at x = 100).
--- The paths: random cubics, and the cases that break methods -- degenerate
--- handles (a control point on its end point), coincident points,
--- zero-length segments, cusps and near-cusps, straight reversals.
+-- The paths: random cubics and lines, and the cases that break methods --
+-- degenerate handles (a control point on its end point), coincident
+-- points, zero-length segments, cusps and near-cusps, straight reversals.
+-- Then SVG path data: the Lua reader against the C reader, bit for bit.
 local H = require("helpers")
 local pure = require("arclen.pure")
 local has_core, core = pcall(require, "arclen.core")
@@ -30,7 +31,7 @@ end
 
 -- A random cubic from p0 of one of the kinds above, scaled by 10^k.
 local function random_cubic(r, x0, y0)
-  local kind = math.floor(r() * 8)
+  local kind = math.floor(r() * 9)
   local s = 10 ^ math.floor(r() * 7 - 3)
   local function pt() return x0 + s * (2 * r() - 1), y0 + s * (2 * r() - 1) end
   local x1, y1 = pt()
@@ -48,6 +49,9 @@ local function random_cubic(r, x0, y0)
     local dx, dy = s * (2 * r() - 1), s * (2 * r() - 1)
     x1, y1, x2, y2, x3, y3 = x0 + 2 * dx, y0 + 2 * dy, x0 - dx, y0 - dy, x0 + dx, y0 + dy
   elseif kind == 7 then x2, y2 = x1, y1                   -- coincident handles
+  elseif kind == 8 then                                   -- a line, as path data makes it
+    local dx, dy = x3 - x0, y3 - y0
+    x1, y1, x2, y2 = x0 + dx / 3, y0 + dy / 3, x3 - dx / 3, y3 - dy / 3
   end
   return {x0, y0, x1, y1, x2, y2, x3, y3}
 end
@@ -119,6 +123,73 @@ describe("the Lua engine against the C core on random paths" .. NOTE, function()
       end
     end)
   end
+
+  it("lengths of curves and sub-ranges at every scale, 1e-305 to 1e305 (tol 1e-12)", function()
+    -- found by fuzzing: Veltkamp's split overflowed for a sub-range of a
+    -- curve near 1e300, and the NaN hodograph measured 0
+    local r = H.rng(1305)
+    local worst = H.worst()
+    for i = 1, 2000 do
+      local sc, c = 10 ^ (math.floor(r() * 611) - 305), {}
+      for k = 1, 8 do c[k] = sc * (2 * r() - 1) end
+      local o = i % 2 == 0 and {t0 = r(), t1 = r()} or nil
+      local lc, ll = core.length(c, o), pure.length(c, o)
+      if lc ~= 0 then worst:add(math.abs(ll - lc) / math.abs(lc) / 2e-12, "curve " .. i) end
+    end
+    local big = {-9e299, 0, 9e299, 1e299, -9e299, 3e299, 9e299, 0}
+    worst:add(math.abs(pure.length(big, {t1 = 0.3}) / core.length(big, {t1 = 0.3}) - 1) / 2e-12, "near 1e300")
+    assert.is_true(worst.err <= 1, ("worst %s at %.3g of the bound"):format(tostring(worst.id), worst.err))
+  end)
+
+  it("SVG path data without arcs: the same cubics, subpaths and messages (3000 strings)", function()
+    local r = H.rng(5150)
+    local function pick(s) local k = math.floor(r() * #s) + 1; return s:sub(k, k) end
+    local function number()
+      local n = ("%.6g"):format((r() - 0.5) * 10 ^ math.floor(r() * 8 - 3))
+      if r() < 0.1 then n = n:gsub("^0%.", ".") end            -- ".5"
+      if r() < 0.05 then n = n .. "e" .. math.floor(r() * 6 - 3) end
+      return n
+    end
+    local bad, nerr = {}, 0
+    for i = 1, 3000 do
+      -- commands with their arguments; now and then one too few, a
+      -- command with none (a repeat), or a stray byte
+      local ARGS = {M = 2, L = 2, H = 1, V = 1, C = 6, S = 4, Q = 4, T = 2, Z = 0}
+      local parts = {}
+      for k = 1, 1 + math.floor(r() * 8) do
+        local cmd = k == 1 and (r() < 0.97 and "M" or "L") or pick("MLHVCSQTZ")
+        parts[#parts + 1] = r() < 0.5 and cmd or cmd:lower()
+        local n = ARGS[cmd] * (r() < 0.2 and 2 or 1) - (r() < 0.03 and 1 or 0)
+        for q = 1, n do
+          parts[#parts + 1] = number()
+          if q < n or r() < 0.5 then parts[#parts + 1] = pick(" ,  \t") end
+        end
+      end
+      if r() < 0.03 then parts[#parts + 1] = pick(",eX.") end
+      local d = table.concat(parts)
+      local a, am, ap = core.svg_pathdata(d, 1e-12)
+      local b, bm, bp = pure.svg_pathdata(d, 1e-12)
+      if not a or not b then
+        nerr = nerr + 1
+        if a or b or am ~= bm or ap ~= bp then
+          bad[#bad + 1] = ("%q: C %s %s, Lua %s %s"):format(d, tostring(am), tostring(ap), tostring(bm), tostring(bp))
+        end
+      else
+        local ca = core._cubics(a.packed)
+        local same = a.n == b.n and #a == #b
+        for k = 1, same and a.n or 0 do
+          for q = 1, 8 do same = same and ca[k][q] == b.packed[8 * (k - 1) + q] end
+        end
+        for j = 1, same and #a or 0 do
+          local u, v = a[j], b[j]
+          same = same and u.x == v.x and u.y == v.y and u.closed == v.closed and u.n == v.n
+        end
+        if not same then bad[#bad + 1] = ("%q: different cubics or subpaths"):format(d) end
+      end
+    end
+    assert.are.same({}, bad)
+    assert.is_true(nerr > 30 and nerr < 2500, "errors: " .. nerr)    -- both kinds were tried
+  end)
 
   it("dashes and sub-paths agree (tol 1e-12)", function()
     local r = H.rng(4242)

@@ -913,7 +913,10 @@ local M = {svg = from_svg, mplib = from_mplib, Path = Path}
 -- the readers' own (finite); the structure is checked.
 function M._from_subpaths(R, tol, method)
   local fname = "arclen.path._from_subpaths"
-  if type(R) ~= "table" or type(R.packed) ~= "string" or type(R.n) ~= "number" then
+  -- packed: a string of doubles (the C readers), a flat table (the Lua engine's)
+  local pk = type(R) == "table" and R.packed
+  if type(R) ~= "table" or (type(pk) ~= "string" and type(pk) ~= "table")
+     or type(R.n) ~= "number" then
     argerror(1, fname, "the readers' subpaths {packed =, n =, ...} expected")
   end
   local count = 0
@@ -925,7 +928,7 @@ function M._from_subpaths(R, tol, method)
     end
     count = count + sp.n
   end
-  if count ~= R.n or #R.packed ~= 64 * R.n then
+  if count ~= R.n or #pk ~= (type(pk) == "string" and 64 or 8) * R.n then
     argerror(1, fname, "the subpaths' counts do not match the packed cubics")
   end
   if not tol_ok(tol) then argerror(2, fname, "tol must be in " .. TOL_RANGE) end

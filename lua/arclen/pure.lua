@@ -2,15 +2,16 @@
 -- in plain Lua (5.1-5.4, LuaJIT), for where the C core cannot load (LuaTeX
 -- without --shell-escape, a platform without a binary).  Same names, same
 -- argument checks and messages, same guarantee (every distance within tol *
--- L): the default method on plane cubics (pure_gauss.lua).  3D curves, the
--- other methods (elliptic, metapost, fit, ...), conics, SVG path data and
--- the root solvers stay in the C core: asked for here, they raise an error
--- that says so and how to get it.
+-- L): the default method on plane cubics (pure_gauss.lua), SVG path data
+-- without arcs (pure_svgpath.lua).  3D curves, the other methods
+-- (elliptic, metapost, ...), conics, elliptical arcs, the root solvers and
+-- the speed's critical points stay in the C core: asked for here, they
+-- raise an error that says so and how to get it.
 --
 --   local core = require "arclen.engine"   -- this module or arclen.core
 local G = require("arclen.pure_gauss")
 
-local floor, abs, sqrt, huge = math.floor, math.abs, math.sqrt, math.huge
+local floor, sqrt, huge = math.floor, math.sqrt, math.huge
 local format = string.format
 local unpack = table.unpack or unpack
 
@@ -27,6 +28,20 @@ end
 
 local function isfinite(x)
   return x == x and x ~= huge and x ~= -huge
+end
+
+-- lauxlib's checks of a table and of a number (or numeric string)
+-- argument, with its messages.
+local function check_table(v, arg, fname)
+  if type(v) ~= "table" then argerror(arg, fname, "table expected, got " .. type(v)) end
+  return v
+end
+local function check_number(v, arg, fname)
+  local x = tonumber(v)
+  if type(v) ~= "number" and not (type(v) == "string" and x) then
+    argerror(arg, fname, "number expected, got " .. type(v))
+  end
+  return x
 end
 
 -- ---- arguments ---------------------------------------------------------------
@@ -110,9 +125,16 @@ local C_METHODS = {["gravesen"] = false, ["gravesen-richardson"] = false,
   metapost = true, polyline = false, trapezoid = false,
   ["trapezoid-factored"] = false, elliptic = false}
 
-local function c_method_error(arg, fname, name, level)
-  argerror(arg, fname, format("method '%s' %s", name, NEEDS_C), level)
+local function c_method_error(arg, fname, name)
+  argerror(arg, fname, format("method '%s' %s", name, NEEDS_C))
 end
+
+-- The ranges in the C binding's messages: lua_pushfstring's %f prints
+-- numbers as this Lua's tostring does ("0.0" in 5.3+, "0" in 5.1).
+local function range(lo, hi)
+  return "[" .. tostring(lo * 1.0) .. ", " .. tostring(hi * 1.0) .. "]"
+end
+local RANGE_T, RANGE_STEPS = range(0, 1), range(1, 1e9)
 
 -- The common options: tol, method, t0, t1, steps, info (as the C
 -- binding's arclenL_checkopts).  Returns rtol, t0, t1, info.
@@ -129,17 +151,17 @@ local function check_opts(opts, arg, fname)
       rtol = check_tol(v, arg, fname)
     elseif key == "method" then
       if type(v) ~= "string" then argerror(arg, fname, "method must be a string") end
-      if C_METHODS[v] ~= nil then c_method_error(arg, fname, v, 3) end
+      if C_METHODS[v] ~= nil then c_method_error(arg, fname, v) end
       if v ~= "gauss" then argerror(arg, fname, format("unknown method '%s'", v)) end
     elseif key == "t0" or key == "t1" or key == "steps" then
       if type(v) ~= "number" then argerror(arg, fname, key .. " must be a number") end
       if key == "steps" then
         if not (v >= 1 and v <= 1e9) then
-          argerror(arg, fname, "steps must be in [1.000000, 1000000000.000000]")
+          argerror(arg, fname, "steps must be in " .. RANGE_STEPS)
         end
         if v ~= floor(v) then argerror(arg, fname, "steps must be an integer") end
       elseif not (v >= 0 and v <= 1) then
-        argerror(arg, fname, key .. " must be in [0.000000, 1.000000]")
+        argerror(arg, fname, key .. " must be in " .. RANGE_T)
       elseif key == "t0" then t0 = v else t1 = v end
     elseif key == "info" then
       info = v and true or false
@@ -288,7 +310,7 @@ function M.methods() return {"gauss"} end
 
 function M.method(name)
   if type(name) ~= "string" then
-    argerror(1, "method", format("string expected, got %s", name == nil and "no value" or type(name)))
+    argerror(1, "method", "string expected, got " .. (name == nil and "no value" or type(name)))
   end
   if name == "gauss" then return {name = "gauss", time = true} end
   if C_METHODS[name] ~= nil then return {name = name, time = C_METHODS[name]} end
@@ -331,7 +353,9 @@ function M.lengths(coords, opts)
         argerror(1, fname, format("coordinate %d must be a number, got %s", 8 * (k - 1) + i,
           v == nil and "nil" or type(v)))
       end
-      if not isfinite(v) then argerror(1, fname, format("coordinate %d must be finite", 8 * (k - 1) + i)) end
+      if not isfinite(v) then
+        argerror(1, fname, format("coordinate %d must be finite", 8 * (k - 1) + i))
+      end
       c[i] = v * 1.0
     end
     out[k] = G.length(c, t0, t1, rtol)
@@ -345,7 +369,8 @@ local function read_distances(ds, arg, fname)
   for i = 1, #ds do
     local v = ds[i]
     if type(v) ~= "number" then
-      argerror(arg, fname, format("distance %d must be a number, got %s", i, v == nil and "nil" or type(v)))
+      argerror(arg, fname, format("distance %d must be a number, got %s", i,
+        v == nil and "nil" or type(v)))
     end
     if v ~= v then argerror(arg, fname, format("distance %d is NaN", i)) end
     if v < prev then argerror(arg, fname, "distances must be sorted (ascending)") end
@@ -374,7 +399,9 @@ function M.times(c, ds, opts)
   end
   local rtol, want_p, want_v = 1e-12, false, false
   if opts ~= nil then
-    if type(opts) ~= "table" then argerror(3, fname, "options table expected, got " .. type(opts)) end
+    if type(opts) ~= "table" then
+      argerror(3, fname, "options table expected, got " .. type(opts))
+    end
     for key, v in pairs(opts) do
       if type(key) ~= "string" then argerror(3, fname, "option names must be strings") end
       if key == "tol" then
@@ -411,6 +438,16 @@ function M._cubics(packed)
   if type(packed) == "string" then v = unpack_doubles(packed, "_cubics", 1)
   elseif type(packed) ~= "table" then
     argerror(1, "_cubics", "packed cubics (a string or a flat table) expected")
+  else
+    if #v % 8 ~= 0 then
+      argerror(1, "_cubics", "packed cubics: a multiple of 8 numbers expected")
+    end
+    for i = 1, #v do
+      if type(v[i]) ~= "number" or not isfinite(v[i]) then
+        argerror(1, "_cubics", format("cubic %d: coordinate %d must be finite",
+          floor((i - 1) / 8) + 1, (i - 1) % 8 + 1))
+      end
+    end
   end
   for k = 1, #v / 8 do out[k] = {unpack(v, 8 * k - 7, 8 * k)} end
   return out
@@ -419,6 +456,8 @@ end
 -- arclen._queries(ds, L, wrap) -> r, ascending | nil, message: each
 -- distance a finite number, wrapped into [0, L) or clamped to [0, L].
 function M._queries(ds, L, wrap)
+  check_table(ds, 1, "_queries")
+  L = check_number(L, 2, "_queries")
   local r, prev, ascending = {}, -huge, true
   for i = 1, #ds do
     local v = ds[i]
@@ -447,6 +486,7 @@ local function segments_of(segs)
   if type(segs[1]) ~= "number" then
     return #segs, function(k) return segs[k] end
   end
+  if #segs % 8 ~= 0 then argerror(1, "_walk", "packed cubics: a multiple of 8 numbers expected") end
   return floor(#segs / 8), function(k) return {unpack(segs, 8 * k - 7, 8 * k)} end
 end
 
@@ -457,10 +497,18 @@ end
 -- distances in one segment solved in one walk over its pieces.
 local function walk(segs, cum, ds, tol, at_end, emit)
   local n, cubic = segments_of(segs)
-  check_tol(tol, 4, "_walk")
+  check_table(cum, 2, "_walk")
+  check_table(ds, 3, "_walk")
+  check_tol(check_number(tol, 4, "_walk"), 4, "_walk")
   local nd = #ds
   local d = read_distances(ds, 3, "_walk")
   if n == 0 or nd == 0 then return end
+  local cums = {}                   -- cum[0..n] as numbers (lua_tonumber: else 0)
+  for k = 0, n do
+    cums[k] = tonumber(cum[k]) or 0
+    if not isfinite(cums[k]) then argerror(2, "_walk", "cumulative lengths must be finite") end
+  end
+  cum = cums
   local function past(x, k)         -- is x beyond segment k's end?
     if at_end then return cum[k] < x end
     return cum[k] <= x
@@ -494,6 +542,8 @@ end
 
 -- arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts)
 function M._walk_times(segs, cum, ds, tol, at_end, ks, ts)
+  check_table(ks, 6, "_walk_times")
+  check_table(ts, 7, "_walk_times")
   walk(segs, cum, ds, tol, at_end, function(q, k, t)
     ks[q], ts[q] = k, t
   end)
@@ -503,7 +553,10 @@ end
 -- {x =, y =, s =, time =, tx =, ty =} into out, or (tans a table or
 -- false) flat arrays of points, unit tangents and path times.
 function M._walk_samples(segs, cum, ds, tol, out, tans, times)
+  check_table(out, 5, "_walk_samples")
   local flat = tans ~= nil
+  if type(tans) ~= "table" then tans = nil end      -- flat, no tangents
+  if type(times) ~= "table" then times = nil end
   walk(segs, cum, ds, tol, false, function(q, k, t, c)
     local x, y = point_at(c, t)
     local tx, ty = unit_tangent(c, t)

@@ -17,7 +17,7 @@
 --
 -- Units: the hodograph is scaled by a power of two (exact), so that the
 -- result depends neither on the curve's size nor on where it sits; lengths
--- inside are in scaled units and leave multiplied by `scale`.
+-- inside are in scaled units and leave multiplied by unit 2^exp.
 local rules = require("arclen.pure_rules")
 
 local abs, sqrt, floor, log = math.abs, math.sqrt, math.floor, math.log
@@ -40,7 +40,6 @@ local function mul_pow2(x, e)
   local h = e > 0 and floor(e / 2) or -floor(-e / 2)
   return x * POW2[h] * POW2[e - h]
 end
-M.mul_pow2 = mul_pow2
 
 -- The e with 2^(e-1) <= x < 2^e for a finite x > 0 (frexp's exponent),
 -- settled by exact comparisons, so that it does not depend on log().
@@ -88,9 +87,10 @@ local function dd_mul(xh, xl, yh, yl)
   return two_sum(p, e + (xh * yl + xl * yh))
 end
 
--- Coordinates beyond this may overflow in differences: such a curve is
--- scaled by 2^-64 first (exact), as the C core does (cubic.c).
-local HUGE_COORD = 1e300
+-- Coordinates beyond this may overflow in differences, or in Veltkamp's
+-- split (which multiplies by 2^27): such a curve is scaled by 2^-64 first
+-- (exact), as the C core does beyond 1e300 (cubic.c).
+local HUGE_COORD = 1e290
 
 -- The hodograph of the plane cubic c (8 numbers) over [t0, t1]: for the
 -- whole curve z'(t) = A2 t^2 + A1 t + A0 on [0, 1] (A0 = 3 d0, A1 = 6 (d1 -
@@ -98,9 +98,10 @@ local HUGE_COORD = 1e300
 -- its middle tc on [-1, 1]: H(u) = z'(tc) + hw z''(tc) u + hw^2 A2 u^2 (t =
 -- tc + hw u), formed in double-double from the exact differences, so that
 -- a part beside a near-cusp keeps its relative precision.  Returns h =
--- {x2, x1, x0, y2, y1, y0, lo, hi, scale} (scale: the factor from the
--- scaled integral over [lo, hi] to the curve's length), or nil when the
--- hodograph is zero (a point).
+-- {x2, x1, x0, y2, y1, y0 (the scaled coefficients), lo, hi (the range
+-- of the variable), unit, exp (a length over [lo, hi] in scaled units,
+-- times unit 2^exp, is the curve's)}, or nil when the hodograph is zero
+-- (a point).
 function M.hodograph(c, t0, t1)
   local pre = 1.0
   for i = 1, 8 do
@@ -140,7 +141,11 @@ function M.hodograph(c, t0, t1)
   end
   local big = 0
   for i = 1, 6 do
-    if abs(coef[i]) > big then big = abs(coef[i]) end
+    local v = coef[i]
+    if not (v - v == 0) then             -- inf or NaN: never a silent zero
+      error("arclen.pure: the hodograph overflowed (please report the curve)", 0)
+    end
+    if abs(v) > big then big = abs(v) end
   end
   if big == 0 then return nil end
   local e = exponent(big)
@@ -156,7 +161,6 @@ local function speed(h, t)
   local y = (h.y2 * t + h.y1) * t + h.y0
   return sqrt(x * x + y * y)
 end
-M.speed = speed
 
 -- |z(b) - z(a)| from the antiderivative of the hodograph: a lower bound of
 -- the length between (for the tolerance's share).
@@ -180,15 +184,16 @@ local REAL_RTOL = 1e-14
 -- square root of the discriminant on the side of A1, roots q/A2 and A0/q
 -- (Kahan's form of the quadratic formula, in complex arithmetic written
 -- out in real numbers).
+local function add(br, re, im)
+  im = abs(im)
+  if re - re ~= 0 or im - im ~= 0 then return end        -- inf or NaN
+  if im <= REAL_RTOL * (1 + abs(re)) then im = 0 end
+  local n = br.n + 1
+  br.n, br.re[n], br.im[n] = n, re, im
+end
+
 function M.branch_points(h)
   local br = {n = 0, re = {}, im = {}, lead = 0}
-  local function add(re, im)
-    im = abs(im)
-    if re - re ~= 0 or im - im ~= 0 then return end      -- inf or NaN
-    if im <= REAL_RTOL * (1 + abs(re)) then im = 0 end
-    br.n = br.n + 1
-    br.re[br.n], br.im[br.n] = re, im
-  end
   local x2, y2, x1, y1, x0, y0 = h.x2, h.y2, h.x1, h.y1, h.x0, h.y0
   local n2, n1 = x2 * x2 + y2 * y2, x1 * x1 + y1 * y1
   if n2 > 0 then
@@ -208,8 +213,8 @@ function M.branch_points(h)
     end
     br.lead = sqrt(n2)
     if qr == 0 and qi == 0 then       -- A1 = A0 = 0: a double root at 0
-      add(0, 0)
-      add(0, 0)
+      add(br, 0, 0)
+      add(br, 0, 0)
       return br
     end
     local qq = qr * qr + qi * qi
@@ -218,12 +223,12 @@ function M.branch_points(h)
       -- 2^-340, so that root is dropped and |q| (rounded up) leads instead
       br.lead = sqrt(qq) * (1 + POW2[-50])
     else                              -- q/A2 = q conj(A2) / |A2|^2
-      add((qr * x2 + qi * y2) / n2, (qi * x2 - qr * y2) / n2)
+      add(br, (qr * x2 + qi * y2) / n2, (qi * x2 - qr * y2) / n2)
     end
-    add((x0 * qr + y0 * qi) / qq, (y0 * qr - x0 * qi) / qq)   -- A0/q
+    add(br, (x0 * qr + y0 * qi) / qq, (y0 * qr - x0 * qi) / qq)   -- A0/q
   elseif n1 > 0 then                  -- a quadratic: z' linear, one root
     br.lead = sqrt(n1)
-    add(-(x0 * x1 + y0 * y1) / n1, -(y0 * x1 - x0 * y1) / n1)
+    add(br, -(x0 * x1 + y0 * y1) / n1, -(y0 * x1 - x0 * y1) / n1)
   else
     br.lead = sqrt(x0 * x0 + y0 * y0) -- a line run at constant speed
   end
@@ -290,7 +295,6 @@ local function piece_bound(br, c, hw)
   local lrho2 = g < 0.0625 and g * (1 - g / 2) / LN2 or log(1 + g) / LN2
   return logc + LOG2_MARGIN, lrho2 * (1 - LOG2_MARGIN), m, e, inside
 end
-M.piece_bound = piece_bound
 
 -- The least order on the ladder at or above n.
 local ORDERS = rules.orders
@@ -336,7 +340,6 @@ local function apply(h, r, c, hw)
   end
   return hw * sum
 end
-M.apply = apply
 
 -- ---- the adaptive integration ------------------------------------------
 
@@ -449,16 +452,27 @@ local function budget(rtol)
   return rtol - (rtol / 2 < RESERVE and rtol / 2 or RESERVE)
 end
 
--- A lower bound of the length over [lo, hi] between the cuts (the sum of
--- chords); where the chords vanish (a curve back where it started), half
--- an 8-point rule, as the C core takes it.
+-- A lower bound of the length over [lo, hi] between the cuts: the sum of
+-- chords.  Where they vanish (a curve back where it started at every
+-- cut) the chords of 4, then 16 equal parts of each piece, still true
+-- lower bounds; only where those vanish too, half an 8-point rule, as the
+-- C core takes it.
+local PARTS = {1, 4, 16}
 local function lower_length(h, lo, hi, cuts)
-  local ends, sum = {lo}, 0
+  local ends = {lo}
   for i = 1, #cuts do ends[#ends + 1] = cuts[i] end
   ends[#ends + 1] = hi
-  for i = 1, #ends - 1 do sum = sum + chord(h, ends[i], ends[i + 1]) end
-  if not (sum > 0) then sum = 0.5 * apply(h, rules[8], lo + (hi - lo) / 2, (hi - lo) / 2) end
-  return sum
+  for _, parts in ipairs(PARTS) do
+    local sum = 0
+    for i = 1, #ends - 1 do
+      local a, w = ends[i], (ends[i + 1] - ends[i]) / parts
+      for j = 1, parts do
+        sum = sum + chord(h, a + (j - 1) * w, j == parts and ends[i + 1] or a + j * w)
+      end
+    end
+    if sum > 0 then return sum end
+  end
+  return 0.5 * apply(h, rules[8], lo + (hi - lo) / 2, (hi - lo) / 2)
 end
 
 -- x in scaled units (and the local variable of a part) as a length.
@@ -483,13 +497,14 @@ function M.length(c, t0, t1, rtol, want_info)
   if not info then
     -- the common case first: every first piece meets its share with one
     -- rule (the same pieces, rules and sums as the integration below)
-    local a, width = h.lo, h.hi - h.lo
+    local from, width = h.lo, h.hi - h.lo
     for i = 1, #cuts + 1 do
-      local b = cuts[i] or h.hi
-      local r = choose(br, a + (b - a) / 2, (b - a) / 2, target * ((b - a) / width))
+      local to = cuts[i] or h.hi
+      local mid, hw = from + (to - from) / 2, (to - from) / 2
+      local r = choose(br, mid, hw, target * ((to - from) / width))
       if not r then sum = nil; break end
-      sum = sum + apply(h, r, a + (b - a) / 2, (b - a) / 2)
-      a = b
+      sum = sum + apply(h, r, mid, hw)
+      from = to
     end
     if sum then return curve_units(h, t0 > t1 and -sum or sum) end
     sum = 0

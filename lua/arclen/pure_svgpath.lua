@@ -39,7 +39,30 @@ local function what(d, i)
   return "'" .. sub(d, i, i) .. "'"
 end
 
+-- lauxlib's checks, as the C binding makes them (src/lua/svg.c).
+local function check_args(d, arc_tol, T)
+  local function argerror(n, msg)
+    error(format("bad argument #%d to 'svg_pathdata' (%s)", n, msg), 0)
+  end
+  if type(d) == "number" then d = tostring(d)
+  elseif type(d) ~= "string" then argerror(1, "string expected, got " .. type(d)) end
+  if type(arc_tol) ~= "number" and not (type(arc_tol) == "string" and tonumber(arc_tol)) then
+    argerror(2, "number expected, got " .. type(arc_tol))
+  end
+  if T ~= nil then
+    if type(T) ~= "table" or #T ~= 6 then argerror(3, "transform must be {a, b, c, d, e, f}") end
+    for k = 1, 6 do
+      local v = T[k]
+      if type(v) ~= "number" or v ~= v or v == huge or v == -huge then
+        argerror(3, "transform entries must be finite numbers")
+      end
+    end
+  end
+  return d
+end
+
 function M.svg_pathdata(d, arc_tol, T)
+  d = check_args(d, arc_tol, T)
   local n = #d
   local packed, subpaths, nc = {}, {}, 0
   local sp = nil                      -- the open subpath
