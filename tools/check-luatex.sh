@@ -132,6 +132,13 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
       && ok "pdfLaTeX: arclen.sty stops with a clear error" || bad "pdfLaTeX: no clear error from arclen.sty"
   fi
   [ $st -eq 0 ] && ok "plain_mp: no TeX error (plain LuaTeX, default mode)" || bad "plain_mp: exit $st"
+  # the engine option: lua under --shell-escape, c where the core cannot load
+  ltex engine_lua --shell-escape '\PassOptionsToPackage{engine=lua}{arclen}\input{tikz_marks}'
+  grep -q "Package arclen Info: engine lua (engine=lua)" "$TT/run/engine_lua.log" \
+    && ok "engine=lua: the Lua engine under --shell-escape" || bad "engine=lua: not the Lua engine"
+  ltex engine_c "" '\PassOptionsToPackage{engine=c}{arclen}\input{tikz_marks}'
+  tr -d '\n' <"$TT/run/engine_c.log" | grep -q "arclen: engine=c needs --shell-escape" \
+    && ok "engine=c in the default mode: a clear error, then the Lua engine" || bad "engine=c: no clear error"
   [ $tm_lua -eq 0 ] && ok "tikz_marks: no TeX error (default mode)" || bad "tikz_marks: exit $tm_lua"
   [ $mp_lua -eq 0 ] && ok "mp_arclen: no TeX error (default mode)" || bad "mp_arclen: exit $mp_lua"
   grep -q "Package arclen Info: engine lua (binary modules need --shell-escape)" "$TT/run/tikz_marks.log" \
@@ -168,7 +175,8 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
   echo "== 1000 markings (examples/tex/tikz_bench.tex, whole lualatex runs)"
   ltex tikz_bench "";       b1=$secs
   ltex tikz_bench_stock "" '\def\stockpgf{}\input{tikz_bench}'; b2=$secs
-  echo "     arclen $b1 s, stock pgf $b2 s"
+  ltex tikz_bench_c --shell-escape tikz_bench.tex; b3=$secs
+  echo "     arclen $b1 s (Lua engine), $b3 s (C core), stock pgf $b2 s"
   [ -s "$TT/run/tikz_bench.pdf" ] && ok "1000 markings: a PDF" || bad "1000 markings: no PDF"
   for j in tikz_marks tikz_marks_stock mp_arclen tikz_errors; do
     cp "$TT/run/$j.log" "$TT/run/$j.pdf" "$OUT/tex/" 2>/dev/null

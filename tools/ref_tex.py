@@ -6,7 +6,8 @@
                            curves of examples/tex/tikz_marks.tex (pt)
   spec/data/tex_bend.tsv   points at distances from the end of the
                            #1079-style curve (bending arrow tips), and |z'|
-  spec/data/tex_mp.tsv     lengths and points of examples/tex/mp_arclen.tex
+  spec/data/tex_mp.tsv     lengths, points and dash ends of
+                           examples/tex/mp_arclen.tex and plain_mp.tex
 
 The curves are listed here and in the documents, with coordinates that are
 whole points (so TeX holds them exactly).  Run: python3 tools/ref_tex.py
@@ -116,7 +117,10 @@ def main():
             c = [mpf(v) for v in CURVES[name]]
             L = length(c)
             f.write(row(name, "-1", L, 0))
-            for s in (0, 50, 100, 200):
+            # points, and on the wave the ends of the first four dashes of
+            # arclen_dashed(wave, 0)(12, 4, 2, 4)
+            extra = (12, 16, 18, 22, 34, 38, 40) if name == "wave" else ()
+            for s in sorted((0, 50, 100, 200) + extra):
                 x, y, _, _ = mark(c, mpf(s))
                 f.write(row(name, str(s), x, y))
 
