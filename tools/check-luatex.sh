@@ -158,7 +158,7 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
   done
   echo "== stock pgf on the same marks (tools/check_tex.py stock; not a check)"
   (cd "$TT/run" && python3 "$OLDPWD/tools/check_tex.py" stock tikz_marks_stock.pos) >"$OUT/tex/stock.check" 2>&1
-  grep -E "step: [0-9]+ marks|step: worst position|len100: worst position|frac0.5: worst position|bending tight" \
+  grep -E "step: [0-9]+ marks|step: worst position|len100: worst position|frac0.5: worst position|text: worst position|bending tight" \
     "$OUT/tex/stock.check"
   # bad input: arclen's message for the huge curve, no "Dimension too large"
   # before that picture (pgf's own arithmetic overflows on it after), the

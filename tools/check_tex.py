@@ -17,6 +17,9 @@ SHIFT = {"arch": 320.0, "tight": 320.0}   # the pictures' shift={(320pt,0pt)}
 DATA = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "spec", "data")
 
 
+widths = set()
+
+
 def read_pos(path):
     marks, bends = {}, {}
     for line in open(path):
@@ -27,6 +30,12 @@ def read_pos(path):
         x, y = int(f[3]) / SP - SHIFT.get(curve, 0.0), int(f[4]) / SP
         if label == "bend":
             bends[(curve, f[2])] = (int(f[3]) / SP, int(f[4]) / SP)
+        elif label == "text":
+            # a glyph box's origin: its centre is half its width along (a, b)
+            a, b, w = float(f[5]), float(f[6]), int(f[7])
+            widths.add(w)
+            marks.setdefault((curve, label), []).append(
+                (x + 0.5 * w / SP * a, y + 0.5 * w / SP * b, a, b))
         else:
             marks.setdefault((curve, label), []).append((x, y, float(f[5]), float(f[6])))
     return marks, bends
@@ -96,6 +105,9 @@ def main():
         dtan = max(max(abs(g[2] - w[2]), abs(g[3] - w[3])) for g, w in zip(got, want))
         check(dpos <= TOL, "%s: worst position error %.2e pt (<= %g)" % (name, dpos, TOL))
         check(dtan <= TOL, "%s: worst tangent (cos, sin) error %.2e (<= %g)" % (name, dtan, TOL))
+    if ("wave", "text") in ref:
+        check(widths == {344064}, "text along path: every glyph 5.25pt (344064sp) wide, as "
+              "the reference assumes (Latin Modern Mono): %s" % sorted(widths))
     for r in read_tsv("tex_bend.tsv"):
         got = bends.get((r[0], r[1]))
         name = "bending %s, %spt from the end" % (r[0], r[1])

@@ -28,6 +28,7 @@ CURVES = {
 LENGTHS = [10, 100]
 FRACTIONS = [mpf(1) / 4, mpf(1) / 2, mpf(3) / 4]
 STEP = 5
+TEXT_GLYPHS, TEXT_WIDTH = 40, mpf("5.25")
 # distances from the end for the bending check
 BEND = [1, 2, 5, 10, 20]
 
@@ -99,6 +100,12 @@ def main():
                 f.write(row(name, "len%d" % s, "0", mpf(s), *mark(c, mpf(s))))
             for fr in FRACTIONS:
                 f.write(row(name, "frac%s" % mp.nstr(fr, 3), "0", fr * L, *mark(c, fr * L)))
+            if name == "wave":
+                # text along path: 40 glyphs of Latin Modern Mono (5.25pt)
+                # from the start, each centre half a width into its box
+                for k in range(TEXT_GLYPHS):
+                    sk = (k + mpf(1) / 2) * TEXT_WIDTH
+                    f.write(row(name, "text", str(k), sk, *mark(c, sk)))
             n = int(floor(L / STEP))
             for k in range(n + 1):
                 f.write(row(name, "step", str(k), mpf(k * STEP), *mark(c, mpf(k * STEP))))
