@@ -132,6 +132,15 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
       && ok "pdfLaTeX: arclen.sty stops with a clear error" || bad "pdfLaTeX: no clear error from arclen.sty"
   fi
   [ $st -eq 0 ] && ok "plain_mp: no TeX error (plain LuaTeX, default mode)" || bad "plain_mp: exit $st"
+  # an unknown pgf: a warning, pgf left as it is; " active when the
+  # library is read: the same exact marks
+  ltex unknown_pgf "" '\def\unknownpgf{}\input{tikz_marks}'
+  tr -d '\n' <"$TT/run/unknown_pgf.log" | grep -q "pgf 9.9.9 is not a version this library knows" \
+    && ok "unknown pgf version: a warning" || bad "unknown pgf version: no warning"
+  cmp -s "$TT/run/unknown_pgf.pos" "$TT/run/tikz_marks_stock.pos" \
+    && ok "unknown pgf version: pgf left as it is (the marks are stock pgf's)" \
+    || bad "unknown pgf version: the marks are not stock pgf's"
+  ltex active_quote "" '\def\activequote{}\input{tikz_marks}'
   # the engine option: lua under --shell-escape, c where the core cannot load
   ltex engine_lua --shell-escape '\PassOptionsToPackage{engine=lua}{arclen}\input{tikz_marks}'
   grep -q "Package arclen Info: engine lua (engine=lua)" "$TT/run/engine_lua.log" \
@@ -147,6 +156,7 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
     && ok "--shell-escape: the C core, reported in the log" || bad "--shell-escape: no 'engine c' in the log"
   for pair in "tikz_marks exact tikz_marks.pos" "tikz_marks_c exact tikz_marks_c.pos tikz_marks.pos" \
       "tikz_marks_luamath exact tikz_marks_luamath.pos" \
+      "active_quote exact active_quote.pos" \
       "mp_arclen mp mp_arclen_lua.mpd" "mp_arclen_c mp mp_arclen.mpd" "plain_mp mp plain_mp.mpd"; do
     set -- $pair
     name=$1; shift
