@@ -186,7 +186,10 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
   ltex tikz_bench "";       b1=$secs
   ltex tikz_bench_stock "" '\def\stockpgf{}\input{tikz_bench}'; b2=$secs
   ltex tikz_bench_c --shell-escape tikz_bench.tex; b3=$secs
-  echo "     arclen $b1 s (Lua engine), $b3 s (C core), stock pgf $b2 s"
+  ltex bench_empty "" '\def\benchempty{}\input{tikz_bench}'; b0=$secs
+  echo "     whole runs: arclen $b1 s (Lua engine), $b3 s (C core), stock pgf $b2 s;" \
+    "the figure alone (minus the run without it, $b0 s):" \
+    "$(awk "BEGIN { printf \"%.2f s, %.2f s, %.2f s\", $b1 - $b0, $b3 - $b0, $b2 - $b0 }")"
   [ -s "$TT/run/tikz_bench.pdf" ] && ok "1000 markings: a PDF" || bad "1000 markings: no PDF"
   for j in tikz_marks tikz_marks_stock mp_arclen tikz_errors; do
     cp "$TT/run/$j.log" "$TT/run/$j.pdf" "$OUT/tex/" 2>/dev/null
