@@ -101,7 +101,7 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
   sh tools/install-tex.sh "$TT/texmf" >"$OUT/install-tex.out" 2>&1 \
     && ok "make install-tex into a temporary TEXMFHOME" || bad "install-tex failed ($OUT/install-tex.out)"
   mkdir -p "$TT/run" "$OUT/tex"
-  cp examples/tex/*.tex "$TT/run/"
+  cp examples/tex/*.tex examples/tex/*.mp "$TT/run/"
   # ltex JOB ESC [TEX]: one lualatex run in $TT/run (ESC "" or
   # --shell-escape), timed
   ltex() {
@@ -150,6 +150,11 @@ if command -v python3 >/dev/null && kpsewhich tikz.sty >/dev/null 2>&1; then
     && ok "engine=c in the default mode: a clear error, then the Lua engine" || bad "engine=c: no clear error"
   [ $tm_lua -eq 0 ] && ok "tikz_marks: no TeX error (default mode)" || bad "tikz_marks: exit $tm_lua"
   [ $mp_lua -eq 0 ] && ok "mp_arclen: no TeX error (default mode)" || bad "mp_arclen: exit $mp_lua"
+  # luamplib reports MetaPost's errors as warnings: look for them
+  for j in mp_arclen mp_arclen_c plain_mp; do
+    n=$(grep -c "^(luamplib) *! " "$TT/run/$j.log")
+    [ "$n" -eq 0 ] && ok "$j: no MetaPost error" || bad "$j: $n MetaPost errors (see its log)"
+  done
   grep -q "Package arclen Info: engine lua (binary modules need --shell-escape)" "$TT/run/tikz_marks.log" \
     && ok "default mode: the Lua engine, reported in the log" || bad "default mode: no 'engine lua' in the log"
   grep -q "Package arclen Info: engine c," "$TT/run/tikz_marks_c.log" \

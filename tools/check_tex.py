@@ -50,24 +50,42 @@ def read_tsv(name):
 
 
 def check_mp(path):
-    """MODE "mp": examples/tex/mp_arclen.tex's lengths and points (bp) within
-    1e-8 of spec/data/tex_mp.tsv (arclen's tol 1e-12 of a few hundred bp)."""
-    got = {}
+    """MODE "mp": what examples/tex/mp_record.mp wrote (bp) against
+    spec/data/tex_mp.tsv: lengths and points within 1e-8, times and unit
+    directions within 1e-9 (arclen's tol is 1e-12 of a few hundred bp);
+    the ends of dashes (dash:s) and of a subpath (sub:s) are the points at
+    s; every reference row is asked for."""
+    ref = {}
+    for r in read_tsv("tex_mp.tsv"):
+        ref[(r[0], r[1])] = [float(v) for v in r[2:7]]
+    seen = set()
+    passed = failed = 0
     for line in open(path):
         f = line.split()
-        if len(f) == 4:
-            got[(f[0], f[1])] = (float(f[2]), float(f[3]))
-    passed = failed = 0
-    for r in read_tsv("tex_mp.tsv"):
-        g = got.get((r[0], r[1]))
-        what = "MetaPost %s %s" % (r[0], "length" if r[1] == "-1" else "point at " + r[1])
-        if g is None:
-            ok, msg = False, "not written"
+        if len(f) != 7:
+            continue
+        name, label = f[0], f[1]
+        got = [float(v) for v in f[2:7]]
+        key = (name, label.split(":", 1)[1] if label.startswith(("dash:", "sub:")) else label)
+        want = ref.get(key)
+        what = "MetaPost %s %s" % (name, label)
+        if want is None:
+            ok, msg = False, "no reference"
         else:
-            d = max(abs(g[0] - float(r[2])), abs(g[1] - float(r[3])))
-            ok, msg = d <= 1e-8, "error %.2e (<= 1e-8)" % d
+            seen.add(key)
+            d = max(abs(got[0] - want[0]), abs(got[1] - want[1]))
+            msg = "point (length) error %.2e (<= 1e-8)" % d
+            ok = d <= 1e-8
+            if label == key[1] and label != "-1" and not label.startswith("pts:"):
+                e = max(abs(g - w) for g, w in zip(got[2:], want[2:]))
+                msg += ", time and direction error %.2e (<= 1e-9)" % e
+                ok = ok and e <= 1e-9
         print(("ok   " if ok else "FAIL ") + what + ": " + msg)
         passed, failed = passed + ok, failed + (not ok)
+    missing = sorted(set(ref) - seen)
+    ok = not missing
+    print(("ok   " if ok else "FAIL ") + "every reference asked for" + ("" if ok else ": missing %s" % missing))
+    passed, failed = passed + ok, failed + (not ok)
     print("%d passed, %d failed" % (passed, failed))
     return 1 if failed else 0
 

@@ -119,18 +119,23 @@ def main():
                 x, y = point(c, t)
                 f.write(row(name, str(d), x, y, speed(c, t)))
     with open(os.path.join(root, "tex_mp.tsv"), "w") as f:
-        f.write("# tools/ref_tex.py: MetaPost (bp): curve, s, x, y; s = -1: the length\n")
+        f.write("# tools/ref_tex.py: MetaPost (bp): curve, label, x, y, t, cos, sin; label -1:\n"
+                "# the length (in x); a length s: the point, time and direction there;\n"
+                "# pts:k the k-th of arclen_points(p, 11), at k L / 10\n")
         for name in ("wave", "scurve"):
             c = [mpf(v) for v in CURVES[name]]
             L = length(c)
-            f.write(row(name, "-1", L, 0))
+            f.write(row(name, "-1", L, 0, 0, 0, 0))
             # points, and on the wave the ends of the first four dashes of
             # arclen_dashed(wave, 0)(12, 4, 2, 4)
             extra = (12, 16, 18, 22, 34, 38, 40) if name == "wave" else ()
             for s in sorted((0, 50, 100, 200) + extra):
-                x, y, _, _ = mark(c, mpf(s))
-                f.write(row(name, str(s), x, y))
-
+                t = time_at(c, mpf(s))
+                x, y, ca, sa = mark(c, mpf(s))
+                f.write(row(name, str(s), x, y, t, ca, sa))
+            for k in range(11):
+                x, y, _, _ = mark(c, k * L / 10)
+                f.write(row(name, "pts:%d" % k, x, y, 0, 0, 0))
 
 if __name__ == "__main__":
     main()
