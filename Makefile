@@ -261,11 +261,24 @@ bench-scale: $(MODULE) $(BUILD)/libarclen.a $(FLOOR)
 	$(MAKE) -s -C bench bin/bench_scale_c
 	FLOOR=$(FLOOR) C_LOOP=bench/bin/bench_scale_c LUA_CPATH='$(OUT)/?.so' LUA_PATH='lua/?.lua;lua/?/init.lua' $(LUA_BIN) bench/bench_scale.lua
 
-# ---- LuaTeX and MetaPost documents -------------------------------------
-#   make luatex   the example documents in real LuaLaTeX and LuaTeX runs
-#                 (mp/arclen.mp, lua/arclen/mpost.lua; build/luatex/),
-#                 checked against arclen and MetaPost's arclength/arctime
-.PHONY: luatex
+# ---- TeX: install-tex, ctan, luatex ----------------------------------
+#   make install-tex [TEXMFHOME=DIR]   the TDS layout (tools/install-tex.sh):
+#                 arclen.sty, the TikZ library, the Lua files, arclen.mp,
+#                 the 5.3 C core for --shell-escape runs
+#   make ctan     build/ctan/arclen.zip, with arclen.pdf typeset by lualatex
+#                 from tex/arclen-doc.tex (tools/ctan.sh)
+#   make luatex   the example documents in real LuaLaTeX and LuaTeX runs,
+#                 with and without --shell-escape (build/luatex/), checked
+#                 against mpmath references and arclen
+.PHONY: install-tex ctan luatex
+install-tex:
+	$(MAKE) LUA=5.3
+	sh tools/install-tex.sh $(TEXMFHOME)
+
+ctan:
+	$(MAKE) LUA=5.3
+	sh tools/ctan.sh
+
 luatex:
 	$(MAKE) LUA=5.3
 	sh tools/check-luatex.sh

@@ -7,7 +7,8 @@
 #           luatex format from texlive-base, LuaLaTeX with luamplib from
 #           texlive-luatex, lualatex from texlive-latex-base, MetaPost's
 #           plain.mp from texlive-metapost), LuaRocks with git and zip
-#           (make rock: git archive, the rockspec put back), poppler-utils to
+#           (make rock: git archive, the rockspec put back; make ctan),
+#           pgf from texlive-pictures (the TikZ library), poppler-utils to
 #           render the TeX examples, python3 for the check of the core's
 #           layers, locales with de_DE.UTF-8 and tr_TR.UTF-8 made by
 #           localedef for spec/locale_spec.lua and spec/ctype_spec.lua
@@ -77,7 +78,7 @@ other_system() {
   return 0
 }
 BASE="gcc make libc6-dev lua5.4 liblua5.4-dev lua-busted libexpat1-dev lua-dkjson"
-MATRIX="lua5.1 liblua5.1-0-dev lua5.2 liblua5.2-dev lua5.3 liblua5.3-dev luajit libluajit-5.1-dev texlive-binaries texlive-base texlive-luatex texlive-latex-base texlive-metapost luarocks poppler-utils python3 locales git zip"
+MATRIX="lua5.1 liblua5.1-0-dev lua5.2 liblua5.2-dev lua5.3 liblua5.3-dev luajit libluajit-5.1-dev texlive-binaries texlive-base texlive-luatex texlive-latex-base texlive-metapost luarocks poppler-utils python3 locales git zip texlive-pictures"
 REFS="python3 python3-mpmath python3-svgelements texlive-binaries texlive-base python3-fonttools fonts-urw-base35"
 case "${1:-base}" in
   base) WANT="$BASE" ;;
