@@ -17,6 +17,7 @@ local arclen = require("arclen")
 
 local floor, sqrt, atan2 = math.floor, math.sqrt, math.atan2 or math.atan
 local format = string.format
+local numtext = require("arclen.numtext")   -- numbers with '.' in any locale
 local deg = 180 / math.pi
 local SP = 65536
 local MAXDIMEN = 1073741823          -- \maxdimen in sp: 16383.99998pt
@@ -55,7 +56,7 @@ local function setdimen(name, pt, what)
   local n = floor(pt * SP + 0.5)
   if n ~= n then n = 0 end
   if n > MAXDIMEN or n < -MAXDIMEN then
-    err(format("%s is %.6gpt, beyond TeX's largest dimension (16383.99998pt)", what, pt),
+    err(numtext.format("%s is %.6gpt, beyond TeX's largest dimension (16383.99998pt)", what, pt),
       "The picture is too large for TeX's dimensions; scale it down.")
     n = n > 0 and MAXDIMEN or -MAXDIMEN
   end
@@ -120,7 +121,7 @@ local function tangent(c, t)
   return vx / n, vy / n
 end
 
-local function time_text(t) return format("%.17f", t) end
+local function time_text(t) return numtext.format("%.17f", t) end
 
 -- \pgf@decorate@curvelength: \pgfmathresult = the length (a number of pt).
 function M.curvelength(x0, y0, x1, y1, x2, y2, x3, y3)
