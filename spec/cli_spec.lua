@@ -338,12 +338,7 @@ describe("arclen CLI: the documented commands", function()
   -- The ```sh block of doc/api.md's "Command line" section, and README.md's
   -- `./bin/arclen` lines: every command runs (exit 0, some output); where
   -- the comment is numbers, the output's first line is those numbers.
-  local function read(name)
-    local f = assert(io.open(name))
-    local text = f:read("*a")
-    f:close()
-    return text
-  end
+  local read = require("helpers").read
   local section = read("doc/api.md"):match("\n## Command line\n(.-)\n## ") or ""
   local block = section:match("```sh\n(.-)```") or ""
   local lines, readme = {}, 0

@@ -156,6 +156,14 @@ function helpers.interpreter()
   return tex and "texlua" or "lua" .. _VERSION:match("%d+%.%d+")
 end
 
+-- The whole text of a file.
+function helpers.read(name)
+  local f = assert(io.open(name, "rb"))
+  local text = f:read("*a")
+  f:close()
+  return text
+end
+
 -- s quoted for a POSIX shell.
 function helpers.shquote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end
 

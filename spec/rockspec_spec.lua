@@ -4,12 +4,7 @@
 -- the rock arclen-svg.  The release is arclen._VERSION.
 local arclen = require("arclen")
 
-local function read(name)
-  local f = assert(io.open(name))
-  local s = f:read("*a")
-  f:close()
-  return s
-end
+local read = require("helpers").read
 
 local RELEASE = arclen._VERSION:match("^arclen (%d+%.%d+%.%d+)$")
 

@@ -38,6 +38,25 @@ local function c_module(lines, name, sources, libraries, incdirs, libdirs)
   lines[#lines + 1] = '    },'
 end
 
+-- Each rock's description, as the rockspec writes it.
+local DESCRIPTION = {
+  arclen = [==[description = {
+  summary = "Arc length of cubic Bezier curves: exact, elliptic, MetaPost-faithful",
+  detailed = [[A C99 core bound for Lua: error-controlled length and its inverse,
+  Carlson elliptic integrals, MetaPost arclength/arctime bit for bit, Gravesen
+  subdivision, Walter & Fournier length fits, Floater conic approximations,
+  paths from SVG path data. SVG documents need the rock arclen-svg; the
+  command line's --json needs dkjson.]],
+  license = "MIT",
+}]==],
+  ["arclen-svg"] = [==[description = {
+  summary = "SVG documents for arclen: the reader arclen.svg drives (over expat)",
+  detailed = [[The C module arclen.svgdoc, a streaming SVG document reader over
+  libexpat: require "arclen.svg" (in the rock arclen) needs it.]],
+  license = "MIT",
+}]==],
+}
+
 local function rockspec(package, version, url)
   local scm = version:match("^scm") ~= nil
   local base = version:match("^(.-)%-%d+$")          -- "1.0.0" of "1.0.0-1"
@@ -60,26 +79,12 @@ local function rockspec(package, version, url)
   local docsrc = ls("find src/svgdoc -name '*.c'")
   local lmods = ls("find lua/arclen -name '*.lua'")
   local lines = {('package = "%s"'):format(package), ('version = "%s"'):format(version), source}
+  lines[#lines + 1] = DESCRIPTION[package]
   if package == "arclen" then
-    lines[#lines + 1] = 'description = {'
-    lines[#lines + 1] = '  summary = "Arc length of cubic Bezier curves: exact, elliptic, MetaPost-faithful",'
-    lines[#lines + 1] = '  detailed = [[A C99 core bound for Lua: error-controlled length and its inverse,'
-    lines[#lines + 1] = '  Carlson elliptic integrals, MetaPost arclength/arctime bit for bit, Gravesen'
-    lines[#lines + 1] = '  subdivision, Walter & Fournier length fits, Floater conic approximations,'
-    lines[#lines + 1] = '  paths from SVG path data. SVG documents need the rock arclen-svg; the'
-    lines[#lines + 1] = '  command line\'s --json needs dkjson.]],'
-    lines[#lines + 1] = '  license = "MIT",'
-    lines[#lines + 1] = '}'
     -- Nothing but Lua and libm: dkjson (the command line's --json) and the
     -- document reader (arclen-svg, over expat) are optional, and say so.
     lines[#lines + 1] = 'dependencies = { "lua >= 5.1" }'
   else
-    lines[#lines + 1] = 'description = {'
-    lines[#lines + 1] = '  summary = "SVG documents for arclen: the reader arclen.svg drives (over expat)",'
-    lines[#lines + 1] = '  detailed = [[The C module arclen.svgdoc, a streaming SVG document reader over'
-    lines[#lines + 1] = '  libexpat: require "arclen.svg" (in the rock arclen) needs it.]],'
-    lines[#lines + 1] = '  license = "MIT",'
-    lines[#lines + 1] = '}'
     lines[#lines + 1] = ('dependencies = { "lua >= 5.1", "%s" }'):format(
       scm and "arclen" or ("arclen == " .. base))
     lines[#lines + 1] = 'external_dependencies = { EXPAT = { header = "expat.h" } }'
