@@ -695,7 +695,7 @@ void svgdoc_free(svgdoc *D) {
   svgdoc_free_pool(D);
   for (k = 0; k < SVGDOC_NPROPS; k++) free(D->props[k].s);
   for (k = 0; k <= SVGDOC_MAX_USE_DEPTH; k++) free(D->xstacks[k]);
-  free(D->scratch.s);
+  free(D->scratch.s), free(D->held.s);
   free(D->stack), free(D->open_ev), free(D->events);
   free(D->ids), free(D->id_event), free(D->out), free(D->drawn);
   free(D->all), free(D->warnings), free(D->err_msg);
@@ -724,24 +724,63 @@ static void xml_error(svgdoc *D) {
   svgdoc_set_error(D, line, col, m);
 }
 
-int svgdoc_feed(svgdoc *D, const char *s, size_t n) {
-  if (D->failed) return -1;
-  while (n > 0) {              /* expat takes an int's worth at a time */
+/* expat 2.5 tokenizes an unfinished token again from its start on every
+** XML_Parse call, so a token of T bytes fed in chunks of c bytes costs
+** T^2 / (2c).  The input is therefore held back until it is at least as
+** long as what expat left unparsed (byte counts from
+** XML_GetCurrentByteIndex): each rescan is then paid for by as many new
+** bytes, and the whole reading is linear in the document's size.  Input
+** that completes what is open is parsed at once, so errors come with the
+** feed that completes their element, as before. */
+#define HELD_KEEP 262144                /* held room kept for the next token */
+
+/* Hand s[0 .. n-1] to expat, an int's worth at a time. */
+static int parse(svgdoc *D, const char *s, size_t n) {
+  while (n > 0) {
     int len = n > (1u << 30) ? 1 << 30 : (int)n;
+    XML_Index at;
     D->bytes += (size_t)len;
     if (XML_Parse((XML_Parser)D->parser, s, len, 0) != XML_STATUS_OK) {
       if (!D->failed) xml_error(D);
       return -1;
     }
     s += len, n -= (size_t)len;
+    /* the start of the event expat stopped in: the unparsed tail */
+    at = XML_GetCurrentByteIndex((XML_Parser)D->parser);
+    D->held_need = at >= 0 && (size_t)at < D->bytes ? D->bytes - (size_t)at : 0;
   }
   return 0;
+}
+
+int svgdoc_feed(svgdoc *D, const char *s, size_t n) {
+  jmp_buf jb;
+  int rc;
+  if (D->failed) return -1;
+  if (D->held.len == 0 && n >= D->held_need)
+    return parse(D, s, n);              /* no long token open: at once */
+  D->on_error = &jb;                    /* svgdoc_append's out of memory */
+  if (setjmp(jb) != 0) {
+    D->on_error = NULL;
+    return -1;
+  }
+  svgdoc_append(D, &D->held, s, n);
+  D->on_error = NULL;
+  if (D->held.len < D->held_need) return 0;
+  rc = parse(D, D->held.s, D->held.len);
+  D->held.len = 0;
+  if (D->held.room > HELD_KEEP && D->held_need < HELD_KEEP / 4) {
+    free(D->held.s);                    /* the long token is over */
+    D->held.s = NULL, D->held.room = 0;
+  }
+  return rc;
 }
 
 int svgdoc_finish(svgdoc *D) {
   jmp_buf jb;
   size_t k;
   if (D->failed) return -1;
+  if (D->held.len > 0 && parse(D, D->held.s, D->held.len) != 0) return -1;
+  D->held.len = 0;
   D->finished = 1;
   if (XML_Parse((XML_Parser)D->parser, NULL, 0, 1) != XML_STATUS_OK) {
     if (!D->failed) xml_error(D);
