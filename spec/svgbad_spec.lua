@@ -60,6 +60,26 @@ describe("arclen.svg: bad documents, each a clear error naming the file and plac
     {"XML that is not SVG", '<html xmlns="http://www.w3.org/1999/xhtml"><body/></html>',
      "^bad%.svg:1:1: not an SVG document: the root element is <html>"},
     {"an svg root in another namespace", '<svg xmlns="urn:x"/>', "not an SVG document"},
+    -- errors met while measuring: the element's place, in the document's words
+    {"a path whose length overflows (its thirds beyond the doubles)", H .. '<path d="M0 0 L1e308 0 L-1e308 0"/></svg>',
+     "^bad%.svg:1:" .. COL .. ": <path>: the path's length overflows %(coordinates up to 1e%+308%)$"},
+    {"a path of finite control points whose length overflows", H .. '<path id="p" d="M0 0 L1.7e308 0 L0 0 L1.7e308 0"/></svg>',
+     "^bad%.svg:1:" .. COL .. ": <path id='p'>: the path's length overflows %(coordinates up to 1%.7e%+308%)$"},
+    {"a total that overflows, at the element where it does", H .. '<path d="M0 0 L1.7e308 0"/>\n<path d="M0 0 L1.7e308 0"/></svg>',
+     "^bad%.svg:2:1: <path>: the total length overflows here %(1%.7e%+308 before it, 1%.7e%+308 in it%)$"},
+    {"a circle of radius 1e308", H .. '<circle r="1e308"/></svg>',
+     "^bad%.svg:1:" .. COL .. ": <circle>: the radius is out of range %(r='1e308'%)"},
+    {"an ellipse of radius 1e308", H .. '<ellipse rx="1" ry="1e308"/></svg>',
+     "^bad%.svg:1:" .. COL .. ": <ellipse>: the radii are out of range %(rx='1' ry='1e308'%)"},
+    {"a rect whose corners are beyond the doubles", H .. '<rect width="1e308" height="1e308" rx="1e307"/></svg>',
+     "^bad%.svg:1:" .. COL .. ": <rect>: the size is out of range %(width='1e308' height='1e308' rx='1e307'%)"},
+    {"an arc of path data beyond the doubles: its size, not a tolerance", H .. '<path d="M0 0 A1e308 1e308 0 0 1 1e308 1e308"/></svg>',
+     "^bad%.svg:1:" .. COL .. ": <path>: d: elliptical arc: the arc's size is out of range"},
+    {"skewX(90)", H .. '<path transform="skewX(90)" d="M0 0 L0 1"/></svg>',
+     "^bad%.svg:1:" .. COL .. ": transform='skewX%(90%)': skewX%(90%) is undefined %(a skew angle must not be 90 degrees modulo 180%) at character 1$"},
+    {"skewY(-90) after another function", H .. '<g transform="translate(1) skewY(-90)"/></svg>',
+     "transform='translate%(1%) skewY%(%-90%)': skewY%(%-90%) is undefined .* at character 14$"},
+    {"skewX(270)", H .. '<g transform="skewX(270)"/></svg>', "skewX%(270%) is undefined"},
   }
   for _, c in ipairs(cases) do
     it(c[1], function()
@@ -75,6 +95,58 @@ describe("arclen.svg: bad documents, each a clear error naming the file and plac
     assert.is_nil(e)
     assert.are.equal(2, doc.total)
     assert.matches("^bad%.svg:1:" .. COL .. ": <path>: singular transform, not drawn$", doc.warnings[1])
+  end)
+
+  it("no internal words in the errors of the measuring (tol, coordinate n, bad argument)", function()
+    for _, t in ipairs{'<path d="M0 0 L1e308 0 L-1e308 0"/>', '<circle r="1e308"/>',
+                       '<path d="M0 0 A1e308 1e308 0 0 1 1e308 1e308"/>'} do
+      local e = err_of(H .. t .. "</svg>")
+      assert.is_string(e)
+      assert.is_nil(e:find("tol must", 1, true), e)
+      assert.is_nil(e:find("coordinate %d"), e)
+      assert.is_nil(e:find("bad argument", 1, true), e)
+      assert.is_nil(e:find("path.lua", 1, true), e)
+    end
+  end)
+
+  it("singular transforms are judged by their singular values, not an underflowing determinant", function()
+    -- scale(1e-170): determinant 1e-340 (0 in doubles), singular values 1e-170
+    local e, doc = err_of(H .. '<g transform="scale(1e-170)"><path d="M0 0 L1e170 0"/></g></svg>')
+    assert.is_nil(e)
+    assert.are.same({}, doc.warnings)
+    -- the exact product of the doubles 1e170 and 1e-170 is 1 to 1e-16
+    assert.is_true(math.abs(doc.total - 1) <= 1e-15, doc.total)
+    e, doc = err_of(H .. '<g transform="matrix(0 1e-200 -1e-200 0 0 0)"><path d="M0 0 L3e200 4e200"/></g></svg>')
+    assert.is_nil(e)
+    assert.is_true(math.abs(doc.total - 5) <= 5e-15, doc.total)
+    -- rank one (columns (1, 2) and (2, 4)) and a zero scale stay singular
+    for _, t in ipairs{"matrix(1 2 2 4 0 0)", "scale(0 1)", "scale(1e-200) scale(1e-200)"} do
+      e, doc = err_of(H .. '<path transform="' .. t .. '" d="M0 0 L1 1"/></svg>')
+      assert.is_nil(e)
+      assert.are.equal(0, doc.total)
+      assert.matches("^bad%.svg:1:" .. COL .. ": <path>: singular transform, not drawn$", doc.warnings[1])
+    end
+  end)
+
+  it("a skew short of 90 degrees is drawn", function()
+    local e, doc = err_of(H .. '<path transform="skewX(89.99)" d="M0 0 L0 1"/></svg>')
+    assert.is_nil(e)
+    -- the image of (0, 1) is (tan 89.99 deg, 1); mpmath (30 digits):
+    -- sqrt(1 + tan(89.99 deg)^2) = 5729.57798039705305762986026573.  The
+    -- angle in radians is rounded (1.1e-16 relative), which tan near 90
+    -- degrees multiplies by tan(a) a = 9e3: 1e-12 relative, so 1e-11 here.
+    assert.is_true(math.abs(doc.total - 5729.57798039705305762986026573) <= 1e-11 * 5729.6, doc.total)
+  end)
+
+  it("errors after a token longer than the reader's chunks keep their place", function()
+    local d = "M0 0" .. ("l1 0"):rep(60000)            -- 240 kB: one token over four chunks
+    local text = H .. '\n<path d="' .. d .. '"/>\n  <circle r="1e308"/></svg>'
+    local e = err_of(text)
+    assert.matches("^bad%.svg:3:3: <circle>: the radius is out of range", e)
+    local e2, doc = err_of(H .. '\n<path d="' .. d .. '"/>\n  <path d="M0 0 L2 0"/></svg>')
+    assert.is_nil(e2)
+    assert.are.equal(60002, doc.total)
+    assert.are.same({2, 1, 3, 3}, {doc.elements[1].line, doc.elements[1].col, doc.elements[2].line, doc.elements[2].col})
   end)
 
   it("a use bomb (each level uses the previous twice) stops at the cap, quickly", function()

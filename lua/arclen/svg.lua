@@ -67,6 +67,43 @@ local function may_use(s)
   return find(s, "<use", 1, true) or find(s, ":use", 1, true)
 end
 
+-- The largest magnitude among p's control points (for messages).
+local function largest_coordinate(p)
+  local top = 0
+  for k = 1, p.n do
+    local c = p:segment(k)
+    for j = 1, 8 do
+      local v = abs(c[j])
+      if v > top and v ~= huge then top = v end
+    end
+  end
+  return top
+end
+
+-- The shortest decimal that reads back as x ('.' in any locale).
+local function shortest(x)
+  for digits = 1, 17 do
+    local t = format("%." .. digits .. "g", x)
+    if tonumber(t) == x then return t end
+  end
+  return format("%.17g", x)
+end
+
+-- An error met while measuring element e, located at e and said in the
+-- document's terms: "<tag id='..'>: what".  err: an error value of the
+-- path layer ("...: bad argument #1 to 'lengths' (why)") or nil when the
+-- length overflows.
+local function element_fail(e, err)
+  local what = e.id and format("<%s id='%s'>", e.tag, e.id) or format("<%s>", e.tag)
+  if err == nil then
+    fail(e.line, e.col, format("%s: the path's length overflows (coordinates up to %s)",
+      what, shortest(largest_coordinate(e.path))))
+  end
+  local m = tostring(type(err) == "table" and err.msg or err)
+  m = m:gsub("^[^\n]-:%d+: ", ""):gsub("^bad argument #%d+ to '[^']*' %((.*)%)$", "%1")
+  fail(e.line, e.col, what .. ": " .. m)
+end
+
 -- Read the document from next_chunk() (nil at the end): the C reader's
 -- results, each drawn element with its arclen.path.
 local function run(o, name, next_chunk, uses)
@@ -80,10 +117,16 @@ local function run(o, name, next_chunk, uses)
   end
   local res = r:finish(name)
   local from_subpaths, tol, method = path._from_subpaths, o.tol, o.method
-  for _, e in ipairs(res.elements) do
-    e.path = from_subpaths(e.subpaths, tol, method)
-    e.subpaths = nil
-  end
+  local els, i = res.elements, 0
+  local ok, err = pcall(function()
+    for k = 1, #els do
+      i = k
+      local e = els[k]
+      e.path = from_subpaths(e.subpaths, tol, method)
+      e.subpaths = nil
+    end
+  end)
+  if not ok then element_fail(els[i], err) end
   return res
 end
 
@@ -129,14 +172,17 @@ local function finish(r, o, name)
   if o.measure then
     local total = 0
     for _, e in ipairs(r.elements) do
-      local L, err = e.path:length()
-      if L == nil or not isfinite(L) then
-        fail(e.line, e.col, format("<%s>: length: %s", e.tag, tostring(err or "overflows")))
-      end
+      local ok, L, err = pcall(e.path.length, e.path)
+      if not ok then element_fail(e, L) end
+      if L == nil then element_fail(e, err) end
+      if not isfinite(L) then element_fail(e, nil) end
       e.length = L
+      if not isfinite(total + L) then
+        fail(e.line, e.col, format("<%s>: the total length overflows here (%s before it, %s in it)",
+          e.tag, shortest(total), shortest(L)))
+      end
       total = total + L
     end
-    if not isfinite(total) then fail(1, 1, "the total length overflows") end
     doc.total = total
   end
   return doc

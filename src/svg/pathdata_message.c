@@ -38,7 +38,8 @@ static void put_byte(out *o, const arclen_pathdata_error *e) {
   put(o, "'");
 }
 
-/* The inner message of arclen.svg_arc for the same failure. */
+/* The inner message of arclen.svg_arc for the same failure (but the
+** tolerance, which path data does not give, in terms of the arc's size). */
 static void put_arc_reason(out *o, const arclen_pathdata_error *e) {
   static const char *const coord[] = {"x1", "y1", "x2", "y2"};
   switch (e->arc) {
@@ -46,8 +47,9 @@ static void put_arc_reason(out *o, const arclen_pathdata_error *e) {
   case ARCLEN_PD_ARC_X2: case ARCLEN_PD_ARC_Y2:
     put(o, "%s must be finite", coord[e->arc - ARCLEN_PD_ARC_X1]);
     break;
-  case ARCLEN_PD_ARC_TOL:
-    put(o, "tol must be a positive finite number");
+  case ARCLEN_PD_ARC_TOL:      /* arc_tol times the arc's size: data's fault */
+    put(o, "the arc's size is out of range (its radii or chord beyond the "
+           "largest double, or too small for arc_tol)");
     break;
   case ARCLEN_PD_ARC_OVERFLOW:
     put(o, "the arc's radii, centre or control points lie beyond the "

@@ -202,7 +202,7 @@ void svgdoc_transform(svgdoc *D, unsigned long line, unsigned long col,
   svgdoc_translate(0, 0, T);
   while (i < n && space((unsigned char)s[i])) i++;
   for (turn = 0; turn < n && i < n; turn++) {     /* one function a turn */
-    size_t e = i, len;
+    size_t e = i, len, at = i;          /* at: the function's start */
     int f, na = 0, comma, ok;
     double a[7];
     svgdoc_matrix R;
@@ -267,6 +267,16 @@ void svgdoc_transform(svgdoc *D, unsigned long line, unsigned long col,
         snprintf(whybuf, sizeof whybuf, "%s takes %d arguments, got %d",
                  FUNCS[f].name, FUNCS[f].counts[0], na);
       why = whybuf;
+      goto bad;
+    }
+    if (f >= 4 && fabs(fmod(a[0], 180)) == 90) {
+      /* tan 90 degrees is infinite: no matrix (double's tan gives 1.6e16) */
+      char num[32];
+      svgdoc_num(num, a[0]);
+      snprintf(whybuf, sizeof whybuf, "%s(%s) is undefined (a skew angle "
+               "must not be 90 degrees modulo 180)", FUNCS[f].name, num);
+      why = whybuf;
+      i = at;
       goto bad;
     }
     transform_function(f, a, na, R);

@@ -72,6 +72,9 @@ struct svgdoc {
   size_t skipped[SVGDOC_NSKIPPED];
   svgdoc_info info;
   svgdoc_buffer props[SVGDOC_NPROPS], scratch;
+  /* input held back while expat has an unfinished token (reader.c) */
+  svgdoc_buffer held;
+  size_t held_need;
 };
 
 /* ---- memory and errors (memory.c) ---- */

@@ -8,6 +8,7 @@
 ** document without <use> keeps nothing but its results.
 */
 #include <expat.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -196,6 +197,54 @@ static const char *pathdata_message(svgdoc *D, const arclen_pathdata *pd,
   return m;
 }
 
+/* x in the fewest significant digits that read back as x (locale-free),
+** for numbers in messages: 1e+308, not 1.0000000000000001e+308. */
+static void short_num(char buf[32], double x) {
+  int digits;
+  for (digits = 1; digits < 17; digits++) {        /* capped: 17 always reads back */
+    double v;
+    size_t n = arclen_decimal_print(buf, x, digits);
+    if (arclen_decimal_value(buf, n, &v) == 0 && v == x) return;
+  }
+  arclen_decimal_print(buf, x, 17);
+}
+
+/* A basic shape whose arcs cannot be built because of their size (the
+** scaled tolerance or the control points beyond the doubles) is named by
+** the attributes that give that size, not by the arc's internals; NULL
+** for any other error. */
+static const char *shape_size_message(svgdoc *D, const arclen_pathdata *pd,
+                                      const char *tag, const char **atts) {
+  static const char *const CIRCLE[] = {"r", NULL};
+  static const char *const ELLIPSE[] = {"rx", "ry", NULL};
+  static const char *const RECT[] = {"x", "y", "width", "height", "rx", "ry",
+                                     NULL};
+  const char *const *names;
+  const char *what;
+  svgdoc_buffer *b = &D->scratch;
+  int k;
+  if (pd->err.kind != ARCLEN_PD_ARC ||
+      (pd->err.arc != ARCLEN_PD_ARC_TOL && pd->err.arc != ARCLEN_PD_ARC_OVERFLOW &&
+       pd->err.arc != ARCLEN_PD_ARC_CUBICS))
+    return NULL;
+  if (strcmp(tag, "circle") == 0) names = CIRCLE, what = "the radius is";
+  else if (strcmp(tag, "ellipse") == 0) names = ELLIPSE, what = "the radii are";
+  else if (strcmp(tag, "rect") == 0) names = RECT, what = "the size is";
+  else return NULL;
+  b->len = 0;
+  for (k = 0; names[k]; k++) {
+    const char *v = svgdoc_attr(atts, names[k]);
+    if (v == NULL) continue;
+    if (b->len) svgdoc_append(D, b, " ", 1);
+    svgdoc_append(D, b, names[k], strlen(names[k]));
+    svgdoc_append(D, b, "='", 2);
+    svgdoc_append(D, b, v, strlen(v) > 64 ? 64 : strlen(v));
+    svgdoc_append(D, b, "'", 1);
+  }
+  return svgdoc_format(D, "%s out of range (%s): the shape's arcs reach "
+                       "beyond the largest double", what, b->len ? b->s : "");
+}
+
 /* A drawn shape: its path data into cubics under the CTM. */
 static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
                  const char *d, const char **atts, unsigned long line,
@@ -211,10 +260,32 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
   D->all[D->nall++] = e;
   if (arclen_pathdata_parse(&e->pd, d, strlen(d), D->o.arc_tol,
                             identity ? NULL : C) != ARCLEN_PD_OK) {
-    const char *m = pathdata_message(D, &e->pd, d);
-    svgdoc_fail(D, line, col, "<%s%s%s%s>: %s%s", tag, id ? " id='" : "",
-                id ? id : "", id ? "'" : "", strcmp(tag, "path") == 0 ? "d: " : "",
-                m);
+    const char *m = shape_size_message(D, &e->pd, tag, atts);
+    if (m == NULL) {
+      m = pathdata_message(D, &e->pd, d);
+      if (strcmp(tag, "path") == 0) m = svgdoc_format(D, "d: %s", m);
+    }
+    svgdoc_fail(D, line, col, "<%s%s%s%s>: %s", tag, id ? " id='" : "",
+                id ? id : "", id ? "'" : "", m);
+  }
+  {
+    /* a control point beyond the doubles (a line from -1e308 to 1e308
+    ** has its thirds there): the length cannot be a double either */
+    size_t k, n = 8 * e->pd.ncubics;
+    double top = 0;
+    int finite = 1;
+    for (k = 0; k < n; k++) {
+      double v = fabs(e->pd.cubics[k]);
+      if (!(v <= DBL_MAX)) finite = 0;
+      else if (v > top) top = v;
+    }
+    if (!finite) {
+      char num[32];
+      short_num(num, top);
+      svgdoc_fail(D, line, col, "<%s%s%s%s>: the path's length overflows "
+                  "(coordinates up to %s)", tag, id ? " id='" : "",
+                  id ? id : "", id ? "'" : "", num);
+    }
   }
   e->id = copy(D, id);
   e->tag = tag;
@@ -235,6 +306,26 @@ static int zero_width(const char *s) {
   size_t n = strspn(s, "0123456789.eE+-");
   double v;
   return n > 0 && arclen_decimal_scan(s, n, 0, &v) == n && v == 0;
+}
+
+/* Is the CTM's linear part [[a c] [b d]] singular: is its smaller
+** singular value zero?  Judged on the matrix scaled by a power of two so
+** that its largest entry is in [1/2, 1) (exact), where the determinant
+** a d - b c (Kahan's fma form, accurate to an ulp or so) can underflow
+** only if the singular values' ratio is below ~1e-308: scale(1e-170)
+** has a determinant 1e-340, zero in doubles, but singular values 1e-170. */
+static int singular(const double *C) {
+  double m = 0, a, b, c, d, w, err;
+  int k, e;
+  for (k = 0; k < 4; k++)
+    if (fabs(C[k]) > m) m = fabs(C[k]);
+  if (m == 0) return 1;
+  (void)frexp(m, &e);
+  a = ldexp(C[0], -e), b = ldexp(C[1], -e);
+  c = ldexp(C[2], -e), d = ldexp(C[3], -e);
+  w = b * c;                          /* Kahan: a d - w, then w's error */
+  err = fma(-b, c, w);
+  return fma(a, d, -w) + err == 0;
 }
 
 /* The child frame f of element (tag, atts) under parent; f->skip when
@@ -322,13 +413,13 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
   {
     const double *C = f->ctm;
     int k;
-    if (C[0] * C[3] - C[1] * C[2] == 0) {   /* SVG 2 section 8.5: not drawn */
+    for (k = 0; k < 6; k++)
+      if (!isfinite(C[k])) svgdoc_fail(D, line, col, "the transforms overflow");
+    if (singular(C)) {                 /* SVG 2 section 8.5: not drawn */
       warn(D, line, col, svgdoc_format(D, "<%s>: singular transform, not drawn", tag));
       f->skip = 1;
       return;
     }
-    for (k = 0; k < 6; k++)
-      if (!isfinite(C[k])) svgdoc_fail(D, line, col, "the transforms overflow");
   }
   if (strcmp(tag, "g") == 0) {
     const char *mode = svgdoc_attr(atts, INKSCAPE_GROUPMODE);
@@ -695,7 +786,7 @@ void svgdoc_free(svgdoc *D) {
   svgdoc_free_pool(D);
   for (k = 0; k < SVGDOC_NPROPS; k++) free(D->props[k].s);
   for (k = 0; k <= SVGDOC_MAX_USE_DEPTH; k++) free(D->xstacks[k]);
-  free(D->scratch.s);
+  free(D->scratch.s), free(D->held.s);
   free(D->stack), free(D->open_ev), free(D->events);
   free(D->ids), free(D->id_event), free(D->out), free(D->drawn);
   free(D->all), free(D->warnings), free(D->err_msg);
@@ -724,24 +815,63 @@ static void xml_error(svgdoc *D) {
   svgdoc_set_error(D, line, col, m);
 }
 
-int svgdoc_feed(svgdoc *D, const char *s, size_t n) {
-  if (D->failed) return -1;
-  while (n > 0) {              /* expat takes an int's worth at a time */
+/* expat 2.5 tokenizes an unfinished token again from its start on every
+** XML_Parse call, so a token of T bytes fed in chunks of c bytes costs
+** T^2 / (2c).  The input is therefore held back until it is at least as
+** long as what expat left unparsed (byte counts from
+** XML_GetCurrentByteIndex): each rescan is then paid for by as many new
+** bytes, and the whole reading is linear in the document's size.  Input
+** that completes what is open is parsed at once, so errors come with the
+** feed that completes their element, as before. */
+#define HELD_KEEP 262144                /* held room kept for the next token */
+
+/* Hand s[0 .. n-1] to expat, an int's worth at a time. */
+static int parse(svgdoc *D, const char *s, size_t n) {
+  while (n > 0) {
     int len = n > (1u << 30) ? 1 << 30 : (int)n;
+    XML_Index at;
     D->bytes += (size_t)len;
     if (XML_Parse((XML_Parser)D->parser, s, len, 0) != XML_STATUS_OK) {
       if (!D->failed) xml_error(D);
       return -1;
     }
     s += len, n -= (size_t)len;
+    /* the start of the event expat stopped in: the unparsed tail */
+    at = XML_GetCurrentByteIndex((XML_Parser)D->parser);
+    D->held_need = at >= 0 && (size_t)at < D->bytes ? D->bytes - (size_t)at : 0;
   }
   return 0;
+}
+
+int svgdoc_feed(svgdoc *D, const char *s, size_t n) {
+  jmp_buf jb;
+  int rc;
+  if (D->failed) return -1;
+  if (D->held.len == 0 && n >= D->held_need)
+    return parse(D, s, n);              /* no long token open: at once */
+  D->on_error = &jb;                    /* svgdoc_append's out of memory */
+  if (setjmp(jb) != 0) {
+    D->on_error = NULL;
+    return -1;
+  }
+  svgdoc_append(D, &D->held, s, n);
+  D->on_error = NULL;
+  if (D->held.len < D->held_need) return 0;
+  rc = parse(D, D->held.s, D->held.len);
+  D->held.len = 0;
+  if (D->held.room > HELD_KEEP && D->held_need < HELD_KEEP / 4) {
+    free(D->held.s);                    /* the long token is over */
+    D->held.s = NULL, D->held.room = 0;
+  }
+  return rc;
 }
 
 int svgdoc_finish(svgdoc *D) {
   jmp_buf jb;
   size_t k;
   if (D->failed) return -1;
+  if (D->held.len > 0 && parse(D, D->held.s, D->held.len) != 0) return -1;
+  D->held.len = 0;
   D->finished = 1;
   if (XML_Parse((XML_Parser)D->parser, NULL, 0, 1) != XML_STATUS_OK) {
     if (!D->failed) xml_error(D);
