@@ -218,11 +218,12 @@ accuracy: $(MODULE)
 #   make bench-peers              arclen vs GSL, kurbo, bezier-js, paper.js,
 #                                 MetaPost on the same curves, one run
 #   make bench-scale              10^6 curves through the Lua API
+#   make bench-svg-token          one 12.5 .. 100 MB attribute: time, RSS
 #   make bench-svg                whole SVG documents: arclen.svg vs
 #                                 svgelements, svg-path-properties, paper.js
 #   make bench-paths              points along paths, with node/kurbo peers
 FUZZ_SECONDS ?= 15
-.PHONY: fuzz sanitize valgrind check-builds bench-peers bench-scale bench-svg bench-paths
+.PHONY: fuzz sanitize valgrind check-builds bench-peers bench-scale bench-svg bench-svg-token bench-paths
 
 fuzz:
 	FUZZ_SECONDS=$(FUZZ_SECONDS) sh tools/fuzz.sh
@@ -243,6 +244,11 @@ bench-peers: $(BUILD)/libarclen.a
 
 bench-svg:
 	sh bench/bench_svg.sh
+
+# One path whose d is 12.5 .. 100 MB: time and peak RSS of arclen length
+# (linear in the token's size; GNU time).
+bench-svg-token:
+	sh bench/bench_svg_token.sh
 
 # Points along paths: resample, points, dash on 10 .. 10^4 segments, k = 10
 # .. 10^5, per point as ratios to one length call, with the node and kurbo

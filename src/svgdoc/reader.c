@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "curve/numeric.h"
 #include "svg/decimal.h"
 #include "svgdoc/internal.h"
 
@@ -324,8 +325,8 @@ static int singular(const double *C) {
   a = ldexp(C[0], -e), b = ldexp(C[1], -e);
   c = ldexp(C[2], -e), d = ldexp(C[3], -e);
   w = b * c;                          /* Kahan: a d - w, then w's error */
-  err = fma(-b, c, w);
-  return fma(a, d, -w) + err == 0;
+  err = arclen_fma(-b, c, w);
+  return arclen_fma(a, d, -w) + err == 0;
 }
 
 /* The child frame f of element (tag, atts) under parent; f->skip when
