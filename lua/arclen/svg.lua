@@ -35,7 +35,8 @@ end
 
 local M = {}
 
-local format = require("arclen.numtext").format   -- '.' in any locale
+local numtext = require("arclen.numtext")
+local format, shortest = numtext.format, numtext.shortest   -- '.' in any locale
 local find, sub, floor, huge = string.find, string.sub, math.floor, math.huge
 local abs, sqrt = math.abs, math.sqrt
 
@@ -80,14 +81,6 @@ local function largest_coordinate(p)
   return top
 end
 
--- The shortest decimal that reads back as x ('.' in any locale).
-local function shortest(x)
-  for digits = 1, 17 do
-    local t = format("%." .. digits .. "g", x)
-    if tonumber(t) == x then return t end
-  end
-  return format("%.17g", x)
-end
 
 -- An error met while measuring element e, located at e and said in the
 -- document's terms: "<tag id='..'>: what".  err: an error value of the
