@@ -3,10 +3,16 @@
 ** module arclen.svgdoc, a shared object of its own because it links
 ** libexpat, which arclen.core does without.  arclen.svg is its user.
 **   svgdoc.new(opts) -> reader    opts: arc_tol, unit_px (0: user units),
-**                                 hidden, stroked, max_depth, uses
-**   reader:feed(s)                the next bytes of the document
+**                                 hidden, stroked, max_depth, uses, stream
+**   reader:scan(s)                optional, before feed: the whole document
+**                                 once, for the ids <use> refers to
+**   reader:feed(s) -> elements    the next bytes of the document; with
+**                                 stream, the elements they completed (a
+**                                 list, or nil when none)
 **   reader:finish(name) -> {elements =, warnings =, skipped =, kept =,
-**                           width =, height =, viewbox =}
+**                           width =, height =, viewbox =}  (with stream,
+**                           elements are the ones completed at the end)
+**   svgdoc.isatty() -> boolean     is stderr a terminal (progress lines)
 ** A located error is raised as {line =, col =, msg =}; arclen.svg names
 ** the document in it.  Each element is {id, tag, layer, line, col,
 ** stroked, use, d, ctm = {a, b, c, d, e, f}, subpaths} (subpaths as
@@ -15,6 +21,17 @@
 */
 #include "lua/binding.h"
 #include "svgdoc/svgdoc.h"
+
+#include <stdio.h>
+#if defined(_WIN32)
+#include <io.h>
+#define stderr_is_tty() (_isatty(_fileno(stderr)) != 0)
+#elif defined(__unix__) || defined(__APPLE__)
+#include <unistd.h>
+#define stderr_is_tty() (isatty(fileno(stderr)) != 0)
+#else
+#define stderr_is_tty() 0                /* unknown: no progress lines */
+#endif
 
 #define READER "arclen.svgdoc.reader"
 
@@ -69,6 +86,7 @@ static int l_new(lua_State *L) {
   o.hidden = opt_boolean(L, "hidden");
   o.stroked = opt_boolean(L, "stroked");
   o.uses = opt_boolean(L, "uses");
+  o.stream = opt_boolean(L, "stream");
   D = (svgdoc **)lua_newuserdata(L, sizeof *D);
   *D = NULL;
   luaL_getmetatable(L, READER);
@@ -94,13 +112,42 @@ static int raise(lua_State *L, svgdoc **D) {
   return lua_error(L);
 }
 
+static void push_element(lua_State *L, const svgdoc_element *e);
+
+/* The elements the last call completed, as a list (nothing when none). */
+static int push_batch(lua_State *L, svgdoc *D) {
+  size_t i, n = svgdoc_count(D);
+  if (n == 0) return 0;
+  lua_createtable(L, n > 0x7fffffff ? 0x7fffffff : (int)n, 0);
+  for (i = 0; i < n; i++) {
+    push_element(L, svgdoc_get(D, i));
+    lua_rawseti(L, -2, (int)i + 1);
+  }
+  return 1;
+}
+
+/* reader:scan(s) */
+static int l_scan(lua_State *L) {
+  svgdoc **D = check_reader(L);
+  size_t n;
+  const char *s = luaL_checklstring(L, 2, &n);
+  svgdoc_scan(*D, s, n);
+  return 0;
+}
+
 /* reader:feed(s) */
 static int l_feed(lua_State *L) {
   svgdoc **D = check_reader(L);
   size_t n;
   const char *s = luaL_checklstring(L, 2, &n);
   if (svgdoc_feed(*D, s, n) != 0) return raise(L, D);
-  return 0;
+  return svgdoc_streaming(*D) ? push_batch(L, *D) : 0;
+}
+
+/* svgdoc.isatty() */
+static int l_isatty(lua_State *L) {
+  lua_pushboolean(L, stderr_is_tty());
+  return 1;
 }
 
 static void set_string(lua_State *L, const char *k, const char *v) {
@@ -167,6 +214,8 @@ static int l_finish(lua_State *L) {
   lua_setfield(L, -2, "skipped");
   lua_pushinteger(L, (lua_Integer)svgdoc_kept(*D));
   lua_setfield(L, -2, "kept");
+  lua_pushinteger(L, (lua_Integer)svgdoc_drawn(*D));
+  lua_setfield(L, -2, "drawn");
   info = svgdoc_root_info(*D);
   if (info->has_width) {
     lua_pushnumber(L, info->width);
@@ -190,9 +239,10 @@ static int l_finish(lua_State *L) {
 }
 
 static const luaL_Reg reader_methods[] = {
-  {"feed", l_feed}, {"finish", l_finish}, {NULL, NULL}};
+  {"scan", l_scan}, {"feed", l_feed}, {"finish", l_finish}, {NULL, NULL}};
 
-static const luaL_Reg funcs[] = {{"new", l_new}, {NULL, NULL}};
+static const luaL_Reg funcs[] = {{"new", l_new}, {"isatty", l_isatty},
+                                 {NULL, NULL}};
 
 #if defined(_WIN32)
 __declspec(dllexport)

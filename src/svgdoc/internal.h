@@ -31,42 +31,64 @@ typedef struct svgdoc_buffer {
   size_t len, room;
 } svgdoc_buffer;
 
-/* The allocation of everything a document keeps (freed with it). */
+/* Memory in blocks, handed out in order: the document's own (what <use>
+** can still reference, warnings: freed with it), and the open elements'
+** (layer names, shape data, messages: given back when the element that
+** made them ends, so that what a stream keeps does not grow with it). */
 typedef struct svgdoc_block svgdoc_block;
+typedef struct svgdoc_arena {
+  svgdoc_block *blocks;                  /* the newest first */
+  char *at;
+  size_t left;
+} svgdoc_arena;
+typedef svgdoc_arena svgdoc_mark;        /* a point to give back to */
 
-typedef struct svgdoc_out svgdoc_out;    /* drawn elements and uses */
+typedef struct svgdoc_held svgdoc_held;  /* elements behind a forward use */
 typedef struct svgdoc_event svgdoc_event;
+
+/* ids -> the index of a kept event (or a set of ids: values unused). */
+typedef struct svgdoc_idtable {
+  const char **keys;
+  size_t *vals, room, n;
+} svgdoc_idtable;
 
 struct svgdoc {
   svgdoc_options o;
   void *parser;                          /* XML_Parser */
   jmp_buf *on_error;                     /* where svgdoc_fail jumps */
-  int failed, finished, expanding;
+  int failed, finished, scanned;
   unsigned long err_line, err_col;
   char *err_msg;
-  svgdoc_block *blocks;                  /* the pool */
-  char *pool_at;
-  size_t pool_left;
+  svgdoc_arena keep, tmp;                /* the pools (memory.c) */
+  svgdoc_arena *arena;                   /* where svgdoc_alloc takes from */
+  svgdoc_block *spare;                   /* a tmp block given back */
   /* the streaming pass */
   struct svgdoc_frame *stack;            /* max_depth + 1 frames */
   struct svgdoc_frame *xstacks[SVGDOC_MAX_USE_DEPTH + 1];  /* for <use> */
   size_t depth;                          /* open elements */
-  int root_seen, record;
+  int root_seen, record, draining;
   size_t rec;                            /* depth inside kept subtrees */
   size_t *open_ev;                       /* the kept event of each */
   size_t bytes, nentities, ngroups, replayed;
   /* kept subtrees, for <use> */
   svgdoc_event *events;
   size_t nevents, events_room;
-  const char **ids;                      /* hash of ids -> first event */
-  size_t *id_event, ids_room, nids;
-  /* results */
-  svgdoc_out *out;                       /* in document order, uses too */
-  size_t nout, out_room;
-  svgdoc_element **drawn;                /* uses expanded */
-  size_t ndrawn, drawn_room;
-  svgdoc_element **all;                  /* every element made (to free) */
-  size_t nall, all_room;
+  svgdoc_idtable ids;                    /* id -> first event with it */
+  /* the ids <use> refers to, from svgdoc_scan (refs_given: only those
+  ** subtrees are kept) */
+  svgdoc_idtable refs;
+  int refs_given;
+  void *scanner;                         /* XML_Parser of svgdoc_scan */
+  /* elements and uses waiting behind a <use> whose target is not read
+  ** yet (a queue from held_head), and the id it waits for */
+  svgdoc_held *held_q;
+  size_t held_head, held_tail, held_room, held_elements;
+  const char *waiting;
+  size_t waiting_len;
+  struct svgdoc_use *expanding_use;      /* taken from the queue (freed) */
+  /* results: the elements of this feed (stream) or all (collect) */
+  svgdoc_element **batch;
+  size_t nbatch, batch_room, ndrawn;
   svgdoc_warning *warnings;
   size_t nwarnings;
   size_t skipped[SVGDOC_NSKIPPED];
@@ -95,8 +117,12 @@ void svgdoc_set_error(svgdoc *D, unsigned long line, unsigned long col,
                       char *msg);
 void svgdoc_free_pool(svgdoc *D);
 
-/* Memory that lives as long as the document; never NULL (fails). */
+/* Memory from D->arena (the open element's unless switched to D->keep);
+** never NULL (fails). */
 void *svgdoc_alloc(svgdoc *D, size_t n);
+/* The tmp pool's point now, and everything taken from it since given back. */
+void svgdoc_mark_get(const svgdoc *D, svgdoc_mark *m);
+void svgdoc_release(svgdoc *D, const svgdoc_mark *m);
 char *svgdoc_strdup(svgdoc *D, const char *s, size_t n);
 /* A string formatted with malloc (NULL without memory), for the messages
 ** that outlive a failed document. */

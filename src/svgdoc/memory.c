@@ -1,8 +1,11 @@
 /*
-** memory.c -- what a document keeps lives in its pool (blocks freed with
-** it), and a located error is a message, a place and a jump back to the
-** expat callback that started the work (svgdoc_fail; never across
-** expat's own frames).
+** memory.c -- what a document keeps lives in its pools: D->keep (what
+** <use> can still reference, freed with the document) and D->tmp, a stack
+** given back as the elements that took from it end (svgdoc_mark_get,
+** svgdoc_release), so that a stream's memory does not grow with it.  A
+** located error is a message, a place and a jump back to the expat
+** callback that started the work (svgdoc_fail; never across expat's own
+** frames).
 */
 #include <stdarg.h>
 #include <stdio.h>
@@ -15,24 +18,45 @@
 
 struct svgdoc_block {
   svgdoc_block *next;
+  size_t size;
 };
 
 void *svgdoc_alloc(svgdoc *D, size_t n) {
+  svgdoc_arena *A = D->arena;
   void *p;
   n = (n + 15) & ~(size_t)15;
-  if (n > D->pool_left) {
+  if (n > A->left) {
     size_t size = n > POOL_BLOCK / 2 ? n : POOL_BLOCK;
-    svgdoc_block *b = malloc(sizeof(svgdoc_block) + 16 + size);
-    if (b == NULL) svgdoc_nomem(D);
-    b->next = D->blocks;
-    D->blocks = b;
-    D->pool_at = (char *)(b + 1) + 16 - ((size_t)(b + 1) & 15);
-    D->pool_left = size;
+    svgdoc_block *b;
+    if (size == POOL_BLOCK && D->spare) {      /* a tmp block given back */
+      b = D->spare;
+      D->spare = NULL;
+    } else {
+      b = malloc(sizeof(svgdoc_block) + 16 + size);
+      if (b == NULL) svgdoc_nomem(D);
+      b->size = size;
+    }
+    b->next = A->blocks;
+    A->blocks = b;
+    A->at = (char *)(b + 1) + 16 - ((size_t)(b + 1) & 15);
+    A->left = size;
   }
-  p = D->pool_at;
-  D->pool_at += n;
-  D->pool_left -= n;
+  p = A->at;
+  A->at += n;
+  A->left -= n;
   return p;
+}
+
+void svgdoc_mark_get(const svgdoc *D, svgdoc_mark *m) { *m = D->tmp; }
+
+void svgdoc_release(svgdoc *D, const svgdoc_mark *m) {
+  while (D->tmp.blocks != m->blocks && D->tmp.blocks) {  /* the newer blocks */
+    svgdoc_block *b = D->tmp.blocks;
+    D->tmp.blocks = b->next;
+    if (D->spare == NULL && b->size == POOL_BLOCK) D->spare = b;
+    else free(b);
+  }
+  D->tmp = *m;
 }
 
 char *svgdoc_strdup(svgdoc *D, const char *s, size_t n) {
@@ -117,10 +141,17 @@ void svgdoc_append(svgdoc *D, svgdoc_buffer *b, const char *s, size_t n) {
   b->s[b->len] = '\0';
 }
 
-void svgdoc_free_pool(svgdoc *D) {
-  while (D->blocks) {
-    svgdoc_block *b = D->blocks;
-    D->blocks = b->next;
+static void free_blocks(svgdoc_block *b) {
+  while (b) {
+    svgdoc_block *next = b->next;
     free(b);
+    b = next;
   }
+}
+
+void svgdoc_free_pool(svgdoc *D) {
+  free_blocks(D->keep.blocks);
+  free_blocks(D->tmp.blocks);
+  free(D->spare);
+  D->keep.blocks = D->tmp.blocks = D->spare = NULL;
 }

@@ -1,11 +1,15 @@
 /*
 ** reader.c -- the walk over expat's events: a frame per open element
 ** (its CTM, viewport, visibility, stroke, layer), the root's coordinate
-** system, the drawn shapes read into cubics as they come, and <use>.
-** <use> may point forwards: when the document may contain a <use>, the
-** subtrees of elements with an id are kept as their start/end events and
-** the uses are expanded once the whole document has been read; a
-** document without <use> keeps nothing but its results.
+** system, the drawn shapes read into cubics and handed over as they
+** come, and <use>.  When the document may contain a <use>, the subtrees
+** of the elements with an id it refers to (all ids without a scan) are
+** kept as their start/end events.  A <use> whose target is complete (and
+** so, recursively, the targets of the uses inside it) is expanded at
+** once; one that points forwards holds every element drawn after it in a
+** queue, in document order, until its target ends (or the document:
+** then a missing id is an error); the queue is capped.  A document
+** without <use> keeps nothing but the open elements' frames.
 */
 #include <expat.h>
 #include <float.h>
@@ -47,6 +51,7 @@ static int find_tag(const char *const *list, int n, const char *tag) {
 #define lookup(list, tag) find_tag(list, (int)(sizeof list / sizeof *list), tag)
 
 typedef struct svgdoc_frame {
+  svgdoc_mark mark;              /* the tmp pool when it opened */
   size_t depth;
   int skip, top, is_switch, switch_done, visible, stroked;
   svgdoc_matrix ctm;
@@ -74,8 +79,8 @@ typedef struct svgdoc_shadow {
   size_t nchain;
 } svgdoc_shadow;
 
-struct svgdoc_out {
-  svgdoc_element *e;             /* or a use */
+struct svgdoc_held {
+  svgdoc_element *e;             /* or a use (malloc'd, its strings with it) */
   svgdoc_use *u;
 };
 
@@ -83,8 +88,9 @@ struct svgdoc_event {
   const char *tag;               /* NULL: an end event */
   const char **atts;
   unsigned long line, col;
-  size_t close;                  /* the index of its end event */
+  size_t close;                  /* the index of its end event (0: open) */
   int svgns;
+  int ready;                     /* closed, and so are all its uses' targets */
 };
 
 /* Room for one more item in the growing array *a of *room items. */
@@ -100,68 +106,88 @@ static void *grow(svgdoc *D, void *a, size_t *room, size_t used,
   return a;
 }
 
+/* A warning, its message copied into the document's own pool (msg may
+** be in the open element's). */
 static void warn(svgdoc *D, unsigned long line, unsigned long col,
                  const char *msg) {
   svgdoc_warning *w;
+  svgdoc_arena *was = D->arena;
   if (D->nwarnings >= SVGDOC_MAX_WARNINGS) return;
   if (D->warnings == NULL) {
     D->warnings = malloc(SVGDOC_MAX_WARNINGS * sizeof *D->warnings);
     if (D->warnings == NULL) svgdoc_nomem(D);
   }
+  D->arena = &D->keep;
+  msg = svgdoc_strdup(D, msg, strlen(msg));
+  D->arena = was;
   w = &D->warnings[D->nwarnings++];
   w->line = line, w->col = col, w->msg = msg;
 }
 
-/* ---- ids of kept elements ------------------------------------------------ */
+/* ---- ids of kept elements, ids referred to ------------------------------ */
 
-static size_t hash(const char *s) {
-  size_t h = 5381;
-  for (; *s; s++) h = h * 33 + (unsigned char)*s;
+static size_t hash(const char *s, size_t n) {
+  size_t h = 5381, k;
+  for (k = 0; k < n; k++) h = h * 33 + (unsigned char)s[k];
   return h;
 }
 
-/* The slot of id in the table (empty when absent). */
-static size_t id_slot(const svgdoc *D, const char *id) {
-  size_t i = hash(id) & (D->ids_room - 1);
-  while (D->ids[i] && strcmp(D->ids[i], id) != 0) i = (i + 1) & (D->ids_room - 1);
+/* The slot of s[0 .. n-1] in t (empty when absent; t->room > 0). */
+static size_t id_slot(const svgdoc_idtable *t, const char *s, size_t n) {
+  size_t i = hash(s, n) & (t->room - 1);
+  while (t->keys[i] && !(strncmp(t->keys[i], s, n) == 0 && t->keys[i][n] == '\0'))
+    i = (i + 1) & (t->room - 1);        /* ends: at most half the slots are full */
   return i;
 }
 
-static int find_id(const svgdoc *D, const char *id, size_t *ev) {
+static int find_id(const svgdoc_idtable *t, const char *s, size_t n,
+                   size_t *val) {
   size_t i;
-  if (D->ids_room == 0) return 0;
-  i = id_slot(D, id);
-  if (D->ids[i] == NULL) return 0;
-  *ev = D->id_event[i];
+  if (t->room == 0) return 0;
+  i = id_slot(t, s, n);
+  if (t->keys[i] == NULL) return 0;
+  if (val) *val = t->vals[i];
   return 1;
 }
 
-/* The first element with an id keeps it (duplicates are ignored). */
-static void add_id(svgdoc *D, const char *id, size_t ev) {
-  size_t i;
-  if (2 * (D->nids + 1) > D->ids_room) {
-    size_t room = D->ids_room ? 2 * D->ids_room : 64, k;
-    const char **ids = calloc(room, sizeof *ids);
-    size_t *evs = malloc(room * sizeof *evs);
-    const char **old = D->ids;
-    size_t *old_ev = D->id_event, old_room = D->ids_room;
-    if (ids == NULL || evs == NULL) {
-      free(ids), free(evs);
+/* key (a string that lives as long as t) -> val; the first one stays. */
+static void add_id(svgdoc *D, svgdoc_idtable *t, const char *key, size_t val) {
+  size_t i, n = strlen(key);
+  if (2 * (t->n + 1) > t->room) {
+    size_t room = t->room ? 2 * t->room : 64, k;
+    const char **keys = calloc(room, sizeof *keys);
+    size_t *vals = malloc(room * sizeof *vals);
+    svgdoc_idtable old = *t;
+    if (keys == NULL || vals == NULL) {
+      free(keys), free(vals);
       svgdoc_nomem(D);
     }
-    D->ids = ids, D->id_event = evs, D->ids_room = room;
-    for (k = 0; k < old_room; k++) {
-      if (old[k]) {
-        size_t j = id_slot(D, old[k]);
-        D->ids[j] = old[k], D->id_event[j] = old_ev[k];
+    t->keys = keys, t->vals = vals, t->room = room;
+    for (k = 0; k < old.room; k++) {
+      if (old.keys[k]) {
+        size_t j = id_slot(t, old.keys[k], strlen(old.keys[k]));
+        t->keys[j] = old.keys[k], t->vals[j] = old.vals[k];
       }
     }
-    free(old), free(old_ev);
+    free(old.keys), free(old.vals);
   }
-  i = id_slot(D, id);
-  if (D->ids[i]) return;
-  D->ids[i] = id, D->id_event[i] = ev;
-  D->nids++;
+  i = id_slot(t, key, n);
+  if (t->keys[i]) return;
+  t->keys[i] = key, t->vals[i] = val;
+  t->n++;
+}
+
+/* The id of a same-document reference "#id" (spaces around trimmed) into
+** *id, *n; 0 for any other. */
+static int ref_id(const char *href, const char **id, size_t *n) {
+  const char *s = href, *e;
+  if (s == NULL) return 0;
+  while (svgdoc_space((unsigned char)*s)) s++;
+  if (*s != '#') return 0;
+  e = s + strlen(s);
+  while (e > s + 1 && svgdoc_space((unsigned char)e[-1])) e--;
+  *id = s + 1, *n = (size_t)(e - s - 1);
+  return 1;
 }
 
 /* ---- the elements ----------------------------------------------------- */
@@ -170,20 +196,70 @@ static const char *copy(svgdoc *D, const char *s) {
   return s ? svgdoc_strdup(D, s, strlen(s)) : NULL;
 }
 
-/* An element drawn (or a use to expand later) in document order; while
-** the uses are expanded, straight into the drawn list. */
-static void emit(svgdoc *D, svgdoc_element *e, svgdoc_use *u) {
-  if ((D->expanding ? D->ndrawn : D->nout) >= SVGDOC_MAX_ELEMENTS)
-    svgdoc_fail(D, e ? e->line : u->line, e ? e->col : u->col,
-                "more than %d drawn elements", SVGDOC_MAX_ELEMENTS);
-  if (D->expanding) {
-    D->drawn = grow(D, D->drawn, &D->drawn_room, D->ndrawn, sizeof *D->drawn);
-    D->drawn[D->ndrawn++] = e;
-  } else {
-    D->out = grow(D, D->out, &D->out_room, D->nout, sizeof *D->out);
-    D->out[D->nout].e = e, D->out[D->nout].u = u;
-    D->nout++;
+static void free_element(svgdoc_element *e) {
+  if (e == NULL) return;
+  arclen_pathdata_free(&e->pd);
+  free(e);
+}
+
+/* Is a use waiting in the queue for its target, so that what is drawn
+** now must wait behind it?  (Not while the queue's front is expanded.) */
+static int holding(const svgdoc *D) {
+  return D->held_tail > D->held_head && !D->draining;
+}
+
+/* Room for one more in the queue (its live part moved to the front when
+** the room is used up). */
+static void held_room(svgdoc *D) {
+  if (D->held_tail == D->held_room && D->held_head > 0) {
+    memmove(D->held_q, D->held_q + D->held_head,
+            (D->held_tail - D->held_head) * sizeof *D->held_q);
+    D->held_tail -= D->held_head;
+    D->held_head = 0;
   }
+  D->held_q = grow(D, D->held_q, &D->held_room, D->held_tail, sizeof *D->held_q);
+}
+
+/* Room for one more drawn element where it goes: the results, or the
+** queue behind a forward use (capped: they are what the document makes
+** the reader keep). */
+static void reserve_out(svgdoc *D, unsigned long line, unsigned long col) {
+  if (!D->o.stream && D->ndrawn + D->held_elements >= SVGDOC_MAX_ELEMENTS)
+    svgdoc_fail(D, line, col, "more than %d drawn elements",
+                SVGDOC_MAX_ELEMENTS);
+  if (holding(D)) {
+    const svgdoc_use *u = D->held_q[D->held_head].u;
+    if (D->held_elements >= SVGDOC_MAX_HELD)
+      svgdoc_fail(D, u->line, u->col, "<use> of '#%s' waits for an element "
+                  "not read yet, with more than %d drawn elements behind it",
+                  u->href, SVGDOC_MAX_HELD);
+    held_room(D);
+    return;
+  }
+  D->batch = grow(D, D->batch, &D->batch_room, D->nbatch, sizeof *D->batch);
+}
+
+/* Hand e over (room reserved): to the results, or into the queue. */
+static void emit(svgdoc *D, svgdoc_element *e) {
+  if (holding(D)) {
+    D->held_q[D->held_tail].e = e, D->held_q[D->held_tail].u = NULL;
+    D->held_tail++;
+    D->held_elements++;
+  } else {
+    D->batch[D->nbatch++] = e;
+    D->ndrawn++;
+  }
+}
+
+/* A string into an element's own block at *at (NULL stays NULL). */
+static const char *own(char **at, const char *s) {
+  char *p;
+  size_t n;
+  if (s == NULL) return NULL;
+  n = strlen(s) + 1;
+  p = memcpy(*at, s, n);
+  *at += n;
+  return p;
 }
 
 /* The path data message of pd's error, as arclen.path.svg words it. */
@@ -252,54 +328,70 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
                  unsigned long col, const svgdoc_shadow *sh) {
   const double *C = f->ctm;
   const char *id = svgdoc_attr(atts, "id");
+  const char *use = sh ? sh->u->href : NULL;
   int identity = C[0] == 1 && C[1] == 0 && C[2] == 0 && C[3] == 1 &&
                  C[4] == 0 && C[5] == 0;
-  svgdoc_element *e = svgdoc_alloc(D, sizeof *e);
-  arclen_pathdata_init(&e->pd);
-  /* kept before the parse, so that svgdoc_free frees its cubics */
-  D->all = grow(D, D->all, &D->all_room, D->nall, sizeof *D->all);
-  D->all[D->nall++] = e;
-  if (arclen_pathdata_parse(&e->pd, d, strlen(d), D->o.arc_tol,
+  arclen_pathdata pd;
+  svgdoc_element *e;
+  char *at;
+  size_t size;
+  reserve_out(D, line, col);
+  arclen_pathdata_init(&pd);
+  if (arclen_pathdata_parse(&pd, d, strlen(d), D->o.arc_tol,
                             identity ? NULL : C) != ARCLEN_PD_OK) {
-    const char *m = shape_size_message(D, &e->pd, tag, atts);
+    const char *m = shape_size_message(D, &pd, tag, atts);
     if (m == NULL) {
-      m = pathdata_message(D, &e->pd, d);
+      m = pathdata_message(D, &pd, d);
       if (strcmp(tag, "path") == 0) m = svgdoc_format(D, "d: %s", m);
     }
+    arclen_pathdata_free(&pd);
     svgdoc_fail(D, line, col, "<%s%s%s%s>: %s", tag, id ? " id='" : "",
                 id ? id : "", id ? "'" : "", m);
   }
   {
     /* a control point beyond the doubles (a line from -1e308 to 1e308
     ** has its thirds there): the length cannot be a double either */
-    size_t k, n = 8 * e->pd.ncubics;
+    size_t k, n = 8 * pd.ncubics;
     double top = 0;
     int finite = 1;
     for (k = 0; k < n; k++) {
-      double v = fabs(e->pd.cubics[k]);
+      double v = fabs(pd.cubics[k]);
       if (!(v <= DBL_MAX)) finite = 0;
       else if (v > top) top = v;
     }
     if (!finite) {
       char num[32];
       short_num(num, top);
+      arclen_pathdata_free(&pd);
       svgdoc_fail(D, line, col, "<%s%s%s%s>: the path's length overflows "
                   "(coordinates up to %s)", tag, id ? " id='" : "",
                   id ? id : "", id ? "'" : "", num);
     }
   }
-  e->id = copy(D, id);
-  e->tag = tag;
-  e->layer = f->layer;
-  e->use = sh ? sh->u->href : NULL;
-  e->d = strcmp(tag, "path") == 0 ? copy(D, d) : d;   /* shapes' are pooled */
+  /* the element and its strings in one block, its own: it outlives the
+  ** open elements' pool (a stream hands it over, the queue holds it) */
+  size = sizeof *e + strlen(d) + 1 + (id ? strlen(id) + 1 : 0) +
+         (f->layer ? strlen(f->layer) + 1 : 0) + (use ? strlen(use) + 1 : 0);
+  e = malloc(size);
+  if (e == NULL) {
+    arclen_pathdata_free(&pd);
+    svgdoc_nomem(D);
+  }
+  at = (char *)(e + 1);
+  e->pd = pd;
+  e->id = own(&at, id);
+  e->tag = tag;                        /* one of SHAPES */
+  e->layer = own(&at, f->layer);
+  e->use = own(&at, use);
+  e->d = own(&at, d);
   e->line = line, e->col = col;
   e->stroked = f->stroked;
   memcpy(e->ctm, C, sizeof e->ctm);
-  emit(D, e, NULL);
+  emit(D, e);
 }
 
 static void expand(svgdoc *D, const svgdoc_use *u);
+static void use_at_top(svgdoc *D, svgdoc_use *u);
 
 /* Lua's tonumber(s) == 0 for the number-like prefix of a stroke-width
 ** (a width of zero draws no stroke), read in any locale. */
@@ -474,7 +566,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
       u->chain = sh ? sh->chain : NULL;
       u->nchain = sh ? sh->nchain : 0;
       if (sh) expand(D, u);
-      else emit(D, NULL, u);
+      else use_at_top(D, u);
     }
     f->skip = 1;                     /* use's children are not rendered */
   }
@@ -487,7 +579,7 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
   svgdoc_frame *stack;
   svgdoc_shadow root_sh, sh;
   const char **chain;
-  if (!find_id(D, u->href, &start))
+  if (!find_id(&D->ids, u->href, strlen(u->href), &start))
     svgdoc_fail(D, u->line, u->col, "<use> of '#%s': no element has that id",
                 u->href);
   for (k = 0; k < u->nchain; k++) {
@@ -510,10 +602,13 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
   if (u->nchain >= SVGDOC_MAX_USE_DEPTH)
     svgdoc_fail(D, u->line, u->col, "<use> nested deeper than %d",
                 SVGDOC_MAX_USE_DEPTH);
+  last = D->events[start].close;
+  if (last == 0)                   /* still open: the use is inside it */
+    svgdoc_fail(D, u->line, u->col, "<use> of '#%s' refers to itself (or "
+                "to an element that contains it)", u->href);
   chain = svgdoc_alloc(D, (u->nchain + 1) * sizeof *chain);
   if (u->nchain) memcpy(chain, u->chain, u->nchain * sizeof *chain);
   chain[u->nchain] = u->href;
-  last = D->events[start].close;
   D->replayed += last - start + 1;
   if (D->replayed > SVGDOC_MAX_REPLAYED)
     svgdoc_fail(D, u->line, u->col, "<use> expansions replay more than %d "
@@ -545,6 +640,115 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
       top--;
     }
   }
+}
+
+/* ---- uses at the top level: at once, or behind the queue ---------------- */
+
+/* Can the use of id[0 .. n-1] be expanded now: is its target complete,
+** and so (recursively) the targets of the uses inside it?  A target
+** proven so stays so (ev->ready).  When not, *waiting is the id to wait
+** for.  A cycle or a chain deeper than the cap counts as ready: the
+** expansion reports it.  budget bounds the work of one question. */
+static int ready(svgdoc *D, const char *id, size_t n, size_t depth,
+                 size_t *budget, const char **waiting, size_t *wlen) {
+  size_t start, i;
+  svgdoc_event *ev;
+  if (!find_id(&D->ids, id, n, &start) || D->events[start].close == 0) {
+    *waiting = id, *wlen = n;
+    return 0;
+  }
+  ev = &D->events[start];
+  if (ev->ready || depth >= SVGDOC_MAX_USE_DEPTH) return 1;
+  ev->ready = 2;                         /* on the way: a cycle */
+  for (i = start + 1; i < ev->close; i++) {
+    const svgdoc_event *x = &D->events[i];
+    const char *rid, *href;
+    size_t rn, at;
+    if (x->tag == NULL || !x->svgns || strcmp(x->tag, "use") != 0) continue;
+    if (*budget == 0) {                  /* too much to tell: wait for the end */
+      ev->ready = 0;
+      *waiting = "", *wlen = 0;
+      return 0;
+    }
+    --*budget;
+    href = svgdoc_attr(x->atts, "href");
+    if (href == NULL) href = svgdoc_attr(x->atts, XLINK_HREF);
+    if (!ref_id(href, &rid, &rn)) continue;
+    if (find_id(&D->ids, rid, rn, &at) && D->events[at].ready) continue;
+    if (!ready(D, rid, rn, depth + 1, budget, waiting, wlen)) {
+      ev->ready = 0;
+      return 0;
+    }
+  }
+  ev->ready = 1;
+  return 1;
+}
+
+/* Expand u with the open element's pool given back after. */
+static void expand_top(svgdoc *D, const svgdoc_use *u) {
+  svgdoc_mark m;
+  svgdoc_mark_get(D, &m);
+  expand(D, u);
+  svgdoc_release(D, &m);
+}
+
+/* Hand over what the queue holds, in order, up to a use that must still
+** wait (all of it when force: the document has ended). */
+static void drain(svgdoc *D, int force) {
+  while (D->held_head < D->held_tail) {
+    svgdoc_held *h = &D->held_q[D->held_head];
+    if (h->e) {
+      D->batch = grow(D, D->batch, &D->batch_room, D->nbatch, sizeof *D->batch);
+      D->batch[D->nbatch++] = h->e;
+      D->ndrawn++;
+      D->held_elements--;
+    } else {
+      size_t budget = SVGDOC_MAX_REPLAYED;
+      if (!force && !ready(D, h->u->href, strlen(h->u->href), 0, &budget,
+                           &D->waiting, &D->waiting_len))
+        return;
+      D->expanding_use = h->u;           /* freed even if it fails */
+      D->held_head++;
+      D->draining = 1;
+      expand_top(D, D->expanding_use);
+      D->draining = 0;
+      free(D->expanding_use);
+      D->expanding_use = NULL;
+      continue;
+    }
+    D->held_head++;
+  }
+  D->held_head = D->held_tail = 0;
+  D->waiting = NULL;
+}
+
+/* A <use> met in the document's own order: expanded now when nothing
+** waits and its target is complete; else it waits in the queue (a copy
+** with its strings: u lives in the open element's pool). */
+static void use_at_top(svgdoc *D, svgdoc_use *u) {
+  svgdoc_use *c;
+  char *at;
+  size_t budget = SVGDOC_MAX_REPLAYED;
+  if (!holding(D) && D->record &&
+      ready(D, u->href, strlen(u->href), 0, &budget, &D->waiting,
+            &D->waiting_len)) {
+    expand_top(D, u);
+    return;
+  }
+  held_room(D);
+  c = malloc(sizeof *c + strlen(u->href) + 1 + (u->id ? strlen(u->id) + 1 : 0) +
+             (u->layer ? strlen(u->layer) + 1 : 0));
+  if (c == NULL) svgdoc_nomem(D);
+  *c = *u;
+  at = (char *)(c + 1);
+  c->href = own(&at, u->href);
+  c->id = own(&at, u->id);
+  c->layer = own(&at, u->layer);
+  c->chain = NULL, c->nchain = 0;        /* at the top level */
+  if (D->waiting == u->href) D->waiting = c->href;   /* u's pool goes */
+  if (!holding(D)) D->held_head = D->held_tail = 0;
+  D->held_q[D->held_tail].e = NULL, D->held_q[D->held_tail].u = c;
+  D->held_tail++;
 }
 
 /* ---- the root ------------------------------------------------------------ */
@@ -637,31 +841,46 @@ static void keep(svgdoc *D, int svgns, const char *tag, const char **atts,
   svgdoc_event *x;
   const char **a;
   while (atts[n]) n += 2;
+  D->events = grow(D, D->events, &D->events_room, D->nevents, sizeof *D->events);
+  D->arena = &D->keep;                   /* kept as long as the document */
   a = svgdoc_alloc(D, (n + 1) * sizeof *a);
   for (k = 0; k < n; k++) a[k] = copy(D, atts[k]);
   a[n] = NULL;
-  D->events = grow(D, D->events, &D->events_room, D->nevents, sizeof *D->events);
   x = &D->events[D->nevents];
   x->tag = copy(D, tag), x->atts = a, x->line = line, x->col = col;
-  x->close = 0, x->svgns = svgns;
+  D->arena = &D->tmp;
+  x->close = 0, x->svgns = svgns, x->ready = 0;
   D->open_ev[D->rec++] = D->nevents;
-  if (id) add_id(D, svgdoc_attr(a, "id"), D->nevents);
+  if (id) add_id(D, &D->ids, svgdoc_attr(a, "id"), D->nevents);
   D->nevents++;
+}
+
+/* Is the subtree of the element with this id (NULL: none) kept for
+** <use>: inside a kept one, or an id that a use may refer to? */
+static int kept(const svgdoc *D, const char *id) {
+  if (!D->record) return 0;
+  if (D->rec > 0) return 1;
+  return id && (!D->refs_given || find_id(&D->refs, id, strlen(id), NULL));
 }
 
 static void start_element(svgdoc *D, const char *qname, const char **atts) {
   svgdoc_frame *parent = D->depth ? &D->stack[D->depth - 1] : NULL;
   const char *tag = strchr(qname, '\1'), *id;
   unsigned long line, col;
-  int svgns;
+  int svgns, keep_it;
+  svgdoc_mark m;
   if (D->depth >= (size_t)D->o.max_depth) {
     position(D, &line, &col);
     svgdoc_fail(D, line, col, "elements nested deeper than %d", D->o.max_depth);
   }
+  /* what this element takes from the pool is given back at its end */
+  svgdoc_mark_get(D, &m);
+  D->stack[D->depth].mark = m;
   id = svgdoc_attr(atts, "id");
+  keep_it = kept(D, id);
   /* inside a subtree that draws nothing and is not kept for <use>, only
   ** the depth counts */
-  if (parent && parent->skip && !(D->record && (D->rec > 0 || id))) {
+  if (parent && parent->skip && !keep_it) {
     D->stack[D->depth].skip = 1;
     D->stack[D->depth].depth = parent->depth + 1;
     D->depth++;
@@ -681,10 +900,11 @@ static void start_element(svgdoc *D, const char *qname, const char **atts) {
                   tag);
     }
     open_root(D, atts, line, col, &D->stack[0]);
+    D->stack[0].mark = m;
     D->depth = 1;
     return;
   }
-  if (D->record && (D->rec > 0 || id)) {
+  if (keep_it) {
     keep(D, svgns, tag, atts, line, col, id);
     atts = D->events[D->nevents - 1].atts;
     tag = D->events[D->nevents - 1].tag;
@@ -696,13 +916,23 @@ static void start_element(svgdoc *D, const char *qname, const char **atts) {
 
 static void end_element(svgdoc *D) {
   if (D->rec > 0) {
+    const svgdoc_event *x;
+    const char *id;
     D->events = grow(D, D->events, &D->events_room, D->nevents, sizeof *D->events);
     D->events[D->nevents].tag = NULL;
+    D->events[D->nevents].ready = 0;
+    x = &D->events[D->open_ev[D->rec - 1]];
     D->events[D->open_ev[D->rec - 1]].close = D->nevents;
     D->nevents++;
     D->rec--;
+    id = svgdoc_attr(x->atts, "id");
+    /* the element the queue's front waits for is complete: try again */
+    if (id && D->held_tail > D->held_head && D->waiting && D->waiting_len > 0 &&
+        strncmp(id, D->waiting, D->waiting_len) == 0 && id[D->waiting_len] == '\0')
+      drain(D, 0);
   }
   D->depth--;
+  svgdoc_release(D, &D->stack[D->depth].mark);
 }
 
 static void entity_decl(svgdoc *D, const char *name, const char *value,
@@ -766,6 +996,7 @@ svgdoc *svgdoc_new(const svgdoc_options *o) {
   if (D == NULL) return NULL;
   D->o = *o;
   D->record = o->uses;
+  D->arena = &D->tmp;
   D->stack = malloc(((size_t)o->max_depth + 2) * sizeof *D->stack);
   D->open_ev = malloc(((size_t)o->max_depth + 2) * sizeof *D->open_ev);
   D->parser = XML_ParserCreateNS(NULL, '\1');
@@ -783,15 +1014,100 @@ void svgdoc_free(svgdoc *D) {
   size_t k;
   if (D == NULL) return;
   if (D->parser) XML_ParserFree((XML_Parser)D->parser);
-  for (k = 0; k < D->nall; k++) arclen_pathdata_free(&D->all[k]->pd);
+  if (D->scanner) XML_ParserFree((XML_Parser)D->scanner);
+  for (k = 0; k < D->nbatch; k++) free_element(D->batch[k]);
+  for (k = D->held_head; k < D->held_tail; k++) {
+    free_element(D->held_q[k].e);
+    free(D->held_q[k].u);
+  }
+  free(D->expanding_use);
   svgdoc_free_pool(D);
   for (k = 0; k < SVGDOC_NPROPS; k++) free(D->props[k].s);
   for (k = 0; k <= SVGDOC_MAX_USE_DEPTH; k++) free(D->xstacks[k]);
   free(D->scratch.s), free(D->held.s);
   free(D->stack), free(D->open_ev), free(D->events);
-  free(D->ids), free(D->id_event), free(D->out), free(D->drawn);
-  free(D->all), free(D->warnings), free(D->err_msg);
+  free(D->ids.keys), free(D->ids.vals), free(D->refs.keys), free(D->refs.vals);
+  free(D->held_q), free(D->batch), free(D->warnings), free(D->err_msg);
   free(D);
+}
+
+/* ---- the scan for the ids uses refer to ------------------------------- */
+
+static void end_scan(svgdoc *D) {
+  if (D->scanner == NULL) return;
+  XML_ParserFree((XML_Parser)D->scanner);
+  D->scanner = NULL;
+}
+
+static void XMLCALL on_scan_start(void *ud, const XML_Char *qname,
+                                  const XML_Char **atts) {
+  svgdoc *D = ud;
+  const char *tag = strchr(qname, '\1'), *href, *id;
+  size_t n;
+  jmp_buf jb;
+  tag = tag ? tag + 1 : qname;
+  if (strcmp(tag, "use") != 0) return;
+  href = svgdoc_attr(atts, "href");
+  if (href == NULL) href = svgdoc_attr(atts, XLINK_HREF);
+  if (!ref_id(href, &id, &n) || find_id(&D->refs, id, n, NULL)) return;
+  D->on_error = &jb;
+  if (setjmp(jb) == 0) {
+    D->arena = &D->keep;
+    add_id(D, &D->refs, svgdoc_strdup(D, id, n), 0);
+  } else {                               /* out of memory: keep every id */
+    D->failed = 0;
+    free(D->err_msg);
+    D->err_msg = NULL;
+    D->refs_given = 0;
+    XML_StopParser((XML_Parser)D->scanner, XML_FALSE);
+  }
+  D->arena = &D->tmp;
+  D->on_error = NULL;
+}
+
+/* The reader's refusal of nested entities, so that the scan does not
+** expand what the reading proper refuses. */
+static void XMLCALL on_scan_entity(void *ud, const XML_Char *name,
+                                   int is_param, const XML_Char *value,
+                                   int value_length, const XML_Char *base,
+                                   const XML_Char *system,
+                                   const XML_Char *public_id,
+                                   const XML_Char *notation) {
+  svgdoc *D = ud;
+  (void)name, (void)is_param, (void)base, (void)system, (void)public_id;
+  (void)notation;
+  if (value && (memchr(value, '&', (size_t)value_length) ||
+                value_length > SVGDOC_MAX_ENTITY_LEN))
+    XML_StopParser((XML_Parser)D->scanner, XML_FALSE);
+}
+
+void svgdoc_scan(svgdoc *D, const char *s, size_t n) {
+  XML_Parser p;
+  if (D->failed || D->bytes > 0) return;    /* before the reading only */
+  if (!D->refs_given) {
+    if (D->scanned) return;               /* stopped: every id is kept */
+    D->scanned = D->refs_given = 1;
+    D->scanner = XML_ParserCreateNS(NULL, '\1');
+    if (D->scanner == NULL) {
+      D->refs_given = 0;
+      return;
+    }
+    XML_SetUserData((XML_Parser)D->scanner, D);
+    XML_SetStartElementHandler((XML_Parser)D->scanner, on_scan_start);
+    XML_SetEntityDeclHandler((XML_Parser)D->scanner, on_scan_entity);
+  }
+  p = (XML_Parser)D->scanner;
+  if (p == NULL) return;                  /* the scan stopped at an error */
+  while (n > 0) {
+    int len = n > (1u << 30) ? 1 << 30 : (int)n;
+    if (XML_Parse(p, s, len, 0) != XML_STATUS_OK) {
+      /* malformed (the reading says where) or stopped: what was seen is
+      ** what the reading can reach before the same place */
+      end_scan(D);
+      return;
+    }
+    s += len, n -= (size_t)len;
+  }
 }
 
 /* expat's error as the reader's: "malformed XML: ..." at its place. */
@@ -844,10 +1160,20 @@ static int parse(svgdoc *D, const char *s, size_t n) {
   return 0;
 }
 
+/* A stream's elements of the last call are given back. */
+static void next_batch(svgdoc *D) {
+  size_t k;
+  if (!D->o.stream) return;
+  for (k = 0; k < D->nbatch; k++) free_element(D->batch[k]);
+  D->nbatch = 0;
+}
+
 int svgdoc_feed(svgdoc *D, const char *s, size_t n) {
   jmp_buf jb;
   int rc;
   if (D->failed) return -1;
+  next_batch(D);
+  end_scan(D);
   if (D->held.len == 0 && n >= D->held_need)
     return parse(D, s, n);              /* no long token open: at once */
   D->on_error = &jb;                    /* svgdoc_append's out of memory */
@@ -869,8 +1195,9 @@ int svgdoc_feed(svgdoc *D, const char *s, size_t n) {
 
 int svgdoc_finish(svgdoc *D) {
   jmp_buf jb;
-  size_t k;
   if (D->failed) return -1;
+  next_batch(D);
+  end_scan(D);
   if (D->held.len > 0 && parse(D, D->held.s, D->held.len) != 0) return -1;
   D->held.len = 0;
   D->finished = 1;
@@ -882,18 +1209,9 @@ int svgdoc_finish(svgdoc *D) {
     svgdoc_set_error(D, 1, 1, svgdoc_message("empty document (no root element)"));
     return -1;
   }
-  /* expand the uses, in document order */
+  /* what waits behind a forward use: everything is read now */
   D->on_error = &jb;
-  D->expanding = 1;
-  if (setjmp(jb) == 0) {
-    for (k = 0; k < D->nout; k++) {
-      if (D->out[k].u) {
-        expand(D, D->out[k].u);
-      } else {
-        emit(D, D->out[k].e, NULL);
-      }
-    }
-  }
+  if (setjmp(jb) == 0) drain(D, 1);
   D->on_error = NULL;
   return D->failed ? -1 : 0;
 }
@@ -905,11 +1223,15 @@ const char *svgdoc_error(const svgdoc *D, unsigned long *line,
   return D->err_msg ? D->err_msg : "not enough memory";
 }
 
-size_t svgdoc_count(const svgdoc *D) { return D->ndrawn; }
+size_t svgdoc_count(const svgdoc *D) { return D->nbatch; }
 
 const svgdoc_element *svgdoc_get(const svgdoc *D, size_t i) {
-  return D->drawn[i];
+  return D->batch[i];
 }
+
+size_t svgdoc_drawn(const svgdoc *D) { return D->ndrawn; }
+
+int svgdoc_streaming(const svgdoc *D) { return D->o.stream; }
 
 size_t svgdoc_nwarnings(const svgdoc *D) { return D->nwarnings; }
 

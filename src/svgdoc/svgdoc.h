@@ -3,7 +3,10 @@
 ** events walked in C, every basic shape turned into path data (SVG 2
 ** chapter 10), nested transforms and viewports applied, <use> expanded,
 ** each drawn element's path data read into cubics (svg/pathdata.c) in
-** document coordinates.  No Lua dependency; the binding is lua/svgdoc.c.
+** document coordinates, handed over as soon as it is complete (a stream:
+** what is kept is the open elements' frames, the subtrees <use> can
+** still reference, and the elements waiting behind a <use> of an element
+** not read yet).  No Lua dependency; the binding is lua/svgdoc.c.
 ** doc/svg.md lists the semantic choices.
 */
 #ifndef ARCLEN_SVGDOC_H
@@ -16,7 +19,8 @@
 /* Caps: every loop and recursion has one. */
 #define SVGDOC_MAX_DEPTH 1000          /* element nesting */
 #define SVGDOC_MAX_USE_DEPTH 64        /* <use> inside used content */
-#define SVGDOC_MAX_ELEMENTS 1000000    /* drawn elements, uses expanded */
+#define SVGDOC_MAX_ELEMENTS 1000000    /* drawn elements collected (not stream) */
+#define SVGDOC_MAX_HELD 1000000        /* drawn elements behind a forward use */
 #define SVGDOC_MAX_REPLAYED 250000     /* events replayed by <use> */
 #define SVGDOC_MAX_ENTITIES 1000       /* entity declarations */
 #define SVGDOC_MAX_ENTITY_LEN 65536    /* an entity's replacement text */
@@ -29,9 +33,10 @@ typedef struct svgdoc_options {
   int stroked;          /* only stroked shapes */
   int max_depth;        /* in [1, SVGDOC_MAX_DEPTH] */
   int uses;             /* the document may contain <use>: keep subtrees */
+  int stream;           /* hand the elements over per feed, keep none */
 } svgdoc_options;
 
-/* A drawn element.  Strings live in the document's pool (NULL: none). */
+/* A drawn element.  Its strings live with it (NULL: none). */
 typedef struct svgdoc_element {
   const char *id, *tag, *layer;
   const char *use;      /* the id a <use> instantiated this from */
@@ -57,6 +62,12 @@ typedef struct svgdoc svgdoc;
 svgdoc *svgdoc_new(const svgdoc_options *o);
 void svgdoc_free(svgdoc *D);
 
+/* Optional, before the first feed: the whole document once, in pieces,
+** to learn the ids <use> elements refer to; then only the subtrees of
+** those ids are kept (without a scan, every subtree with an id is, when
+** o->uses).  Errors are left to the reading proper. */
+void svgdoc_scan(svgdoc *D, const char *s, size_t n);
+
 /* Feed the next n bytes; then svgdoc_finish once.  Both return 0, or -1
 ** with the error in svgdoc_error (later calls return -1 again). */
 int svgdoc_feed(svgdoc *D, const char *s, size_t n);
@@ -64,9 +75,13 @@ int svgdoc_finish(svgdoc *D);
 const char *svgdoc_error(const svgdoc *D, unsigned long *line,
                          unsigned long *col);
 
-/* The results, valid after a successful svgdoc_finish. */
+/* The drawn elements, uses expanded, in document order.  o->stream: those
+** completed by the last feed or finish (valid until the next call);
+** otherwise all of them, after a successful svgdoc_finish. */
 size_t svgdoc_count(const svgdoc *D);
 const svgdoc_element *svgdoc_get(const svgdoc *D, size_t i);
+size_t svgdoc_drawn(const svgdoc *D);    /* all handed over so far */
+int svgdoc_streaming(const svgdoc *D);   /* o->stream */
 size_t svgdoc_nwarnings(const svgdoc *D);
 const svgdoc_warning *svgdoc_warning_at(const svgdoc *D, size_t i);
 const size_t *svgdoc_skipped(const svgdoc *D);      /* SVGDOC_NSKIPPED */
