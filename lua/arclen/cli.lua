@@ -52,13 +52,17 @@ options:
                   viewBox mapped onto width/height, 96 px per inch), mm, cm, in, pt, pc
   --stroked       SVG documents: only shapes with a stroke (for plotters)
   --hidden        SVG documents: also display:none and visibility:hidden shapes
+  --quiet         no progress line (length and stat show one on a terminal
+                  when a document takes more than a second)
   --json          print results as JSON
   -h, --help      this text
 
 WHAT of several paths (a file) is measured element by element; time, point
 and resample need a single path.  SVG documents are read as a renderer draws
 them: basic shapes, transforms, viewports, <use>; lengths in the root's user
-units unless --units says otherwise.
+units unless --units says otherwise.  length and stat read a document as a
+stream: each element is measured (and length prints its row) as soon as it
+is read, so that their memory does not grow with the file.
 
 examples:
   arclen henkel
@@ -83,7 +87,8 @@ end
 
 local VALUED = {["--method"] = true, ["--tol"] = true, ["--step"] = true, ["--n"] = true,
                 ["--units"] = true}
-local FLAGS = {["--json"] = "json", ["--stroked"] = "stroked", ["--hidden"] = "hidden"}
+local FLAGS = {["--json"] = "json", ["--stroked"] = "stroked", ["--hidden"] = "hidden",
+               ["--quiet"] = "quiet"}
 
 -- Split argv into options and positional arguments.
 local function parse(argv)
@@ -225,6 +230,15 @@ local function read_svg(name, text, opts)
   return doc
 end
 
+local CHUNK = 65536
+local stdin_first               -- stdin's first chunk, once looked at
+
+-- The first chunk of stdin (read once; read_file("-") starts with it).
+local function stdin_peek()
+  if stdin_first == nil then stdin_first = io.stdin:read(CHUNK) or "" end
+  return stdin_first
+end
+
 local function read_file(name)
   local f, err
   if name == "-" then f = io.stdin else f, err = io.open(name, "rb") end
@@ -232,7 +246,67 @@ local function read_file(name)
   local text = f:read("*a")
   if f ~= io.stdin then f:close() end
   if text == nil then fail("cannot read " .. name) end
+  if name == "-" then text = stdin_peek() .. text end
   return text
+end
+
+-- ---- progress: a line on stderr while a document is read ----------------
+-- Shown when stderr is a terminal (arclen.svgdoc.isatty) and the reading
+-- has taken more than PROGRESS_AFTER seconds of CPU, rewritten in place
+-- with \r and cleared at the end; never with --quiet.  ARCLEN_PROGRESS=1
+-- shows it whatever stderr is and from the first chunk (for tests), =0
+-- never.
+local PROGRESS_AFTER, PROGRESS_EVERY = 1, 0.25
+
+local function progress_for(name, opts)
+  local env = os.getenv("ARCLEN_PROGRESS")
+  if opts.quiet or env == "0" then return nil end
+  local after = PROGRESS_AFTER
+  if env == "1" then
+    after = 0
+  else
+    local ok, svgdoc = pcall(require, "arclen.svgdoc")
+    if not (ok and svgdoc.isatty()) then return nil end
+  end
+  local clock = os.clock
+  local t0, last, width = clock(), nil, 0
+  local P = {}
+  function P.update(bytes, size, count)
+    local now = clock()
+    if now - t0 < after or (last and now - last < PROGRESS_EVERY) then return end
+    last = now
+    local MB, secs = 1e6, math.max(now - t0, 1e-3)
+    local line = size and format("arclen: %s: %.1f of %.1f MB (%d%%), %.1f MB/s, %d elements",
+        name, bytes / MB, size / MB, math.floor(100 * bytes / math.max(size, 1)), bytes / MB / secs, count)
+      or format("arclen: %s: %.1f MB, %.1f MB/s, %d elements", name, bytes / MB, bytes / MB / secs, count)
+    io.stderr:write("\r", line, string.rep(" ", width - #line))
+    io.stderr:flush()
+    width = math.max(width, #line)
+  end
+  function P.clear()
+    if width > 0 then
+      io.stderr:write("\r", string.rep(" ", width), "\r")
+      io.stderr:flush()
+      width = 0
+    end
+  end
+  return P
+end
+
+-- Stream the document src (a file name or a function of chunks) through
+-- svg.each, on_element(e) per drawn element; its warnings go to stderr.
+-- Returns the document without its elements.
+local function each_svg(src, name, opts, on_element)
+  local svg = svg_lib()
+  local o = svg_opts(opts)
+  local P = progress_for(name, opts)
+  if P then o.progress = P.update end
+  if type(src) ~= "string" then o.name = name end
+  local ok, doc = pcall(svg.each, src, on_element, o)
+  if P then P.clear() end
+  if not ok then fail(message(doc)) end
+  for _, w in ipairs(doc.warnings) do io.stderr:write("arclen: warning: ", w, "\n") end
+  return doc
 end
 
 -- The paths named by args[from..]: {{label =, path =}...}, or a cubic.
@@ -302,8 +376,59 @@ function commands.henkel()
   io.write(require("arclen.repro.henkel").report())
 end
 
+-- length of a document, streamed: a row per element as it is read.
+local function length_doc(src, name, opts)
+  local n, rows_json, dk = 0, opts.json, nil
+  local json_open = false
+  if rows_json then dk = json_lib() end
+  local function row(e)
+    n = n + 1
+    local id = e.id or (e.tag .. n)
+    if rows_json then
+      io.write(json_open and "," or "{\"paths\":[", json({id = id, tag = e.tag, layer = e.layer,
+        length = e.length, segments = e.path:segments(), use = e.use}))
+      json_open = true
+    else
+      io.write(id, "\t", g17(e.length), "\n")
+    end
+  end
+  local doc = each_svg(src, name, opts, row)
+  if n == 0 then io.stderr:write("arclen: warning: ", doc.name, ": nothing drawn\n") end
+  if rows_json then
+    -- the keys in order, as json() writes a whole object: paths, total, units
+    io.write(json_open and "" or "{\"paths\":[", "],\"total\":", shortest(doc.total),
+      ",\"units\":", dk.encode(doc.units), "}\n")
+  else
+    print("total\t" .. g17(doc.total))
+  end
+end
+
+-- Is WHAT (args[from..]) one SVG document: a file that is not path data,
+-- or stdin with markup?  Returns the source for svg.each and its name.
+local function document_arg(args, from)
+  if #args ~= from then return nil end
+  local a = args[from]
+  if tonumber(a) then return nil end
+  if a == "-" then
+    local first = stdin_peek()
+    if not first:find("<") then return nil end
+    local given = false
+    return function()
+      if not given then given = true return first end
+      return io.stdin:read(CHUNK)
+    end, "stdin"
+  end
+  if a:find("^%s*[Mm]") then return nil end
+  local f = io.open(a, "rb")
+  if not f then return nil end
+  f:close()
+  return a, a
+end
+
 function commands.length(opts, args)
   local arclen = require("arclen")
+  local src, name = document_arg(args, 2)
+  if src then return length_doc(src, name, opts) end
   local list, nums = targets(args, 2, opts, "length")
   if nums then                    -- one cubic: also the cost and error estimate
     local o = method_opts(opts)
@@ -313,23 +438,6 @@ function commands.length(opts, args)
       print(json({length = L, evals = info.evals, err = info.err}))
     else
       print(g17(L))
-    end
-    return
-  end
-  local doc = list.doc
-  if doc then                     -- an SVG document: per element, the total
-    local rows = {}
-    for i, t in ipairs(list) do
-      local e = t.element
-      rows[i] = {id = t.label, tag = e.tag, layer = e.layer, length = e.length,
-                 segments = e.path:segments(), use = e.use}
-    end
-    if #rows == 0 then io.stderr:write("arclen: warning: ", doc.name, ": nothing drawn\n") end
-    if opts.json then
-      print(json({paths = rows, total = doc.total, units = doc.units}))
-    else
-      for _, r in ipairs(rows) do print(format("%s\t%s", r.id, g17(r.length))) end
-      print("total\t" .. g17(doc.total))
     end
     return
   end
@@ -374,9 +482,10 @@ function commands.stat(opts, args)
   local files, all = {}, {length = 0, travel = 0, paths = 0, elements = 0, segments = 0}
   local units
   for i = 2, #args do
-    local doc = read_svg(args[i], nil, opts)
+    local acc = svg.stats()     -- one row per layer, whatever the file's size
+    local doc = each_svg(args[i], args[i], opts, function(e) acc:add(e) end)
     units = doc.units
-    local st = svg.stat(doc)
+    local st = acc:result()
     for _, k in ipairs({"length", "travel", "paths", "elements", "segments"}) do
       all[k] = all[k] + st.total[k]
     end

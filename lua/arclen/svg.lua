@@ -7,16 +7,22 @@
 --                               d, ctm}  (d: the shape's path data in its own
 --                               coordinates, ctm: {a, b, c, d, e, f} onto the
 --                               document's)
+--   local sum = svg.each(src, function(e) ... end [, opts])   -- a stream:
+--     each element as soon as it is complete, none kept; src a file name,
+--     an open file or a function giving chunks; sum: doc without elements
 --   svg.stat(doc) -> per layer: length, pen-up travel, paths, segments, bbox
+--   svg.stats() -> st: st:add(e) per element, st:result() (svg.stat's)
 --
 -- The reader is C over expat (src/svgdoc/, the module arclen.svgdoc):
 -- streaming, nothing like a DOM is built.  Every basic shape becomes path
 -- data as SVG 2 defines it (section 10, "Basic shapes"), mapped by the
 -- element's current transformation matrix (nested transform attributes,
 -- nested viewports) and read into cubics; this module makes each drawn
--- element an arclen.path and measures it.  <use> may point forwards: when
--- the document may contain a <use> element, the subtrees of elements with
--- an id are kept and the uses are expanded once the document has been read.
+-- element an arclen.path and measures it, as the reader hands it over.
+-- <use> may point forwards: when the document may contain a <use>
+-- element, the subtrees of the elements with an id that uses refer to are
+-- kept (a scan of the file first; from a stream, every subtree with an id),
+-- and what follows a use of an element not read yet waits until it is.
 -- Errors are "NAME:LINE:COL: message"; misuse is "bad argument #n to 'f'".
 -- doc/svg.md lists the semantic choices made where the specification leaves
 -- room.
@@ -41,6 +47,7 @@ local find, sub, floor, huge = string.find, string.sub, math.floor, math.huge
 local abs, sqrt = math.abs, math.sqrt
 
 local MAX_DEPTH = 1000                -- element nesting (the reader's cap)
+local MAX_ELEMENTS = 1000000          -- drawn elements svg.read keeps (default)
 local CHUNK = 65536                   -- bytes per read of a file
 
 -- Output units: "user" (the root's user units) or one of these, in CSS px
@@ -97,38 +104,72 @@ local function element_fail(e, err)
   fail(e.line, e.col, what .. ": " .. m)
 end
 
--- Read the document from next_chunk() (nil at the end): the C reader's
--- results, each drawn element with its arclen.path.
-local function run(o, name, next_chunk, uses)
+-- The stream: the document from next_chunk() (nil at the end), scanned
+-- first from scan() (a second source of the same bytes, or nil) for the ids
+-- <use> refers to; each drawn element made an arclen.path (and measured,
+-- when o.measure) and given to on_element as soon as the reader hands it
+-- over.  Returns the document without its elements.
+local function stream(o, name, next_chunk, uses, scan, on_element, size)
   local r = svgdoc.new({arc_tol = o.arc_tol or o.tol, hidden = o.hidden,
     stroked = o.stroked, max_depth = o.max_depth or MAX_DEPTH, uses = uses,
-    unit_px = o.units ~= "user" and UNITS[o.units] or 0})
+    unit_px = o.units ~= "user" and UNITS[o.units] or 0, stream = true})
+  if scan then
+    for _ = 1, huge do
+      local chunk = scan()
+      if chunk == nil then break end
+      r:scan(chunk)
+    end
+  end
+  local from_subpaths, tol, method = path._from_subpaths, o.tol, o.method
+  local measure, cap, progress = o.measure, o.max_elements, o.progress
+  local count, total, bytes = 0, 0, 0
+  local function take(list)
+    for k = 1, #list do
+      local e = list[k]
+      count = count + 1
+      if count > cap then         -- checked as they come, not at the end
+        fail(e.line, e.col, format("more than %d drawn elements", cap))
+      end
+      local ok, p = pcall(from_subpaths, e.subpaths, tol, method)
+      if not ok then element_fail(e, p) end
+      e.path, e.subpaths = p, nil
+      if measure then
+        local ok2, L, err = pcall(p.length, p)
+        if not ok2 then element_fail(e, L) end
+        if L == nil then element_fail(e, err) end
+        if not isfinite(L) then element_fail(e, nil) end
+        e.length = L
+        if not isfinite(total + L) then
+          fail(e.line, e.col, format("<%s>: the total length overflows here (%s before it, %s in it)",
+            e.tag, shortest(total), shortest(L)))
+        end
+        total = total + L
+      end
+      on_element(e)
+    end
+  end
   for _ = 1, huge do
     local chunk = next_chunk()
     if chunk == nil then break end
-    r:feed(chunk)
+    bytes = bytes + #chunk
+    local list = r:feed(chunk)
+    if list then take(list) end
+    if progress then progress(bytes, size, count) end
   end
   local res = r:finish(name)
-  local from_subpaths, tol, method = path._from_subpaths, o.tol, o.method
-  local els, i = res.elements, 0
-  local ok, err = pcall(function()
-    for k = 1, #els do
-      i = k
-      local e = els[k]
-      e.path = from_subpaths(e.subpaths, tol, method)
-      e.subpaths = nil
-    end
-  end)
-  if not ok then element_fail(els[i], err) end
-  return res
+  take(res.elements)
+  return {name = name, warnings = res.warnings, skipped = res.skipped, units = o.units,
+    kept = res.kept, total = measure and total or nil, count = count, bytes = bytes,
+    width = res.width, height = res.height, viewbox = res.viewbox}
 end
 
--- The options of read and parse: tol, arc_tol, method, units, hidden,
--- stroked, measure, max_depth.
-local function argerror4(n, fname, msg) argerror(n, fname, msg, 5) end
-
-local function read_opts(opts, fname)
-  local o = {tol = 1e-12, method = "gauss", measure = true, units = "user"}
+-- The options of read, parse and each: tol, arc_tol, method, units,
+-- hidden, stroked, measure, max_depth, max_elements, progress; each's name.
+-- n: the options' argument position.
+local function read_opts(opts, fname, cap, n)
+  n = n or 2
+  local function argerror4(_, f, msg) argerror(n, f, msg, 5) end
+  local o = {tol = 1e-12, method = "gauss", measure = true, units = "user", max_elements = cap}
   if opts == nil then return o end
   if type(opts) ~= "table" then argerror4(2, fname, "options table expected, got " .. type(opts)) end
   for k, v in pairs(opts) do
@@ -149,36 +190,20 @@ local function read_opts(opts, fname)
       if type(v) ~= "number" or v ~= floor(v) or v < 1 or v > MAX_DEPTH then
         argerror4(2, fname, format("max_depth must be an integer in [1, %d]", MAX_DEPTH))
       end
+    elseif k == "max_elements" then
+      if type(v) ~= "number" or not (v >= 0) or (v ~= floor(v) and v ~= huge) then
+        argerror4(2, fname, "max_elements must be a whole number >= 0 (or math.huge)")
+      end
+    elseif k == "progress" then
+      if type(v) ~= "function" then argerror4(2, fname, "progress must be a function") end
+    elseif k == "name" and fname == "arclen.svg.each" then
+      if type(v) ~= "string" then argerror4(2, fname, "name must be a string") end
     else
       argerror4(2, fname, format("unknown option '%s'", tostring(k)))
     end
     o[k] = v
   end
   return o
-end
-
--- The document object from the reader's results.
-local function finish(r, o, name)
-  local doc = {name = name, elements = r.elements, warnings = r.warnings,
-    skipped = r.skipped, units = o.units, kept = r.kept, total = nil,
-    width = r.width, height = r.height, viewbox = r.viewbox}
-  if o.measure then
-    local total = 0
-    for _, e in ipairs(r.elements) do
-      local ok, L, err = pcall(e.path.length, e.path)
-      if not ok then element_fail(e, L) end
-      if L == nil then element_fail(e, err) end
-      if not isfinite(L) then element_fail(e, nil) end
-      e.length = L
-      if not isfinite(total + L) then
-        fail(e.line, e.col, format("<%s>: the total length overflows here (%s before it, %s in it)",
-          e.tag, shortest(total), shortest(L)))
-      end
-      total = total + L
-    end
-    doc.total = total
-  end
-  return doc
 end
 
 -- A located error table into "NAME:LINE:COL: message".
@@ -189,49 +214,117 @@ local function located(name, e)
   return e
 end
 
--- svg.parse(text [, opts [, name]]) -> doc.  name (default "<string>")
--- names the document in messages.
-function M.parse(text, opts, name)
-  if type(text) ~= "string" then argerror(1, "arclen.svg.parse", "SVG text (a string) expected, got " .. type(text)) end
-  local o = read_opts(opts, "arclen.svg.parse")
-  if name ~= nil and type(name) ~= "string" then argerror(3, "arclen.svg.parse", "name must be a string") end
-  name = name or "<string>"
+-- The chunks of text, CHUNK bytes each.
+local function text_chunks(text)
   local pos = 1
-  local ok, res = pcall(function()
-    local r = run(o, name, function()
-      if pos > #text then return nil end
-      local c = sub(text, pos, pos + CHUNK - 1)
-      pos = pos + CHUNK
-      return c
-    end, may_use(text) and true or false)
-    return finish(r, o, name)
-  end)
+  return function()
+    if pos > #text then return nil end
+    local c = sub(text, pos, pos + CHUNK - 1)
+    pos = pos + CHUNK
+    return c
+  end
+end
+
+-- Run f (the stream) with the located errors made "NAME:LINE:COL: msg".
+local function located_call(name, f)
+  local ok, res = pcall(f)
   if not ok then error(located(name, res), 0) end
   return res
 end
 
--- svg.read(filename [, opts]) -> doc: the file read in chunks of 64 KiB.
-function M.read(filename, opts)
-  if type(filename) ~= "string" then argerror(1, "arclen.svg.read", "a file name expected, got " .. type(filename)) end
-  local o = read_opts(opts, "arclen.svg.read")
-  local f, err = io.open(filename, "rb")
-  if not f then error(tostring(err), 0) end
-  -- first pass: only a byte scan for <use (decides what is kept)
-  local uses, tail = false, ""
+-- The document with its elements collected (read and parse).
+local function collect(o, name, next_chunk, uses, scan, size)
+  local els = {}
+  local doc = stream(o, name, next_chunk, uses, scan, function(e) els[#els + 1] = e end, size)
+  doc.elements, doc.count, doc.bytes = els, nil, nil
+  return doc
+end
+
+-- svg.parse(text [, opts [, name]]) -> doc.  name (default "<string>")
+-- names the document in messages.
+function M.parse(text, opts, name)
+  if type(text) ~= "string" then argerror(1, "arclen.svg.parse", "SVG text (a string) expected, got " .. type(text)) end
+  local o = read_opts(opts, "arclen.svg.parse", MAX_ELEMENTS)
+  if name ~= nil and type(name) ~= "string" then argerror(3, "arclen.svg.parse", "name must be a string") end
+  name = name or "<string>"
+  local uses = may_use(text) and true or false
+  return located_call(name, function()
+    return collect(o, name, text_chunks(text), uses, uses and text_chunks(text) or nil, #text)
+  end)
+end
+
+-- An open file: does it contain what could be a <use> element (a byte
+-- scan from where it is, which it returns to)?
+local function file_may_use(f)
+  local at, tail, uses = f:seek(), "", false
   for _ = 1, huge do
     local c = f:read(CHUNK)
     if c == nil then break end
     if may_use(tail .. sub(c, 1, 8)) or may_use(c) then uses = true break end
     tail = sub(c, -8)
   end
+  f:seek("set", at)
+  return uses
+end
+
+-- The stream of a file by name: three passes when it may contain <use>
+-- (the byte scan, the scan for the ids, the reading), else two.
+local function stream_file(o, filename, on_element)
+  local f, err = io.open(filename, "rb")
+  if not f then error(tostring(err), 0) end
+  local size = f:seek("end")
   f:seek("set", 0)
-  local ok, res = pcall(function()
-    local r = run(o, filename, function() return f:read(CHUNK) end, uses)
-    return finish(r, o, filename)
-  end)
+  local uses = file_may_use(f)
+  local scan
+  if uses then
+    scan = function()
+      local c = f:read(CHUNK)
+      if c == nil then f:seek("set", 0) end    -- the reading starts over
+      return c
+    end
+  end
+  local ok, res = pcall(stream, o, filename, function() return f:read(CHUNK) end, uses, scan,
+    on_element, size)
   f:close()
   if not ok then error(located(filename, res), 0) end
   return res
+end
+
+-- svg.read(filename [, opts]) -> doc: the file read in chunks of 64 KiB.
+function M.read(filename, opts)
+  if type(filename) ~= "string" then argerror(1, "arclen.svg.read", "a file name expected, got " .. type(filename)) end
+  local o = read_opts(opts, "arclen.svg.read", MAX_ELEMENTS)
+  local els = {}
+  local doc = stream_file(o, filename, function(e) els[#els + 1] = e end)
+  doc.elements, doc.count, doc.bytes = els, nil, nil
+  return doc
+end
+
+-- svg.each(src, fn [, opts]) -> the document without its elements
+-- ({name, total, count, warnings, skipped, kept, units, width, height,
+-- viewbox, bytes}): fn(e) for each drawn element, in svg.read's order, as
+-- soon as it is complete; nothing of it is kept.  src: a file name, an
+-- open file (read to its end from where it is; not closed) or a function
+-- that returns the next chunk of the document (nil at the end).  From an
+-- open file or a function, which cannot be read twice, every subtree with
+-- an id is kept while the document is read (what <use> could refer to).
+-- opts: svg.read's, and name (the document's in messages; default the file
+-- name, "<stream>"), max_elements (default none), progress (a function
+-- called after each chunk with the bytes read, the file's size or nil,
+-- and the elements so far).
+function M.each(src, fn, opts)
+  local fname = "arclen.svg.each"
+  local kind = type(src) == "string" and "name" or io.type(src) == "file" and "file"
+    or type(src) == "function" and "function" or nil
+  if not kind then argerror(1, fname, "a file name, an open file or a function expected, got " .. type(src)) end
+  if type(fn) ~= "function" then argerror(2, fname, "a function expected, got " .. type(fn)) end
+  local o = read_opts(opts, fname, huge, 3)
+  if kind == "name" then return stream_file(o, src, fn) end
+  local name = o.name or "<stream>"
+  local next_chunk = kind == "file" and function() return src:read(CHUNK) end or src
+  return located_call(name, function()
+    return stream(o, name, next_chunk, true, nil, fn, nil)
+  end)
 end
 
 -- ---- stat: what vpype stat prints ----------------------------------------
@@ -264,6 +357,71 @@ local function cubic_range(p0, p1, p2, p3)
   return lo, hi
 end
 
+local function box_add(b, x0, y0, x1, y1)
+  if b[1] == nil then b[1], b[2], b[3], b[4] = x0, y0, x1, y1 return end
+  if x0 < b[1] then b[1] = x0 end
+  if y0 < b[2] then b[2] = y0 end
+  if x1 > b[3] then b[3] = x1 end
+  if y1 > b[4] then b[4] = y1 end
+end
+
+-- svg.stats() -> st: svg.stat's numbers gathered one element at a time
+-- (st:add(e), in document order), so that a stream keeps only one row per
+-- layer; st:result() -> what svg.stat returns.
+local Stats = {}
+Stats.__index = Stats
+
+function M.stats()
+  return setmetatable({layers = {}, by = {}}, Stats)
+end
+
+function Stats:add(e)
+  local L = self.by[e.layer]
+  if not L then
+    L = {name = e.layer, length = 0, travel = 0, paths = 0, elements = 0, segments = 0, box = {}}
+    self.by[e.layer] = L
+    self.layers[#self.layers + 1] = L
+  end
+  local p = e.path
+  L.length = L.length + (e.length or p:length())
+  L.elements = L.elements + 1
+  L.paths = L.paths + p.nsub
+  L.segments = L.segments + p.n
+  for j = 1, p.nsub do
+    local first, last = p:segment(p.first[j]), p:segment(p.first[j + 1] - 1)
+    if L.endx then
+      local dx, dy = first[1] - L.endx, first[2] - L.endy
+      L.travel = L.travel + sqrt(dx * dx + dy * dy)
+    end
+    L.endx, L.endy = last[7], last[8]
+  end
+  for k = 1, p.n do
+    local c = p:segment(k)
+    local x0, x1 = cubic_range(c[1], c[3], c[5], c[7])
+    local y0, y1 = cubic_range(c[2], c[4], c[6], c[8])
+    box_add(L.box, x0, y0, x1, y1)
+  end
+end
+
+function Stats:result()
+  local total = {name = "total", length = 0, travel = 0, paths = 0, elements = 0, segments = 0, box = {}}
+  local out = {}
+  for i, L in ipairs(self.layers) do
+    total.length = total.length + L.length
+    total.travel = total.travel + L.travel
+    total.paths = total.paths + L.paths
+    total.elements = total.elements + L.elements
+    total.segments = total.segments + L.segments
+    if L.box[1] then box_add(total.box, L.box[1], L.box[2], L.box[3], L.box[4]) end
+    out[i] = {name = L.name, length = L.length, travel = L.travel, paths = L.paths,
+              elements = L.elements, segments = L.segments,
+              bbox = L.box[1] and {L.box[1], L.box[2], L.box[3], L.box[4]} or nil}
+  end
+  total.bbox = total.box[1] and total.box or nil
+  total.box = nil
+  return {layers = out, total = total}
+end
+
 -- svg.stat(doc) -> {layers = {{name, length, travel, paths, elements,
 -- segments, bbox = {x0, y0, x1, y1}}...}, total = {same fields}}.  paths
 -- counts subpaths (vpype reads each subpath as a line), elements the drawn
@@ -274,56 +432,9 @@ function M.stat(doc)
   if type(doc) ~= "table" or type(doc.elements) ~= "table" then
     argerror(1, "arclen.svg.stat", "a document (from arclen.svg.read or parse) expected")
   end
-  local layers, by = {}, {}
-  local function box_add(b, x0, y0, x1, y1)
-    if b[1] == nil then b[1], b[2], b[3], b[4] = x0, y0, x1, y1 return end
-    if x0 < b[1] then b[1] = x0 end
-    if y0 < b[2] then b[2] = y0 end
-    if x1 > b[3] then b[3] = x1 end
-    if y1 > b[4] then b[4] = y1 end
-  end
-  for _, e in ipairs(doc.elements) do
-    local L = by[e.layer]
-    if not L then
-      L = {name = e.layer, length = 0, travel = 0, paths = 0, elements = 0, segments = 0, box = {}}
-      by[e.layer] = L
-      layers[#layers + 1] = L
-    end
-    local p = e.path
-    L.length = L.length + (e.length or p:length())
-    L.elements = L.elements + 1
-    L.paths = L.paths + p.nsub
-    L.segments = L.segments + p.n
-    for j = 1, p.nsub do
-      local first, last = p:segment(p.first[j]), p:segment(p.first[j + 1] - 1)
-      if L.endx then
-        local dx, dy = first[1] - L.endx, first[2] - L.endy
-        L.travel = L.travel + sqrt(dx * dx + dy * dy)
-      end
-      L.endx, L.endy = last[7], last[8]
-    end
-    for k = 1, p.n do
-      local c = p:segment(k)
-      local x0, x1 = cubic_range(c[1], c[3], c[5], c[7])
-      local y0, y1 = cubic_range(c[2], c[4], c[6], c[8])
-      box_add(L.box, x0, y0, x1, y1)
-    end
-  end
-  local total = {name = "total", length = 0, travel = 0, paths = 0, elements = 0, segments = 0, box = {}}
-  local out = {}
-  for i, L in ipairs(layers) do
-    total.length = total.length + L.length
-    total.travel = total.travel + L.travel
-    total.paths = total.paths + L.paths
-    total.elements = total.elements + L.elements
-    total.segments = total.segments + L.segments
-    if L.box[1] then box_add(total.box, L.box[1], L.box[2], L.box[3], L.box[4]) end
-    out[i] = {name = L.name, length = L.length, travel = L.travel, paths = L.paths,
-              elements = L.elements, segments = L.segments, bbox = L.box[1] and L.box or nil}
-  end
-  total.bbox = total.box[1] and total.box or nil
-  total.box = nil
-  return {layers = out, total = total}
+  local st = M.stats()
+  for _, e in ipairs(doc.elements) do st:add(e) end
+  return st:result()
 end
 
 M.UNITS = UNITS
