@@ -220,10 +220,12 @@ accuracy: $(MODULE)
 #   make bench-scale              10^6 curves through the Lua API
 #   make bench-svg-token          one 12.5 .. 100 MB attribute: time, RSS
 #   make bench-svg                whole SVG documents: arclen.svg vs
-#                                 svgelements, svg-path-properties, paper.js
+#                                 svgelements, svg-path-properties, paper.js;
+#                                 generated ones: time, peak RSS
+#   make bench-svg-big            length and stat on 10 MB .. 1 GB of paths
 #   make bench-paths              points along paths, with node/kurbo peers
 FUZZ_SECONDS ?= 15
-.PHONY: fuzz sanitize valgrind check-builds bench-peers bench-scale bench-svg bench-svg-token bench-paths
+.PHONY: fuzz sanitize valgrind check-builds bench-peers bench-scale bench-svg bench-svg-token bench-paths bench-svg-big
 
 fuzz:
 	FUZZ_SECONDS=$(FUZZ_SECONDS) sh tools/fuzz.sh
@@ -244,6 +246,11 @@ bench-peers: $(BUILD)/libarclen.a
 
 bench-svg:
 	sh bench/bench_svg.sh
+
+# Memory against the file's size: arclen length and stat on generated files
+# of paths of 10 MB, 100 MB and 1 GB (written to a temporary directory).
+bench-svg-big: $(MODULE)
+	BIG_FILES="paths:10 paths:100 paths:1000" BIG_TOOLS="length stat" sh bench/svg/big.sh
 
 # One path whose d is 12.5 .. 100 MB: time and peak RSS of arclen length
 # (linear in the token's size; GNU time).

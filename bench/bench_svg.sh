@@ -7,8 +7,12 @@
 # (spec/data/svg_refs.tsv).  arclen's time is split into the reader's own
 # cost (XML, transforms, path data into cubics) and the measuring's, and
 # so are its instructions under callgrind (bench/svg/icount.sh).
-# Peers that cannot run are skipped with a message.
+# Peers that cannot run are skipped with a message.  Then generated
+# documents (bench/svg/big.sh): a halftone drawing of 10^5 circles, a
+# 100 MB plotter file and files of paths of 10 and 100 MB, the time and
+# peak RSS of arclen length, arclen stat, svg.read and svgelements.
 #   BENCH_REPS=N (default 5): repetitions, the best time of each counts
+#   BENCH_SVG_BIG=0: leave the generated documents out
 cd "$(dirname "$0")/.." || exit 2
 OUT=build/bench-svg
 mkdir -p "$OUT"
@@ -59,3 +63,9 @@ fi
 
 echo
 $LUA bench/svg/summary.lua "$RES"
+
+if [ "${BENCH_SVG_BIG:-1}" != 0 ]; then
+  echo
+  echo "== generated documents: time and peak RSS (bench/svg/big.sh; GNU time)"
+  LUA_BIN=$LUA sh bench/svg/big.sh
+fi
