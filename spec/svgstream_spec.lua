@@ -37,7 +37,7 @@ local function signature(e)
   local p = e.path
   for k = 1, p.n do
     local c = p:segment(k)
-    for j = 1, 8 do t[#t + 1] = ("%a"):format(c[j]) end
+    for j = 1, 8 do t[#t + 1] = ("%.17g"):format(c[j]) end
   end
   return table.concat(t, " ")
 end
