@@ -729,9 +729,9 @@ static void use_at_top(svgdoc *D, svgdoc_use *u) {
   svgdoc_use *c;
   char *at;
   size_t budget = SVGDOC_MAX_REPLAYED;
-  if (!holding(D) && D->record &&
-      ready(D, u->href, strlen(u->href), 0, &budget, &D->waiting,
-            &D->waiting_len)) {
+  if (!D->record ||               /* nothing kept: the missing id, now */
+      (!holding(D) && ready(D, u->href, strlen(u->href), 0, &budget,
+                            &D->waiting, &D->waiting_len))) {
     expand_top(D, u);
     return;
   }
