@@ -116,6 +116,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   o.uses = (data[0] >> 5) & 1;
   o.max_depth = (data[0] >> 6) == 3 ? 8 : SVGDOC_MAX_DEPTH;
   scan = (data[0] >> 6) == 2;
+  o.max_held = 0;                        /* the default cap */
   cut = n ? data[1] * n / 256 : 0;
   o.stream = 1;
   A = read_doc(&o, s, n, cut, scan, &ra, &ga);

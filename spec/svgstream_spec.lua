@@ -116,6 +116,27 @@ describe("svg.each: the same elements as svg.read, as they complete #svgdoc", fu
     assert.is_true(at[5] > at[4])
   end)
 
+  it("the queue behind a forward <use> is capped (max_held of the reader; a million by default)", function()
+    local svgdoc = require("arclen.svgdoc")
+    local function read(n, cap)
+      local b = {H, '\n<use href="#t"/>'}
+      for i = 1, n do b[#b + 1] = ('<path d="M0 0 L%d 0"/>'):format(i) end
+      b[#b + 1] = '<path id="t" d="M0 0 L1 1"/></svg>'
+      local r = svgdoc.new({uses = true, stream = true, max_held = cap})
+      local got = {}
+      for _, e in ipairs(r:feed(table.concat(b)) or {}) do got[#got + 1] = e end
+      for _, e in ipairs(r:finish("q.svg").elements) do got[#got + 1] = e end
+      return got
+    end
+    -- behind the use: the paths and t itself (drawn before it ends)
+    assert.are.equal(1 + 2 + 1, #read(2, 3))           -- the use's copy, 2 paths, t
+    local ok, e = pcall(read, 3, 3)
+    assert.is_false(ok)
+    assert.are.same({line = 2, col = 1, msg = "<use> of '#t' waits for an element not read yet, "
+      .. "with more than 3 drawn elements behind it"}, e)
+    assert.matches("max_held out of range", select(2, pcall(svgdoc.new, {max_held = 0})))
+  end)
+
   it("a backward <use> is expanded at once; a missing target fails at the end, with the use's place", function()
     local text = H .. '<path id="a" d="M0 0 L1 0"/>\n<use href="#a"/>\n' ..
       ("<!-- padding -->\n"):rep(40) .. "</svg>"

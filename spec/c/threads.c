@@ -678,6 +678,8 @@ static void job_svgdoc(sink *s) {
       o.stroked = v;
       o.max_depth = SVGDOC_MAX_DEPTH;
       o.uses = 1;
+      o.stream = 0;                    /* collected: put_doc reads them all */
+      o.max_held = 0;
       put_s(s, docs[i].name);
       D = svgdoc_new(&o);
       if (D == NULL) {
@@ -757,6 +759,8 @@ static int build_shared(void) {
     so.hidden = so.stroked = 0;
     so.max_depth = SVGDOC_MAX_DEPTH;
     so.uses = 1;
+    so.stream = 0;
+    so.max_held = 0;
     shared_doc = svgdoc_new(&so);
     if (shared_doc == NULL || svgdoc_feed(shared_doc, DOCS[0], strlen(DOCS[0])) != 0 ||
         svgdoc_finish(shared_doc) != 0)

@@ -3,7 +3,8 @@
 ** module arclen.svgdoc, a shared object of its own because it links
 ** libexpat, which arclen.core does without.  arclen.svg is its user.
 **   svgdoc.new(opts) -> reader    opts: arc_tol, unit_px (0: user units),
-**                                 hidden, stroked, max_depth, uses, stream
+**                                 hidden, stroked, max_depth, uses, stream,
+**                                 max_held (the queue behind a forward use)
 **   reader:scan(s)                optional, before feed: the whole document
 **                                 once, for the ids <use> refers to
 **   reader:feed(s) -> elements    the next bytes of the document; with
@@ -72,7 +73,7 @@ static int opt_boolean(lua_State *L, const char *k) {
 static int l_new(lua_State *L) {
   svgdoc_options o;
   svgdoc **D;
-  double depth;
+  double depth, held;
   luaL_checktype(L, 1, LUA_TTABLE);
   o.arc_tol = opt_number(L, "arc_tol", 1e-12);
   o.unit_px = opt_number(L, "unit_px", 0);
@@ -87,6 +88,9 @@ static int l_new(lua_State *L) {
   o.stroked = opt_boolean(L, "stroked");
   o.uses = opt_boolean(L, "uses");
   o.stream = opt_boolean(L, "stream");
+  held = opt_number(L, "max_held", SVGDOC_MAX_HELD);
+  luaL_argcheck(L, held >= 1 && held <= SVGDOC_MAX_HELD, 1, "max_held out of range");
+  o.max_held = (size_t)held;
   D = (svgdoc **)lua_newuserdata(L, sizeof *D);
   *D = NULL;
   luaL_getmetatable(L, READER);

@@ -229,10 +229,10 @@ static void reserve_out(svgdoc *D, unsigned long line, unsigned long col) {
                 SVGDOC_MAX_ELEMENTS);
   if (holding(D)) {
     const svgdoc_use *u = D->held_q[D->held_head].u;
-    if (D->held_elements >= SVGDOC_MAX_HELD)
+    if (D->held_elements >= D->o.max_held)
       svgdoc_fail(D, u->line, u->col, "<use> of '#%s' waits for an element "
-                  "not read yet, with more than %d drawn elements behind it",
-                  u->href, SVGDOC_MAX_HELD);
+                  "not read yet, with more than %lu drawn elements behind it",
+                  u->href, (unsigned long)D->o.max_held);
     held_room(D);
     return;
   }
@@ -995,6 +995,8 @@ svgdoc *svgdoc_new(const svgdoc_options *o) {
   svgdoc *D = calloc(1, sizeof *D);
   if (D == NULL) return NULL;
   D->o = *o;
+  if (D->o.max_held == 0 || D->o.max_held > SVGDOC_MAX_HELD)
+    D->o.max_held = SVGDOC_MAX_HELD;
   D->record = o->uses;
   D->arena = &D->tmp;
   D->stack = malloc(((size_t)o->max_depth + 2) * sizeof *D->stack);

@@ -34,6 +34,7 @@ typedef struct svgdoc_options {
   int max_depth;        /* in [1, SVGDOC_MAX_DEPTH] */
   int uses;             /* the document may contain <use>: keep subtrees */
   int stream;           /* hand the elements over per feed, keep none */
+  size_t max_held;      /* behind a forward use; 0: SVGDOC_MAX_HELD */
 } svgdoc_options;
 
 /* A drawn element.  Its strings live with it (NULL: none). */
