@@ -261,16 +261,15 @@ local PROGRESS_AFTER, PROGRESS_EVERY = 1, 0.25
 local function progress_for(name, opts)
   local env = os.getenv("ARCLEN_PROGRESS")
   if opts.quiet or env == "0" then return nil end
-  local after = PROGRESS_AFTER
+  local after, ok, svgdoc = PROGRESS_AFTER, pcall(require, "arclen.svgdoc")
   if env == "1" then
     after = 0
-  else
-    local ok, svgdoc = pcall(require, "arclen.svgdoc")
-    if not (ok and svgdoc.isatty()) then return nil end
+  elseif not (ok and svgdoc.isatty()) then
+    return nil
   end
   local clock = os.clock
   local t0, last, width = clock(), nil, 0
-  local P = {}
+  local P = {tty_out = env == "1" or (ok and svgdoc.isatty("stdout"))}
   function P.update(bytes, size, count)
     local now = clock()
     if now - t0 < after or (last and now - last < PROGRESS_EVERY) then return end
@@ -283,6 +282,7 @@ local function progress_for(name, opts)
     io.stderr:flush()
     width = math.max(width, #line)
   end
+  function P.shown() return width > 0 end
   function P.clear()
     if width > 0 then
       io.stderr:write("\r", string.rep(" ", width), "\r")
@@ -295,14 +295,25 @@ end
 
 -- Stream the document src (a file name or a function of chunks) through
 -- svg.each, on_element(e) per drawn element; its warnings go to stderr.
--- Returns the document without its elements.
-local function each_svg(src, name, opts, on_element)
+-- prints: on_element writes to stdout (when stdout is the terminal too,
+-- the progress line is cleared first, lest they mix).  Returns the document without its
+-- elements.
+local function each_svg(src, name, opts, on_element, prints)
   local svg = svg_lib()
   local o = svg_opts(opts)
   local P = progress_for(name, opts)
-  if P then o.progress = P.update end
+  local fn = on_element
+  if P then
+    o.progress = P.update
+    if prints and P.tty_out then
+      fn = function(e)
+        if P.shown() then P.clear() end
+        on_element(e)
+      end
+    end
+  end
   if type(src) ~= "string" then o.name = name end
-  local ok, doc = pcall(svg.each, src, on_element, o)
+  local ok, doc = pcall(svg.each, src, fn, o)
   if P then P.clear() end
   if not ok then fail(message(doc)) end
   for _, w in ipairs(doc.warnings) do io.stderr:write("arclen: warning: ", w, "\n") end
@@ -392,7 +403,7 @@ local function length_doc(src, name, opts)
       io.write(id, "\t", g17(e.length), "\n")
     end
   end
-  local doc = each_svg(src, name, opts, row)
+  local doc = each_svg(src, name, opts, row, true)
   if n == 0 then io.stderr:write("arclen: warning: ", doc.name, ": nothing drawn\n") end
   if rows_json then
     -- the keys in order, as json() writes a whole object: paths, total, units

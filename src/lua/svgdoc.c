@@ -13,7 +13,8 @@
 **   reader:finish(name) -> {elements =, warnings =, skipped =, kept =,
 **                           width =, height =, viewbox =}  (with stream,
 **                           elements are the ones completed at the end)
-**   svgdoc.isatty() -> boolean     is stderr a terminal (progress lines)
+**   svgdoc.isatty([which]) -> boolean  is stderr (or "stdout") a terminal
+**                                 (the command line's progress line)
 ** A located error is raised as {line =, col =, msg =}; arclen.svg names
 ** the document in it.  Each element is {id, tag, layer, line, col,
 ** stroked, use, d, ctm = {a, b, c, d, e, f}, subpaths} (subpaths as
@@ -26,12 +27,12 @@
 #include <stdio.h>
 #if defined(_WIN32)
 #include <io.h>
-#define stderr_is_tty() (_isatty(_fileno(stderr)) != 0)
+#define is_tty(f) (_isatty(_fileno(f)) != 0)
 #elif defined(__unix__) || defined(__APPLE__)
 #include <unistd.h>
-#define stderr_is_tty() (isatty(fileno(stderr)) != 0)
+#define is_tty(f) (isatty(fileno(f)) != 0)
 #else
-#define stderr_is_tty() 0                /* unknown: no progress lines */
+#define is_tty(f) ((void)(f), 0)         /* unknown: no progress lines */
 #endif
 
 #define READER "arclen.svgdoc.reader"
@@ -148,9 +149,11 @@ static int l_feed(lua_State *L) {
   return svgdoc_streaming(*D) ? push_batch(L, *D) : 0;
 }
 
-/* svgdoc.isatty() */
+/* svgdoc.isatty([which]) */
 static int l_isatty(lua_State *L) {
-  lua_pushboolean(L, stderr_is_tty());
+  static const char *const names[] = {"stderr", "stdout", NULL};
+  int which = luaL_checkoption(L, 1, "stderr", names);
+  lua_pushboolean(L, is_tty(which == 0 ? stderr : stdout));
   return 1;
 }
 
