@@ -84,11 +84,19 @@ static svgdoc *read_doc(const svgdoc_options *o, const char *s, size_t n,
   return D;
 }
 
+#define XML_PREFIX "malformed XML: "
+
 static void same(const svgdoc *A, const svgdoc *B, int rc, const digest *ga,
                  const digest *gb) {
   unsigned long la, ca, lb, cb;
   if (rc != 0) {
     const char *ma = svgdoc_error(A, &la, &ca), *mb = svgdoc_error(B, &lb, &cb);
+    /* expat's own verdict on malformed bytes depends on where the input
+    ** was cut ("t\0\0" whole: a syntax error at 1:1; "t" then "\0\0": an
+    ** invalid token at 1:2): both must call it malformed, nothing more */
+    if (strncmp(ma, XML_PREFIX, sizeof XML_PREFIX - 1) == 0 &&
+        strncmp(mb, XML_PREFIX, sizeof XML_PREFIX - 1) == 0)
+      return;
     if (strcmp(ma, mb) != 0 || la != lb || ca != cb)
       fz_fail("svgdoc: streaming", NULL, 2, "errors differ at lines %g, %g",
               (double)la, (double)lb);
