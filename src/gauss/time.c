@@ -59,17 +59,36 @@ static double second_order_step(const piece_bound *pbound, double half_width, do
   return res <= tol * (1 - 1.0 / 1024) ? e : 0;
 }
 
+/* The third-order step e = d + reversion_tail (the root of the Taylor
+** polynomial of third order, to its own third order) when it is within
+** tol: with g = -f d the polynomial's value there is f (e - d) + e^2 (f1/2
+** + e f2/6), and the remainder is at most max |f'''| e^4 / 24 with |f'''|
+** <= 6 M / r^3 (Cauchy, as for newton_certified).  A sweep's chained guess
+** errs by ~1e-5 of the piece, whose Newton step this certifies where the
+** second-order one does not; 0 when not within tol. */
+static double third_order_step(const piece_bound *pbound, double half_width,
+                               double d, double f, double f1, double f2,
+                               double tol) {
+  double r = disc_radius(pbound, half_width), tail = reversion_tail(d, f, f1, f2);
+  double e = d + tail, e2 = e * e;
+  double res = fabs(f * tail + e2 * (f1 / 2 + e * f2 / 6)) +
+               pbound->m * (e2 * e2) / (4 * r * r * r);
+  return res <= tol * (1 - 1.0 / 1024) ? e : 0;
+}
+
 /* A first guess for s(t) = goal in [a, b]: the cubic Hermite interpolant
-** of s from its values 0, plen and slopes (the speeds) at the ends,
+** of s from its values 0, plen and slopes fa, fb (the speeds) at the ends,
 ** inverted by three Newton steps on u = (t - a)/(b - a) kept in (0, 1).
-** Three, not more: each is a division on the path to the answer, and
-** refine_guess() takes the guess much closer for the cost of one. */
+** Three, not more: each is a division on the path to the answer, and the
+** search's third-order step takes the guess much closer for the cost of
+** one. */
 #define HERMITE_STEPS 3
-static double hermite_guess(const arclen_hodo *h, double a, double b,
+static double hermite_guess(double a, double b, double fa, double fb,
                             double plen, double goal) {
-  double w = b - a, fa = w * arclen_hodo_speed(h, a);
-  double fb = w * arclen_hodo_speed(h, b), u = goal / plen;
+  double w = b - a, u = goal / plen;
   int it;
+  fa *= w;
+  fb *= w;
   for (it = 0; it < HERMITE_STEPS; it++) {
     double u2 = u * u, u3 = u2 * u;
     double s = plen * (3 * u2 - 2 * u3) + fa * (u - 2 * u2 + u3) +
@@ -81,30 +100,6 @@ static double hermite_guess(const arclen_hodo *h, double a, double b,
     u = next;
   }
   return a + w * u;
-}
-
-/* A better guess, no bound: s(t) from the piece's own rule r on the nearer
-** part of [a, b] (about as good as on the piece), then the third-order
-** step from it (series reversion).  The Hermite guess errs by up to ~1e-2
-** of the piece where a branch point stands near it; this step saves most
-** of the certified evaluations that would follow. */
-static double refine_guess(integrator *in, double a, double b, double plen,
-                           double goal, const arclen_gauss_rule *r,
-                           double t) {
-  double sg, f;
-  if (t - a <= b - t)
-    sg = arclen_apply_rule(&in->h, r, a + (t - a) / 2, (t - a) / 2) - goal;
-  else
-    sg = plen - arclen_apply_rule(&in->h, r, t + (b - t) / 2, (b - t) / 2) - goal;
-  f = arclen_hodo_speed(&in->h, t);
-  in->evals += r->n + 1;
-  if (f > 0) {
-    double d = -sg / f, f1, f2, e;
-    speed_slopes(&in->h, t, f, &f1, &f2);
-    e = d + reversion_tail(d, f, f1, f2);
-    if (t + e > a && t + e < b) return t + e;
-  }
-  return t;
 }
 
 /* The integral over [x, y] inside an accepted piece to within target
@@ -150,14 +145,42 @@ static double sub_integral(integrator *in, double x, double y, double target,
   return arclen_apply_rule(&in->h, r, c, h);
 }
 
-/* An accepted piece [a, b] (half-width hp), its length plen and rule r
-** (scaled units), and its Bernstein ellipse ebound (M and e for Cauchy's
-** estimates), shared by every search inside it. */
+
+/* s + e = a + b exactly (Knuth's TwoSum): a piece's s values are carried
+** from point to point, and the chain of many distances would otherwise
+** add a rounding per step. */
+static void two_sum(double a, double b, double *s, double *e) {
+  double x = a + b, bv = x - a, av = x - bv;
+  *s = x;
+  *e = (a - av) + (b - bv);
+}
+
+/* A point of the search whose s is known: s(t) - s(a) = s + sc (a
+** compensated pair), the speed f there (< 0: not taken yet) and, when
+** slopes, its derivatives f1, f2. */
+typedef struct known {
+  double t, s, sc, f, f1, f2;
+  int slopes;
+} known;
+
+/* The search inside an accepted piece [a, b] (half-width hp) of length
+** plen with rule r: its Bernstein ellipse ebound (M and e for Cauchy's
+** estimates) and the bracket of the sweep, lo (s <= the goal) and hi (s
+** above it, or the piece's end). */
 typedef struct piece_search {
-  double a, b, plen, hp;
+  double a, b, hp, plen;
   const arclen_gauss_rule *r;
   piece_bound ebound;
+  known lo, hi;
 } piece_search;
+
+static void set_known(known *k, double t, double s) {
+  k->t = t;
+  k->s = s;
+  k->sc = 0;
+  k->f = -1;
+  k->slopes = 0;
+}
 
 static void search_piece(integrator *in, piece_search *p, double a, double b,
                          double plen, const arclen_gauss_rule *r) {
@@ -167,91 +190,149 @@ static void search_piece(integrator *in, piece_search *p, double a, double b,
   p->hp = (b - a) / 2;
   p->r = r;
   arclen_bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &p->ebound);
-  in->evals += 2;
+  set_known(&p->lo, a, 0);
+  set_known(&p->hi, b, plen);
 }
 
-/* [lo, hi] holds the answer; slo, shi: s there, from the piece's start. */
-typedef struct bracket {
-  double lo, slo, hi, shi;
-} bracket;
-
-/* Safeguarded Newton for s(t) = goal from the guess t inside the bracket
-** (goal in [slo, shi]): s is increasing, so the bracket always holds the
-** answer, and a step leaving it is replaced by bisection.  s(t) is taken
-** from the nearer end of the bracket, whose s is known, plus the integral
-** between (sub_integral): near the answer these are short and need few
-** points.  The k-th such integral may err by share 2^-k, so the s values
-** known err by less than 2 share more than the bracket's did.  The bracket
-** is left holding the last points evaluated, for a search that follows. */
-static double newton_search(integrator *in, const piece_search *p,
-                            bracket *bk, double t, double goal, double tol,
-                            double share) {
-  double lo = bk->lo, hi = bk->hi, slo = bk->slo, shi = bk->shi;
-  int it;
-  if (t < lo || t > hi) t = lo + (hi - lo) / 2;   /* a guess from the piece */
-  for (it = 0; it < 100; it++) {
-    double g, f, next;
-    if (t - lo <= hi - t)
-      g = slo + sub_integral(in, lo, t, share, &p->ebound, p->hp, p->r) - goal;
-    else
-      g = shi - sub_integral(in, t, hi, share, &p->ebound, p->hp, p->r) - goal;
-    share /= 2;
-    f = arclen_hodo_speed(&in->h, t);
+static double speed_of(integrator *in, known *k) {
+  if (k->f < 0) {
+    k->f = arclen_hodo_speed(&in->h, k->t);
     in->evals++;
-    if (g < 0) {
-      lo = t;
-      slo = g + goal;
-    } else if (g > 0) {
-      hi = t;
-      shi = g + goal;
-    }
-    if (fabs(g) <= tol) break;
-    next = f > 0 ? t - g / f : lo + (hi - lo) / 2;
-    if (!(f > 0 && next > lo && next < hi)) {   /* a Newton step only */
-      next = lo + (hi - lo) / 2;
-    } else if (newton_certified(&p->ebound, p->hp, next - t, tol)) {
-      t = next;
-      break;
+  }
+  return k->f;
+}
+
+static void slopes_of(integrator *in, known *k) {
+  if (!k->slopes && k->f > 0) {
+    speed_slopes(&in->h, k->t, k->f, &k->f1, &k->f2);
+    k->slopes = 1;
+  }
+}
+
+/* s at t inside the bracket: from the nearer end whose s is known, plus
+** the integral between to within share (sub_integral; near the answer it
+** is short and needs few points), and the speed there. */
+static void eval_at(integrator *in, const piece_search *p, double t,
+                    double share, known *k) {
+  double e;
+  if (t - p->lo.t > p->hi.t - t) {
+    two_sum(p->hi.s, -sub_integral(in, t, p->hi.t, share, &p->ebound, p->hp, p->r),
+            &k->s, &e);
+    k->sc = p->hi.sc + e;
+  } else {
+    two_sum(p->lo.s, sub_integral(in, p->lo.t, t, share, &p->ebound, p->hp, p->r),
+            &k->s, &e);
+    k->sc = p->lo.sc + e;
+  }
+  k->t = t;
+  k->f = -1;
+  k->slopes = 0;
+  speed_of(in, k);
+}
+
+/* Safeguarded Newton for s(t) = goal from the guess t inside the bracket:
+** s is increasing, so the bracket always holds the answer, and a step
+** leaving it is replaced by bisection.  The k-th integral may err by share
+** 2^-k, so the s values known err by less than 2 share more than the
+** bracket's did.  The bracket is left holding the last points evaluated,
+** for the next distance. */
+static double newton_search(integrator *in, piece_search *p, double t,
+                            double goal, double tol, double share) {
+  int it;
+  if (!(t > p->lo.t && t < p->hi.t))   /* a guess from outside: the middle */
+    t = p->lo.t + (p->hi.t - p->lo.t) / 2;
+  for (it = 0; it < 100; it++) {
+    known k, *kp;
+    double g, next, d, e, e3, lo, hi;
+    eval_at(in, p, t, share, &k);
+    share /= 2;
+    g = (k.s - goal) + k.sc;
+    if (g <= 0) {
+      p->lo = k;
+      kp = &p->lo;
     } else {
-      double f1, f2, e, d = -g / f, e3;
-      speed_slopes(&in->h, t, f, &f1, &f2);
-      e = second_order_step(&p->ebound, p->hp, d, f, f1, tol);
-      if (e != 0 && t + e > lo && t + e < hi) {
-        t = t + e;
-        break;
-      }
-      /* not certified: the next point from the third-order step (series
-      ** reversion, as refine_guess), nearer than Newton's for the same
-      ** slopes */
-      e3 = d + reversion_tail(d, f, f1, f2);
-      if (t + e3 > lo && t + e3 < hi) next = t + e3;
+      p->hi = k;
+      kp = &p->hi;
     }
-    if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) break;
+    if (fabs(g) <= tol) return t;
+    lo = p->lo.t;
+    hi = p->hi.t;
+    next = lo + (hi - lo) / 2;
+    if (kp->f > 0) {
+      d = -g / kp->f;
+      if (t + d > lo && t + d < hi) {
+        if (newton_certified(&p->ebound, p->hp, d, tol)) return t + d;
+        slopes_of(in, kp);
+        e = second_order_step(&p->ebound, p->hp, d, kp->f, kp->f1, tol);
+        if (e != 0 && t + e > lo && t + e < hi) return t + e;
+        e3 = third_order_step(&p->ebound, p->hp, d, kp->f, kp->f1, kp->f2, tol);
+        if (e3 != 0 && t + e3 > lo && t + e3 < hi) return t + e3;
+        /* not certified: the next point from the third-order step (series
+        ** reversion), nearer than Newton's for the same slopes */
+        e3 = d + reversion_tail(d, kp->f, kp->f1, kp->f2);
+        next = t + e3 > lo && t + e3 < hi ? t + e3 : t + d;
+      }
+    }
+    if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) return t;
     t = next;
   }
-  bk->lo = lo;
-  bk->slo = slo;
-  bk->hi = hi;
-  bk->shi = shi;
   return t;
 }
 
-/* s(t) = goal inside the accepted piece [a, b] of length plen (goal in
-** [0, plen]): the Hermite guess, refined, then the Newton search with the
-** whole piece as its bracket and half of tol for its integrals. */
-static double solve_in_piece(integrator *in, double a, double b, double plen,
-                             double goal, double tol,
-                             const arclen_gauss_rule *r) {
-  piece_search p;
-  bracket bk;
-  double t = hermite_guess(&in->h, a, b, plen, goal);
-  search_piece(in, &p, a, b, plen, r);
-  t = refine_guess(in, a, b, plen, goal, r, t);
-  bk.lo = a;
-  bk.slo = 0;
-  bk.hi = b;
-  bk.shi = plen;
-  return newton_search(in, &p, &bk, t, goal, tol, tol / 2);
+/* A better guess, no bound: s(t) from the piece's own rule r on the nearer
+** part of the bracket (about as good as on the piece), then the third-order
+** step from it (series reversion).  The Hermite guess errs by up to ~1e-2
+** of the piece where a branch point stands near it; this step takes it
+** within reach of the certificates for a rule without its bound. */
+static double refine_guess(integrator *in, const piece_search *p, double t,
+                           double goal) {
+  double sg, f, lo = p->lo.t, hi = p->hi.t;
+  if (t - lo <= hi - t)
+    sg = (p->lo.s - goal) + p->lo.sc +
+         arclen_apply_rule(&in->h, p->r, lo + (t - lo) / 2, (t - lo) / 2);
+  else
+    sg = (p->hi.s - goal) + p->hi.sc -
+         arclen_apply_rule(&in->h, p->r, t + (hi - t) / 2, (hi - t) / 2);
+  f = arclen_hodo_speed(&in->h, t);
+  in->evals += p->r->n + 1;
+  if (f > 0) {
+    double d = -sg / f, f1, f2, e;
+    speed_slopes(&in->h, t, f, &f1, &f2);
+    e = d + reversion_tail(d, f, f1, f2);
+    if (t + e > lo && t + e < hi) return t + e;
+  }
+  return t;
+}
+
+/* s(t) = goal in the piece (goal in [0, plen]): the bracket moved up
+** past a goal beyond hi, then
+** the guess -- the third-order step from lo once lo is inside the piece
+** (a sweep's next distance: its speed and slopes are known), else the
+** Hermite guess on the bracket -- and the Newton search from it. */
+static double solve_goal(integrator *in, piece_search *p, double goal,
+                         double tol, double share) {
+  double t = -1;
+  if (goal >= p->hi.s + p->hi.sc && p->hi.t < p->b) {
+    p->lo = p->hi;                     /* the last search ended above */
+    set_known(&p->hi, p->b, p->plen);
+  }
+  if (goal >= p->plen) return p->b;    /* on the last piece: s >= L */
+  if (p->lo.t > p->a) {
+    known *lo = &p->lo;
+    slopes_of(in, lo);
+    if (lo->slopes) {
+      double d = (goal - lo->s - lo->sc) / lo->f;
+      t = lo->t + d + reversion_tail(d, lo->f, lo->f1, lo->f2);
+    }
+  }
+  if (!(t > p->lo.t && t < p->hi.t)) {
+    double span = p->hi.s - p->lo.s + (p->hi.sc - p->lo.sc);
+    t = hermite_guess(p->lo.t, p->hi.t, speed_of(in, &p->lo),
+                      speed_of(in, &p->hi), span,
+                      goal - p->lo.s - p->lo.sc);
+    t = refine_guess(in, p, t, goal);
+  }
+  return newton_search(in, p, t, goal, tol, share);
 }
 
 /* time cuts at the feet within 0.2 of the width, more than the length
@@ -260,95 +341,45 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
 ** of a bound, a rule and a division (doc/benchmarks.md: the shares tried). */
 #define TIME_FOOTCUT 0.2
 
-/* time's common case, as arclen_integ_integrate() takes it: the first pieces' orders
-** straight from the branch points (arclen_cut_orders), then their rules in
-** increasing t up to the piece that holds the goal.  The first piece's
-** order comes alone, the others' only when the goal lies past it: at L/2
-** a third of the orders went to pieces never reached.  Returns 0 when
-** those orders are not to be had (a piece to cut, a real or far root):
-** the caller then takes the stack, whose pieces and rules before the
-** goal are the same, so the answer does not depend on where it failed. */
-static int time_first_pieces(integrator *in, double goal, double *t) {
-  double c[ARCLEN_CUT_PIECES], half_width[ARCLEN_CUT_PIECES], cum = 0;
-  int n[ARCLEN_CUT_PIECES], i;
-  arclen_integ_first_pieces(in, c, half_width);
-  if (!arclen_integ_orders_of(in, 0, 1, c, half_width, n)) return 0;
-  for (i = 0; i <= in->nmin; i++) {
-    if (i == 1 && !arclen_integ_orders_of(in, 1, in->nmin + 1, c, half_width, n))
-      return 0;
-    const arclen_gauss_rule *r = arclen_rule_at_least(n[i]);
-    double piece = arclen_apply_rule(&in->h, r, c[i], half_width[i]);
-    in->evals += r->n;
-    in->pieces++;
-    if (cum + piece >= goal) {
-      if (i == in->nmin && goal >= cum + piece) return 1;   /* t = 1 */
-      *t = solve_in_piece(in, arclen_first_from(in, i), arclen_first_to(in, i), piece,
-                          goal - cum, in->rtol * in->len_lower, r);
-      return 1;
-    }
-    cum += piece;
-  }
-  return 1;                            /* s >= L: t = 1 */
-}
-
-int arclen_time_gauss(const double *c, int dim, double s,
-                      const arclen_opts *o, double *t, arclen_info *info) {
-  integrator in;
-  double cum = 0, pa, pbound, piece, goal;
-  const arclen_gauss_rule *r;
-  int e;
-  e = arclen_integ_check_args(c, dim, o->rtol, 0, 1);   /* time ignores o->t0, t1 */
-  *t = NAN;
-  if (info) arclen_info_init(info);
-  if (e) return e;
-  if (isnan(s)) return ARCLEN_EINVAL;
-  if (s <= 0) { *t = 0; return ARCLEN_OK; }
-  if (!arclen_integ_start(&in, c, dim, 0, 1, o->rtol * 0.25, TIME_FOOTCUT)) {
-    *t = 1;              /* a point: every s > 0 is past its end */
-    return ARCLEN_OK;
-  }
-  in.want_err = info != NULL;
-  goal = ldexp(s, -in.h.exp);
-  *t = 1;
-  if (!in.want_err && time_first_pieces(&in, goal, t)) {
-    arclen_integ_fill_info(info, &in, in.h.exp);
-    return ARCLEN_OK;
-  }
-  arclen_integ_prepare_bounds(&in);
-  arclen_integ_push_initial(&in);
-  while (arclen_integ_next_piece(&in, &pa, &pbound, &piece, &r)) {
-    if (cum + piece >= goal) {
-      if (in.top == 0 && goal >= cum + piece) break;   /* s >= L: t = 1 */
-      *t = solve_in_piece(&in, pa, pbound, piece, goal - cum,
-                          o->rtol * 0.25 * in.len_lower, r);
-      break;
-    }
-    cum += piece;
-  }
-  arclen_integ_fill_info(info, &in, in.h.exp);
-  return ARCLEN_OK;
-}
-
 /* The pieces of the integral in increasing t: the first pieces with their
-** orders straight from the branch points when those are to be had (as
-** time_first_pieces), else the integrator's stack (as arclen_time_gauss). */
+** orders straight from the branch points when those are to be had (the
+** first piece's order alone, the others' only when a distance lies past
+** it), else the integrator's stack, whose pieces and rules are the same
+** (spec/fastpath_spec.lua), so that the answer does not depend on which
+** path gave them. */
 typedef struct piece_walk {
   int fast, k;
   double c[ARCLEN_CUT_PIECES], half_width[ARCLEN_CUT_PIECES];
   int n[ARCLEN_CUT_PIECES];
 } piece_walk;
 
+static void walk_start(integrator *in, piece_walk *w) {
+  w->k = 0;
+  arclen_integ_first_pieces(in, w->c, w->half_width);
+  w->fast = !in->want_err && arclen_integ_orders_of(in, 0, 1, w->c, w->half_width, w->n);
+  if (!w->fast) {
+    arclen_integ_prepare_bounds(in);
+    arclen_integ_push_initial(in, 0);
+  }
+}
+
 static int walk_next(integrator *in, piece_walk *w, double *a, double *b,
                      double *len, const arclen_gauss_rule **r, int *last) {
+  if (w->fast && w->k == 1 &&
+      !arclen_integ_orders_of(in, 1, in->nmin + 1, w->c, w->half_width, w->n)) {
+    w->fast = 0;                       /* the rest by the stack */
+    arclen_integ_prepare_bounds(in);
+    arclen_integ_push_initial(in, 1);
+  }
   if (w->fast) {
     if (w->k > in->nmin) return 0;
     *r = arclen_rule_at_least(w->n[w->k]);
-    *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->half_width[w->k]);
     *a = arclen_first_from(in, w->k);
     *b = arclen_first_to(in, w->k);
+    *last = w->k == in->nmin;
+    *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->half_width[w->k]);
     in->evals += (*r)->n;
     in->pieces++;
-    *last = w->k == in->nmin;
     w->k++;
     return 1;
   }
@@ -357,43 +388,71 @@ static int walk_next(integrator *in, piece_walk *w, double *a, double *b,
   return 1;
 }
 
-#define CHAIN 16
-
-/* A later distance in the same piece: the search starts from the bracket
-** the previous one left (its lower end lo, where s is slo < goal), with
-** the third-order step from lo as its guess (series reversion, as in
-** refine_guess), so its integrals are short. */
-static double chained_guess(const integrator *in, const bracket *bk,
-                            double goal) {
-  double f = arclen_hodo_speed(&in->h, bk->lo), t;
-  if (f > 0) {
-    double d = (goal - bk->slo) / f, f1, f2;
-    speed_slopes(&in->h, bk->lo, f, &f1, &f2);
-    t = bk->lo + d + reversion_tail(d, f, f1, f2);
-    if (t > bk->lo && t < bk->hi) return t;
-  }
-  return bk->lo + (bk->hi - bk->lo) / 2;
-}
-
-/* The distances s[i..] that the piece of length plen starting at cum
-** holds (as arclen_time_gauss decides it: s <= cum + plen, and on the last
-** piece not s >= cum + plen, which is t = 1), each s scaled by 2^-exp. */
+/* The distances s[i..] (scaled by 2^-exp) that the piece of length plen
+** starting at cum holds: s <= cum + plen, and every one on the last. */
 static long goals_in_piece(const double *s, long i, long n, int exp,
                            double cum, double plen, int last) {
   long j = i;
-  while (j < n) {
-    double g = ldexp(s[j], exp);
-    if (!(cum + plen >= g) || (last && g >= cum + plen)) break;
-    j++;
-  }
+  while (j < n && (last || arclen_times_pow2(s[j], exp) <= cum + plen)) j++;
   return j - i;
+}
+
+/* The sweep: t[i] for the ascending s[i] > 0 (i < n; t preset to 1), the
+** pieces in increasing t, each holding a run of distances searched one
+** after the other from where the last search ended.  The distances of a
+** piece share its tolerance: each one's integrals err by tol / m in all (m
+** distances in the piece), so that every s value known errs by less than
+** tol, as one search's do; the compensated sums keep their rounding to
+** one.  The Newton certificate takes tol on top. */
+static void sweep(const double *c, int dim, const double *s, long n,
+                  double rtol, double *t, arclen_info *info) {
+  integrator in;
+  piece_walk w;
+  piece_search p;
+  double cum = 0, tol, pa, pb, plen;
+  const arclen_gauss_rule *r;
+  long i = 0, m, q;
+  int last = 0;
+  if (!arclen_integ_start(&in, c, dim, 0, 1, rtol * 0.25, TIME_FOOTCUT)) {
+    if (info) arclen_integ_fill_info(info, &in, in.h.exp);
+    return;                            /* a point: every s > 0 is past it */
+  }
+  in.want_err = info != NULL;
+  walk_start(&in, &w);
+  tol = in.rtol * in.len_lower;
+  while (i < n && !last && walk_next(&in, &w, &pa, &pb, &plen, &r, &last)) {
+    m = goals_in_piece(s, i, n, -in.h.exp, cum, plen, last);
+    if (m > 0) {
+      double share = tol / (double)m / 2;
+      search_piece(&in, &p, pa, pb, plen, r);
+      for (q = 0; q < m; q++, i++) {
+        if (q > 0 && s[i] == s[i - 1])
+          t[i] = t[i - 1];
+        else
+          t[i] = solve_goal(&in, &p, arclen_times_pow2(s[i], -in.h.exp) - cum,
+                            tol, share);
+      }
+    }
+    cum += plen;
+  }
+  arclen_integ_fill_info(info, &in, in.h.exp);
+}
+
+int arclen_time_gauss(const double *c, int dim, double s,
+                      const arclen_opts *o, double *t, arclen_info *info) {
+  int e = arclen_integ_check_args(c, dim, o->rtol, 0, 1);   /* time ignores o->t0, t1 */
+  *t = NAN;
+  if (info) arclen_info_init(info);
+  if (e) return e;
+  if (isnan(s)) return ARCLEN_EINVAL;
+  if (s <= 0) { *t = 0; return ARCLEN_OK; }
+  *t = 1;
+  sweep(c, dim, &s, 1, o->rtol, t, info);
+  return ARCLEN_OK;
 }
 
 int arclen_times(const double *c, int dim, const double *s, long n,
                  double rtol, double *t, double *pts, double *tan) {
-  integrator in;
-  piece_walk w;
-  double cum = 0, tol;
   long i, j;
   int e = arclen_integ_check_args(c, dim, rtol, 0, 1);
   if (!e && n < 0) e = ARCLEN_EDOMAIN;
@@ -407,59 +466,7 @@ int arclen_times(const double *c, int dim, const double *s, long n,
   }
   for (i = 0; i < n && s[i] <= 0; i++) t[i] = 0;
   for (j = i; j < n; j++) t[j] = 1;
-  if (i < n && arclen_integ_start(&in, c, dim, 0, 1, rtol * 0.25,
-                                  TIME_FOOTCUT)) {
-    w.fast = arclen_integ_first_orders(&in, w.c, w.half_width, w.n);
-    w.k = 0;
-    if (!w.fast) {
-      arclen_integ_prepare_bounds(&in);
-      arclen_integ_push_initial(&in);
-    }
-    tol = in.rtol * in.len_lower;
-    while (i < n) {
-      double pa, pbound, plen;
-      const arclen_gauss_rule *r;
-      int last;
-      long m, q;
-      piece_search p;
-      bracket bk;
-      if (!walk_next(&in, &w, &pa, &pbound, &plen, &r, &last)) break;
-      m = goals_in_piece(s, i, n, -in.h.exp, cum, plen, last);
-      if (m > 0) {
-        /* A chain of searches, each from the bracket the last one left,
-        ** carries its s values on: CHAIN goals at most (then the piece's
-        ** ends again), each whose integrals err by tol / CHAIN in all, so
-        ** that the s values err by less than tol, as one search's do, and
-        ** the chain's roundings stay within CHAIN additions. */
-        double budget = tol / (double)(m < CHAIN ? m : CHAIN);
-        search_piece(&in, &p, pa, pbound, plen, r);
-        for (q = 0; q < m; q++, i++) {
-          double goal = ldexp(s[i], -in.h.exp) - cum, guess;
-          if (q > 0 && s[i] == s[i - 1]) {
-            t[i] = t[i - 1];
-            continue;
-          }
-          if (q % CHAIN == 0 || goal >= bk.shi) {   /* the piece's end */
-            bk.hi = pbound;
-            bk.shi = plen;
-          }
-          if (q % CHAIN == 0) {
-            bk.lo = pa;
-            bk.slo = 0;
-          }
-          if (bk.lo == pa) {
-            guess = refine_guess(&in, pa, pbound, plen, goal, r,
-                                 hermite_guess(&in.h, pa, pbound, plen, goal));
-          } else {
-            guess = chained_guess(&in, &bk, goal);
-          }
-          t[i] = newton_search(&in, &p, &bk, guess, goal, tol, budget / 2);
-        }
-      }
-      if (last) break;
-      cum += plen;
-    }
-  }
+  if (i < n) sweep(c, dim, s + i, n - i, rtol, t + i, NULL);
   /* ascending, as the distances: each t within tol L of its truth, so a t
   ** below the one before it may take that one's place and stay within */
   for (i = 1; i < n; i++)
