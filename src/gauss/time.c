@@ -102,8 +102,44 @@ static double hermite_guess(double a, double b, double fa, double fb,
   return a + w * u;
 }
 
+/* The order for [c - h, c + h] from its own distance to the branch
+** points: no branch point lies within dist of the segment (dist, a lower
+** bound of the nearest one's distance, the larger of its offsets along and
+** across), so the Bernstein ellipse of semi-minor axis b = 0.9 dist, which
+** lies within b of the segment, holds none; on it |w - c| <= A = sqrt(h^2
+** + b^2), its semi-major axis, so |f| <= M = sqrt(lead2) prod (|c - re_k|
+** + im_k + A) over the pairs (as arclen_bound_piece); rho = (A + b)/h and
+** rho^2 - 1 = 2 b (A + b)/h^2.  The ellipse bound (integrator.h's head)
+** then sets the order, a few operations where the piece's ellipse sees
+** only the branch point nearest to the piece: a tenth of a piece away from
+** it takes a third of the points.  0 when no order up to the tables' does
+** (a real root inside, or too near). */
+static int stadium_order(const integrator *in, double c, double h,
+                         double target) {
+  const arclen_branch *br = &in->br;
+  double dist = 32 * h, prod, b, A, lr, nn;
+  int k;
+  for (k = 0; k < br->n; k += 2) {
+    double dx = fabs(br->re[k] - c) - h, dk = dx > br->im[k] ? dx : br->im[k];
+    dist = dk < dist ? dk : dist;
+  }
+  if (!(dist > 0)) return 0;
+  b = 0.9 * dist;
+  A = sqrt(h * h + b * b);
+  /* h (64/15) M / (target (rho^2 - 1)) but for sqrt(lead2), whose log2
+  ** lead_log bounds from above (it carries the factor 4/pi > 1 too) */
+  prod = h * h * h * (64.0 / 15.0) / (target * 2 * b * (A + b));
+  for (k = 0; k < br->n; k += 2) prod *= fabs(br->re[k] - c) + br->im[k] + A;
+  lr = arclen_rough_log2((A + b) / h) - ARCLEN_LOG2_ERR;
+  if (!(prod > 0 && prod < 1e300 && lr > 0)) return 0;   /* the other bounds */
+  nn = 1 + (arclen_rough_log2(prod) + in->lead_log + ARCLEN_LOG2_ERR) / (2 * lr);
+  return nn <= 2 ? 2 : nn < ARCLEN_GAUSS_MAX ? (int)ceil(nn) : 0;
+}
+
 /* The integral over [x, y] inside an accepted piece to within target
-** (scaled units).  The piece's Bernstein ellipse (ebound, half-width hp) holds
+** (scaled units).  Its order from its own distance to the branch points
+** (stadium_order); where that fails (a root too near), the piece's
+** Bernstein ellipse (ebound, half-width hp) holds
 ** the disc of radius r = hp (a_semi - 1) about every point of the piece
 ** (disc_radius), so a short [x, y] of half-width h has the
 ** ellipse of semi-minor axis r inside it, rho = r/h + sqrt(1 + (r/h)^2),
@@ -117,7 +153,8 @@ static double sub_integral(integrator *in, double x, double y, double target,
   double rad = disc_radius(ebound, hp);
   int n = 0;
   if (!(h > 0)) return 0;
-  if (h < rad / 2) {
+  n = stadium_order(in, c, h, target);
+  if (!n && h < rad / 2) {
     double beta = rad / h, rho = beta + sqrt(1 + beta * beta);
     double lnum = arclen_rough_log2(h * (64.0 / 15.0) * ebound->m / target) -
                   arclen_rough_log2(rho * rho - 1) + 2 * ARCLEN_LOG2_ERR;
@@ -279,22 +316,31 @@ static double newton_search(integrator *in, piece_search *p, double t,
   return t;
 }
 
-/* A better guess, no bound: s(t) from the piece's own rule r on the nearer
-** part of the bracket (about as good as on the piece), then the third-order
-** step from it (series reversion).  The Hermite guess errs by up to ~1e-2
-** of the piece where a branch point stands near it; this step takes it
-** within reach of the certificates for a rule without its bound. */
+/* The refined guess's order: a third of the piece's, for about a third
+** of its digits (the certificates then need the guess within ~1e-5 of the
+** piece; fewer points left more searches a second certified integral);
+** short rules whole, which keeps a straight piece's times exact. */
+static int refine_order(int n) {
+  return n < 6 ? n : (n + 1) / 3;
+}
+
+/* A better guess, no bound: s(t) from a rule of refine_order on the
+** nearer part of the bracket, then the third-order step from it (series
+** reversion).  The Hermite guess errs by up to ~1e-2 of the piece where a
+** branch point stands near it; this step takes it within reach of the
+** certificates for a rule without its bound. */
 static double refine_guess(integrator *in, const piece_search *p, double t,
                            double goal) {
   double sg, f, lo = p->lo.t, hi = p->hi.t;
+  const arclen_gauss_rule *r = arclen_rule_at_least(refine_order(p->r->n));
   if (t - lo <= hi - t)
     sg = (p->lo.s - goal) + p->lo.sc +
-         arclen_apply_rule(&in->h, p->r, lo + (t - lo) / 2, (t - lo) / 2);
+         arclen_apply_rule(&in->h, r, lo + (t - lo) / 2, (t - lo) / 2);
   else
     sg = (p->hi.s - goal) + p->hi.sc -
-         arclen_apply_rule(&in->h, p->r, t + (hi - t) / 2, (hi - t) / 2);
+         arclen_apply_rule(&in->h, r, t + (hi - t) / 2, (hi - t) / 2);
   f = arclen_hodo_speed(&in->h, t);
-  in->evals += p->r->n + 1;
+  in->evals += r->n + 1;
   if (f > 0) {
     double d = -sg / f, f1, f2, e;
     speed_slopes(&in->h, t, f, &f1, &f2);
