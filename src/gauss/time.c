@@ -5,20 +5,41 @@
 */
 #include "gauss/integrator.h"
 
+/* Cauchy's estimates near t: f is analytic within r of [t - D, t + D]
+** with |f| <= m there, so that |f^(k)| <= k! m / r^k on [t - D, t + D].
+** No branch point lies within dist of the segment (dist, a lower bound of
+** the nearest one's distance, the larger of its offsets along and across);
+** r = 0.9 dist, and every point within r of the segment is within D + r of
+** t, so |f| <= sqrt(lead2) prod (|t - re_k| + im_k + D + r) over the pairs
+** (as arclen_bound_piece).  A few operations, where the piece's Bernstein
+** ellipse (arclen_bound_piece) took square roots and sees only the branch
+** point nearest to the piece; ok 0 where a root is too near. */
+typedef struct cauchy {
+  double m, r, D;
+  int ok;
+} cauchy;
+
+static void cauchy_near(const arclen_branch *br, double sqlead, double t,
+                        double D, cauchy *cb) {
+  double dist = 1, m = sqlead;
+  int k;
+  for (k = 0; k < br->n; k += 2) {
+    double dx = fabs(br->re[k] - t) - D, dk = dx > br->im[k] ? dx : br->im[k];
+    dist = dk < dist ? dk : dist;
+  }
+  cb->D = D;
+  cb->r = 0.9 * dist;
+  for (k = 0; k < br->n; k += 2) m *= fabs(br->re[k] - t) + br->im[k] + D + cb->r;
+  cb->m = m;
+  cb->ok = dist > 0 && m < 1e300;
+}
+
 /* Whether a Newton step d from t (d = -g/f) lands within tol of the goal
 ** without evaluating there: s(t + d) - goal = g + f d + R = R (up to the
 ** rule error of g, which the tolerance's other half covers), and Taylor
-** gives |R| <= max |f'| d^2 / 2.  On the piece f is analytic inside its
-** Bernstein ellipse with |f| <= M, which holds a disc of radius
-** r = a_semi - 1 = e / (sqrt(1 + e) + 1) (times half_width) about every point of
-** the piece, so |f'| <= M / r (Cauchy's estimate). */
-static double disc_radius(const piece_bound *pbound, double half_width) {
-  return half_width * pbound->e / (sqrt(1 + pbound->e) + 1);
-}
-
-static int newton_certified(const piece_bound *pbound, double half_width, double d,
-                            double tol) {
-  return pbound->m * d * d <= 2 * tol * disc_radius(pbound, half_width);
+** gives |R| <= max |f'| d^2 / 2 with |f'| <= m / r. */
+static int newton_certified(const cauchy *cb, double d, double tol) {
+  return cb->ok && fabs(d) <= cb->D && cb->m * d * d <= 2 * tol * cb->r;
 }
 
 /* The speed's first and second derivatives at t, where it is f > 0:
@@ -47,33 +68,32 @@ static double reversion_tail(double d, double f, double f1, double f2) {
 /* The step to the root of the Taylor polynomial of second order, from the
 ** Newton step d = -g/f and the slope f1 of the speed: e = d - c with c =
 ** f1 d^2 / (2 f) makes g + f e + f1 e^2 / 2 = (f1 / 2) c (c - 2 d), and
-** the remainder is at most max |f''| |e|^3 / 6 with |f''| <= 2 M / r^2
-** (Cauchy, as for newton_certified).  Returns e when the two are within
-** tol (1/1024 of it kept for rounding), else 0 (e = 0 means g = 0, which
-** the caller has taken already). */
-static double second_order_step(const piece_bound *pbound, double half_width, double d,
-                                double f, double f1, double tol) {
-  double r = disc_radius(pbound, half_width), c = f1 * d * d / (2 * f), e = d - c;
+** the remainder is at most max |f''| |e|^3 / 6 with |f''| <= 2 m / r^2
+** (cauchy).  Returns e when the two are within tol (1/1024 of it kept for
+** rounding), else 0 (e = 0 means g = 0, which the caller has taken
+** already). */
+static double second_order_step(const cauchy *cb, double d, double f,
+                                double f1, double tol) {
+  double r = cb->r, c = f1 * d * d / (2 * f), e = d - c;
   double res = fabs(f1 / 2 * c * (c - 2 * d)) +
-               pbound->m * fabs(e * e * e) / (3 * r * r);
-  return res <= tol * (1 - 1.0 / 1024) ? e : 0;
+               cb->m * fabs(e * e * e) / (3 * r * r);
+  return cb->ok && fabs(e) <= cb->D && res <= tol * (1 - 1.0 / 1024) ? e : 0;
 }
 
 /* The third-order step e = d + reversion_tail (the root of the Taylor
 ** polynomial of third order, to its own third order) when it is within
 ** tol: with g = -f d the polynomial's value there is f (e - d) + e^2 (f1/2
 ** + e f2/6), and the remainder is at most max |f'''| e^4 / 24 with |f'''|
-** <= 6 M / r^3 (Cauchy, as for newton_certified).  A sweep's chained guess
-** errs by ~1e-5 of the piece, whose Newton step this certifies where the
-** second-order one does not; 0 when not within tol. */
-static double third_order_step(const piece_bound *pbound, double half_width,
-                               double d, double f, double f1, double f2,
-                               double tol) {
-  double r = disc_radius(pbound, half_width), tail = reversion_tail(d, f, f1, f2);
+** <= 6 m / r^3 (cauchy).  A sweep's chained guess errs by ~1e-5 of the
+** piece, whose Newton step this certifies where the second-order one does
+** not; 0 when not within tol. */
+static double third_order_step(const cauchy *cb, double d, double f,
+                               double f1, double f2, double tol) {
+  double r = cb->r, tail = reversion_tail(d, f, f1, f2);
   double e = d + tail, e2 = e * e;
   double res = fabs(f * tail + e2 * (f1 / 2 + e * f2 / 6)) +
-               pbound->m * (e2 * e2) / (4 * r * r * r);
-  return res <= tol * (1 - 1.0 / 1024) ? e : 0;
+               cb->m * (e2 * e2) / (4 * r * r * r);
+  return cb->ok && fabs(e) <= cb->D && res <= tol * (1 - 1.0 / 1024) ? e : 0;
 }
 
 /* A first guess for s(t) = goal in [a, b]: the cubic Hermite interpolant
@@ -100,6 +120,13 @@ static double hermite_guess(double a, double b, double fa, double fb,
     u = next;
   }
   return a + w * u;
+}
+
+/* The piece's Bernstein ellipse holds a disc of radius r = a_semi - 1 =
+** e / (sqrt(1 + e) + 1) (times half_width) about every point of the
+** piece, where |f| <= M. */
+static double disc_radius(const piece_bound *pbound, double half_width) {
+  return half_width * pbound->e / (sqrt(1 + pbound->e) + 1);
 }
 
 /* The order for [c - h, c + h] from its own distance to the branch
@@ -147,13 +174,16 @@ static int stadium_order(const integrator *in, double c, double h,
 ** rho sets its order, for a few operations.  A longer one takes its own
 ** branch-cut bound, or the piece's rule r when that is not at hand. */
 static double sub_integral(integrator *in, double x, double y, double target,
-                           const piece_bound *ebound, double hp,
-                           const arclen_gauss_rule *r) {
-  double c = x + (y - x) / 2, h = (y - x) / 2;
-  double rad = disc_radius(ebound, hp);
+                           double pa, double pb, const arclen_gauss_rule *r) {
+  double c = x + (y - x) / 2, h = (y - x) / 2, hp = (pb - pa) / 2, rad = 0;
+  piece_bound eb, *ebound = &eb;
   int n = 0;
   if (!(h > 0)) return 0;
   n = stadium_order(in, c, h, target);
+  if (!n) {
+    arclen_bound_piece(&in->br, pa + hp, hp, ebound);
+    rad = disc_radius(ebound, hp);
+  }
   if (!n && h < rad / 2) {
     double beta = rad / h, rho = beta + sqrt(1 + beta * beta);
     double lnum = arclen_rough_log2(h * (64.0 / 15.0) * ebound->m / target) -
@@ -201,13 +231,11 @@ typedef struct known {
 } known;
 
 /* The search inside an accepted piece [a, b] (half-width hp) of length
-** plen with rule r: its Bernstein ellipse ebound (M and e for Cauchy's
-** estimates) and the bracket of the sweep, lo (s <= the goal) and hi (s
-** above it, or the piece's end). */
+** plen with rule r: the bracket of the sweep, lo (s <= the goal) and hi (s
+** above it, or the piece's end), and sqrt(lead2) for cauchy_near. */
 typedef struct piece_search {
-  double a, b, hp, plen;
+  double a, b, hp, plen, sqlead;
   const arclen_gauss_rule *r;
-  piece_bound ebound;
   known lo, hi;
 } piece_search;
 
@@ -226,7 +254,7 @@ static void search_piece(integrator *in, piece_search *p, double a, double b,
   p->plen = plen;
   p->hp = (b - a) / 2;
   p->r = r;
-  arclen_bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &p->ebound);
+  p->sqlead = sqrt(in->br.lead2);
   set_known(&p->lo, a, 0);
   set_known(&p->hi, b, plen);
 }
@@ -253,11 +281,11 @@ static void eval_at(integrator *in, const piece_search *p, double t,
                     double share, known *k) {
   double e;
   if (t - p->lo.t > p->hi.t - t) {
-    two_sum(p->hi.s, -sub_integral(in, t, p->hi.t, share, &p->ebound, p->hp, p->r),
+    two_sum(p->hi.s, -sub_integral(in, t, p->hi.t, share, p->a, p->b, p->r),
             &k->s, &e);
     k->sc = p->hi.sc + e;
   } else {
-    two_sum(p->lo.s, sub_integral(in, p->lo.t, t, share, &p->ebound, p->hp, p->r),
+    two_sum(p->lo.s, sub_integral(in, p->lo.t, t, share, p->a, p->b, p->r),
             &k->s, &e);
     k->sc = p->lo.sc + e;
   }
@@ -298,11 +326,13 @@ static double newton_search(integrator *in, piece_search *p, double t,
     if (kp->f > 0) {
       d = -g / kp->f;
       if (t + d > lo && t + d < hi) {
-        if (newton_certified(&p->ebound, p->hp, d, tol)) return t + d;
+        cauchy cb;
+        cauchy_near(&in->br, p->sqlead, t, 2 * fabs(d), &cb);
+        if (newton_certified(&cb, d, tol)) return t + d;
         slopes_of(in, kp);
-        e = second_order_step(&p->ebound, p->hp, d, kp->f, kp->f1, tol);
+        e = second_order_step(&cb, d, kp->f, kp->f1, tol);
         if (e != 0 && t + e > lo && t + e < hi) return t + e;
-        e3 = third_order_step(&p->ebound, p->hp, d, kp->f, kp->f1, kp->f2, tol);
+        e3 = third_order_step(&cb, d, kp->f, kp->f1, kp->f2, tol);
         if (e3 != 0 && t + e3 > lo && t + e3 < hi) return t + e3;
         /* not certified: the next point from the third-order step (series
         ** reversion), nearer than Newton's for the same slopes */
