@@ -42,9 +42,10 @@ static int newton_certified(const cauchy *cb, double d, double tol) {
   return cb->ok && fabs(d) <= cb->D && cb->m * d * d <= 2 * tol * cb->r;
 }
 
-/* The speed's first and second derivatives at t, where it is f > 0:
+/* The speed's first and second derivatives at t, where it is f > 0 (inv
+** = 1/f: one division on the search's chain, not one per use):
 ** f1 = (z' . z'')/f and f2 = (|z''|^2 + z' . z''' - f1^2)/f. */
-static void speed_slopes(const arclen_hodo *h, double t, double f,
+static void speed_slopes(const arclen_hodo *h, double t, double inv,
                          double *f1, double *f2) {
   double p = 0, q = 0;
   int k;
@@ -54,15 +55,16 @@ static void speed_slopes(const arclen_hodo *h, double t, double f,
     p += v * v1;
     q += v1 * v1 + v * 2 * h->a2[k];
   }
-  *f1 = p / f;
-  *f2 = (q - *f1 * *f1) / f;
+  *f1 = p * inv;
+  *f2 = (q - *f1 * *f1) * inv;
 }
 
 /* The terms past d of the root of g + f e + f1 e^2/2 + f2 e^3/6 = 0 by
-** series reversion in d = -g/f: e = d - (f1/2f) d^2 + (f1^2/2f^2 -
-** f2/6f) d^3. */
-static double reversion_tail(double d, double f, double f1, double f2) {
-  return d * d * (-f1 / (2 * f) + d * (f1 * f1 / (2 * f * f) - f2 / (6 * f)));
+** series reversion in d = -g/f: with b2 = f1/2f and b3 = f2/6f,
+** e = d - b2 d^2 + (2 b2^2 - b3) d^3 (inv = 1/f). */
+static double reversion_tail(double d, double inv, double f1, double f2) {
+  double b2 = f1 * inv * 0.5, b3 = f2 * inv * (1.0 / 6);
+  return d * d * (-b2 + d * (2 * b2 * b2 - b3));
 }
 
 /* The step to the root of the Taylor polynomial of second order, from the
@@ -72,9 +74,9 @@ static double reversion_tail(double d, double f, double f1, double f2) {
 ** (cauchy).  Returns e when the two are within tol (1/1024 of it kept for
 ** rounding), else 0 (e = 0 means g = 0, which the caller has taken
 ** already). */
-static double second_order_step(const cauchy *cb, double d, double f,
+static double second_order_step(const cauchy *cb, double d, double inv,
                                 double f1, double tol) {
-  double r = cb->r, c = f1 * d * d / (2 * f), e = d - c;
+  double r = cb->r, c = f1 * d * d * inv * 0.5, e = d - c;
   double res = fabs(f1 / 2 * c * (c - 2 * d)) +
                cb->m * fabs(e * e * e) / (3 * r * r);
   return cb->ok && fabs(e) <= cb->D && res <= tol * (1 - 1.0 / 1024) ? e : 0;
@@ -88,8 +90,8 @@ static double second_order_step(const cauchy *cb, double d, double f,
 ** piece, whose Newton step this certifies where the second-order one does
 ** not; 0 when not within tol. */
 static double third_order_step(const cauchy *cb, double d, double f,
-                               double f1, double f2, double tol) {
-  double r = cb->r, tail = reversion_tail(d, f, f1, f2);
+                               double inv, double f1, double f2, double tol) {
+  double r = cb->r, tail = reversion_tail(d, inv, f1, f2);
   double e = d + tail, e2 = e * e;
   double res = fabs(f * tail + e2 * (f1 / 2 + e * f2 / 6)) +
                cb->m * (e2 * e2) / (4 * r * r * r);
@@ -133,14 +135,17 @@ static double disc_radius(const piece_bound *pbound, double half_width) {
 ** points: no branch point lies within dist of the segment (dist, a lower
 ** bound of the nearest one's distance, the larger of its offsets along and
 ** across), so the Bernstein ellipse of semi-minor axis b = 0.9 dist, which
-** lies within b of the segment, holds none; on it |w - c| <= A = sqrt(h^2
-** + b^2), its semi-major axis, so |f| <= M = sqrt(lead2) prod (|c - re_k|
-** + im_k + A) over the pairs (as arclen_bound_piece); rho = (A + b)/h and
-** rho^2 - 1 = 2 b (A + b)/h^2.  The ellipse bound (integrator.h's head)
-** then sets the order, a few operations where the piece's ellipse sees
-** only the branch point nearest to the piece: a tenth of a piece away from
-** it takes a third of the points.  0 when no order up to the tables' does
-** (a real root inside, or too near). */
+** lies within b of the segment, holds none; every point within b of the
+** segment is within h + b of c, so |f| <= M = sqrt(lead2) prod (|c - re_k|
+** + im_k + h + b) over the pairs (as arclen_bound_piece); rho = (A + b)/h
+** with A = sqrt(h^2 + b^2) and rho^2 - 1 = 2 b (A + b)/h^2.  The ellipse
+** bound (integrator.h's head) then sets the order, a few operations where
+** the piece's ellipse sees only the branch point nearest to the piece: a
+** tenth of a piece away from it takes a third of the points.  The order
+** holds for every sub-range too (the same b: its ellipse lies within b of
+** it, so within the region of M, and its rho is larger), so it may be
+** taken before the sub-range is known.  0 when no order up to the tables'
+** does (a real root inside, or too near). */
 static int stadium_order(const integrator *in, double c, double h,
                          double target) {
   const arclen_branch *br = &in->br;
@@ -156,7 +161,7 @@ static int stadium_order(const integrator *in, double c, double h,
   /* h (64/15) M / (target (rho^2 - 1)) but for sqrt(lead2), whose log2
   ** lead_log bounds from above (it carries the factor 4/pi > 1 too) */
   prod = h * h * h * (64.0 / 15.0) / (target * 2 * b * (A + b));
-  for (k = 0; k < br->n; k += 2) prod *= fabs(br->re[k] - c) + br->im[k] + A;
+  for (k = 0; k < br->n; k += 2) prod *= fabs(br->re[k] - c) + br->im[k] + h + b;
   lr = arclen_rough_log2((A + b) / h) - ARCLEN_LOG2_ERR;
   if (!(prod > 0 && prod < 1e300 && lr > 0)) return 0;   /* the other bounds */
   nn = 1 + (arclen_rough_log2(prod) + in->lead_log + ARCLEN_LOG2_ERR) / (2 * lr);
@@ -164,7 +169,8 @@ static int stadium_order(const integrator *in, double c, double h,
 }
 
 /* The integral over [x, y] inside an accepted piece to within target
-** (scaled units).  Its order from its own distance to the branch points
+** (scaled units).  Its order n when given (stadium_order's for a range
+** that holds it), else from its own distance to the branch points
 ** (stadium_order); where that fails (a root too near), the piece's
 ** Bernstein ellipse (ebound, half-width hp) holds
 ** the disc of radius r = hp (a_semi - 1) about every point of the piece
@@ -174,12 +180,12 @@ static int stadium_order(const integrator *in, double c, double h,
 ** rho sets its order, for a few operations.  A longer one takes its own
 ** branch-cut bound, or the piece's rule r when that is not at hand. */
 static double sub_integral(integrator *in, double x, double y, double target,
-                           double pa, double pb, const arclen_gauss_rule *r) {
+                           double pa, double pb, const arclen_gauss_rule *r,
+                           int n) {
   double c = x + (y - x) / 2, h = (y - x) / 2, hp = (pb - pa) / 2, rad = 0;
   piece_bound eb, *ebound = &eb;
-  int n = 0;
   if (!(h > 0)) return 0;
-  n = stadium_order(in, c, h, target);
+  if (!n) n = stadium_order(in, c, h, target);
   if (!n) {
     arclen_bound_piece(&in->br, pa + hp, hp, ebound);
     rad = disc_radius(ebound, hp);
@@ -226,17 +232,20 @@ static void two_sum(double a, double b, double *s, double *e) {
 ** compensated pair), the speed f there (< 0: not taken yet) and, when
 ** slopes, its derivatives f1, f2. */
 typedef struct known {
-  double t, s, sc, f, f1, f2;
+  double t, s, sc, f, inv, f1, f2;
   int slopes;
 } known;
 
 /* The search inside an accepted piece [a, b] (half-width hp) of length
 ** plen with rule r: the bracket of the sweep, lo (s <= the goal) and hi (s
-** above it, or the piece's end), and sqrt(lead2) for cauchy_near. */
+** above it, or the piece's end), sqrt(lead2) for cauchy_near, and an
+** order taken ahead for the first integral of a search. */
 typedef struct piece_search {
   double a, b, hp, plen, sqlead;
   const arclen_gauss_rule *r;
   known lo, hi;
+  double pre_x, pre_y, pre_share;  /* stadium_order's pre_n holds there */
+  int pre_n;
 } piece_search;
 
 static void set_known(known *k, double t, double s) {
@@ -255,6 +264,7 @@ static void search_piece(integrator *in, piece_search *p, double a, double b,
   p->hp = (b - a) / 2;
   p->r = r;
   p->sqlead = sqrt(in->br.lead2);
+  p->pre_n = 0;
   set_known(&p->lo, a, 0);
   set_known(&p->hi, b, plen);
 }
@@ -262,6 +272,7 @@ static void search_piece(integrator *in, piece_search *p, double a, double b,
 static double speed_of(integrator *in, known *k) {
   if (k->f < 0) {
     k->f = arclen_hodo_speed(&in->h, k->t);
+    k->inv = 1 / k->f;
     in->evals++;
   }
   return k->f;
@@ -269,7 +280,7 @@ static double speed_of(integrator *in, known *k) {
 
 static void slopes_of(integrator *in, known *k) {
   if (!k->slopes && k->f > 0) {
-    speed_slopes(&in->h, k->t, k->f, &k->f1, &k->f2);
+    speed_slopes(&in->h, k->t, k->inv, &k->f1, &k->f2);
     k->slopes = 1;
   }
 }
@@ -279,16 +290,18 @@ static void slopes_of(integrator *in, known *k) {
 ** is short and needs few points), and the speed there. */
 static void eval_at(integrator *in, const piece_search *p, double t,
                     double share, known *k) {
-  double e;
+  double e, x = p->lo.t, y = t, sign = 1;
+  int n;
   if (t - p->lo.t > p->hi.t - t) {
-    two_sum(p->hi.s, -sub_integral(in, t, p->hi.t, share, p->a, p->b, p->r),
-            &k->s, &e);
-    k->sc = p->hi.sc + e;
-  } else {
-    two_sum(p->lo.s, sub_integral(in, p->lo.t, t, share, p->a, p->b, p->r),
-            &k->s, &e);
-    k->sc = p->lo.sc + e;
+    x = t;
+    y = p->hi.t;
+    sign = -1;
   }
+  n = p->pre_n && share == p->pre_share && x >= p->pre_x && y <= p->pre_y
+          ? p->pre_n : 0;
+  two_sum(sign < 0 ? p->hi.s : p->lo.s,
+          sign * sub_integral(in, x, y, share, p->a, p->b, p->r, n), &k->s, &e);
+  k->sc = (sign < 0 ? p->hi.sc : p->lo.sc) + e;
   k->t = t;
   k->f = -1;
   k->slopes = 0;
@@ -324,19 +337,19 @@ static double newton_search(integrator *in, piece_search *p, double t,
     hi = p->hi.t;
     next = lo + (hi - lo) / 2;
     if (kp->f > 0) {
-      d = -g / kp->f;
+      d = -g * kp->inv;
       if (t + d > lo && t + d < hi) {
         cauchy cb;
         cauchy_near(&in->br, p->sqlead, t, 2 * fabs(d), &cb);
         if (newton_certified(&cb, d, tol)) return t + d;
         slopes_of(in, kp);
-        e = second_order_step(&cb, d, kp->f, kp->f1, tol);
+        e = second_order_step(&cb, d, kp->inv, kp->f1, tol);
         if (e != 0 && t + e > lo && t + e < hi) return t + e;
-        e3 = third_order_step(&cb, d, kp->f, kp->f1, kp->f2, tol);
+        e3 = third_order_step(&cb, d, kp->f, kp->inv, kp->f1, kp->f2, tol);
         if (e3 != 0 && t + e3 > lo && t + e3 < hi) return t + e3;
         /* not certified: the next point from the third-order step (series
         ** reversion), nearer than Newton's for the same slopes */
-        e3 = d + reversion_tail(d, kp->f, kp->f1, kp->f2);
+        e3 = d + reversion_tail(d, kp->inv, kp->f1, kp->f2);
         next = t + e3 > lo && t + e3 < hi ? t + e3 : t + d;
       }
     }
@@ -372,9 +385,9 @@ static double refine_guess(integrator *in, const piece_search *p, double t,
   f = arclen_hodo_speed(&in->h, t);
   in->evals += r->n + 1;
   if (f > 0) {
-    double d = -sg / f, f1, f2, e;
-    speed_slopes(&in->h, t, f, &f1, &f2);
-    e = d + reversion_tail(d, f, f1, f2);
+    double inv = 1 / f, d = -sg * inv, f1, f2, e;
+    speed_slopes(&in->h, t, inv, &f1, &f2);
+    e = d + reversion_tail(d, inv, f1, f2);
     if (t + e > lo && t + e < hi) return t + e;
   }
   return t;
@@ -397,25 +410,39 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
     known *lo = &p->lo;
     slopes_of(in, lo);
     if (lo->slopes) {
-      double d = (goal - lo->s - lo->sc) / lo->f;
-      t = lo->t + d + reversion_tail(d, lo->f, lo->f1, lo->f2);
+      double d = (goal - lo->s - lo->sc) * lo->inv;
+      t = lo->t + d + reversion_tail(d, lo->inv, lo->f1, lo->f2);
     }
   }
   if (!(t > p->lo.t && t < p->hi.t)) {
     double span = p->hi.s - p->lo.s + (p->hi.sc - p->lo.sc);
+    double lo, hi, margin;
     t = hermite_guess(p->lo.t, p->hi.t, speed_of(in, &p->lo),
                       speed_of(in, &p->hi), span,
                       goal - p->lo.s - p->lo.sc);
+    /* the first certified integral's order, for the bracket's part from
+    ** its nearer end to a 32nd of it past the guess (the refined guess
+    ** moves it by less), taken beside the refined guess, not after it */
+    lo = p->lo.t;
+    hi = p->hi.t;
+    margin = (hi - lo) / 32;
+    p->pre_x = t - lo <= hi - t ? lo : fmax(t - margin, lo);
+    p->pre_y = t - lo <= hi - t ? fmin(t + margin, hi) : hi;
+    p->pre_share = share;
+    p->pre_n = stadium_order(in, p->pre_x + (p->pre_y - p->pre_x) / 2,
+                             (p->pre_y - p->pre_x) / 2, share);
     t = refine_guess(in, p, t, goal);
   }
-  return newton_search(in, p, t, goal, tol, share);
+  t = newton_search(in, p, t, goal, tol, share);
+  p->pre_n = 0;
+  return t;
 }
 
 /* time cuts at the feet within 0.2 of the width, more than the length
 ** does: a piece where the speed dips sharply defeats the Hermite guess
 ** (off by up to half the piece), and each further Newton step is a chain
 ** of a bound, a rule and a division (doc/benchmarks.md: the shares tried). */
-#define TIME_FOOTCUT 0.2
+#define TIME_FOOTCUT 0.1
 
 /* The pieces of the integral in increasing t: the first pieces with their
 ** orders straight from the branch points when those are to be had (the
