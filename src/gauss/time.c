@@ -442,7 +442,7 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
 ** does: a piece where the speed dips sharply defeats the Hermite guess
 ** (off by up to half the piece), and each further Newton step is a chain
 ** of a bound, a rule and a division (doc/benchmarks.md: the shares tried). */
-#define TIME_FOOTCUT 0.1
+#define TIME_FOOTCUT 0.2
 
 /* The pieces of the integral in increasing t: the first pieces with their
 ** orders straight from the branch points when those are to be had (the
