@@ -42,29 +42,34 @@ static int newton_certified(const cauchy *cb, double d, double tol) {
   return cb->ok && fabs(d) <= cb->D && cb->m * d * d <= 2 * tol * cb->r;
 }
 
-/* The speed's first and second derivatives at t, where it is f > 0 (inv
-** = 1/f: one division on the search's chain, not one per use):
-** f1 = (z' . z'')/f and f2 = (|z''|^2 + z' . z''' - f1^2)/f. */
+/* The speed's first three derivatives at t, where it is f > 0 (inv = 1/f:
+** one division on the search's chain, not one per use), from f^2 = |z'|^2
+** differentiated (z'''' = 0): f1 = (z' . z'')/f, f2 = (|z''|^2 + z' .
+** z''' - f1^2)/f and f3 = 3 (z'' . z''' - f1 f2)/f. */
 static void speed_slopes(const arclen_hodo *h, double t, double inv,
-                         double *f1, double *f2) {
-  double p = 0, q = 0;
+                         double *f1, double *f2, double *f3) {
+  double p = 0, q = 0, u = 0;
   int k;
   for (k = 0; k < h->dim; k++) {
     double v = (h->a2[k] * t + h->a1[k]) * t + h->a0[k];
     double v1 = 2 * h->a2[k] * t + h->a1[k];
     p += v * v1;
     q += v1 * v1 + v * 2 * h->a2[k];
+    u += v1 * 2 * h->a2[k];
   }
   *f1 = p * inv;
   *f2 = (q - *f1 * *f1) * inv;
+  *f3 = 3 * (u - *f1 * *f2) * inv;
 }
 
-/* The terms past d of the root of g + f e + f1 e^2/2 + f2 e^3/6 = 0 by
-** series reversion in d = -g/f: with b2 = f1/2f and b3 = f2/6f,
-** e = d - b2 d^2 + (2 b2^2 - b3) d^3 (inv = 1/f). */
-static double reversion_tail(double d, double inv, double f1, double f2) {
-  double b2 = f1 * inv * 0.5, b3 = f2 * inv * (1.0 / 6);
-  return d * d * (-b2 + d * (2 * b2 * b2 - b3));
+/* The terms past d of the root of g + f e + f1 e^2/2 + f2 e^3/6 + f3
+** e^4/24 = 0 by series reversion in d = -g/f: with b2 = f1/2f, b3 =
+** f2/6f and b4 = f3/24f, e = d - b2 d^2 + (2 b2^2 - b3) d^3 + (5 b2 b3 -
+** 5 b2^3 - b4) d^4 (inv = 1/f). */
+static double reversion_tail(double d, double inv, double f1, double f2,
+                             double f3) {
+  double b2 = f1 * inv * 0.5, b3 = f2 * inv * (1.0 / 6), b4 = f3 * inv * (1.0 / 24);
+  return d * d * (-b2 + d * (2 * b2 * b2 - b3 + d * (5 * b2 * (b3 - b2 * b2) - b4)));
 }
 
 /* The step to the root of the Taylor polynomial of second order, from the
@@ -82,19 +87,20 @@ static double second_order_step(const cauchy *cb, double d, double inv,
   return cb->ok && fabs(e) <= cb->D && res <= tol * (1 - 1.0 / 1024) ? e : 0;
 }
 
-/* The third-order step e = d + reversion_tail (the root of the Taylor
-** polynomial of third order, to its own third order) when it is within
+/* The reversion step e = d + reversion_tail (the root of the Taylor
+** polynomial of fourth order, to its own fourth order) when it is within
 ** tol: with g = -f d the polynomial's value there is f (e - d) + e^2 (f1/2
-** + e f2/6), and the remainder is at most max |f'''| e^4 / 24 with |f'''|
-** <= 6 m / r^3 (cauchy).  A sweep's chained guess errs by ~1e-5 of the
-** piece, whose Newton step this certifies where the second-order one does
-** not; 0 when not within tol. */
-static double third_order_step(const cauchy *cb, double d, double f,
-                               double inv, double f1, double f2, double tol) {
-  double r = cb->r, tail = reversion_tail(d, inv, f1, f2);
+** + e (f2/6 + e f3/24)), and the remainder is at most max |f''''| |e|^5 /
+** 120 with |f''''| <= 24 m / r^4 (cauchy).  A sweep's chained guess errs
+** by ~1e-5 of the piece, whose Newton step this certifies where the
+** second-order one does not; 0 when not within tol. */
+static double reversion_step(const cauchy *cb, double d, double f,
+                               double inv, double f1, double f2, double f3,
+                               double tol) {
+  double r = cb->r, tail = reversion_tail(d, inv, f1, f2, f3);
   double e = d + tail, e2 = e * e;
-  double res = fabs(f * tail + e2 * (f1 / 2 + e * f2 / 6)) +
-               cb->m * (e2 * e2) / (4 * r * r * r);
+  double res = fabs(f * tail + e2 * (f1 / 2 + e * (f2 / 6 + e * f3 / 24))) +
+               cb->m * (e2 * e2 * fabs(e)) / (5 * (r * r) * (r * r));
   return cb->ok && fabs(e) <= cb->D && res <= tol * (1 - 1.0 / 1024) ? e : 0;
 }
 
@@ -102,7 +108,7 @@ static double third_order_step(const cauchy *cb, double d, double f,
 ** of s from its values 0, plen and slopes fa, fb (the speeds) at the ends,
 ** inverted by three Newton steps on u = (t - a)/(b - a) kept in (0, 1).
 ** Three, not more: each is a division on the path to the answer, and the
-** search's third-order step takes the guess much closer for the cost of
+** search's reversion step takes the guess much closer for the cost of
 ** one. */
 #define HERMITE_STEPS 3
 static double hermite_guess(double a, double b, double fa, double fb,
@@ -232,7 +238,7 @@ static void two_sum(double a, double b, double *s, double *e) {
 ** compensated pair), the speed f there (< 0: not taken yet) and, when
 ** slopes, its derivatives f1, f2. */
 typedef struct known {
-  double t, s, sc, f, inv, f1, f2;
+  double t, s, sc, f, inv, f1, f2, f3;
   int slopes;
 } known;
 
@@ -280,7 +286,7 @@ static double speed_of(integrator *in, known *k) {
 
 static void slopes_of(integrator *in, known *k) {
   if (!k->slopes && k->f > 0) {
-    speed_slopes(&in->h, k->t, k->inv, &k->f1, &k->f2);
+    speed_slopes(&in->h, k->t, k->inv, &k->f1, &k->f2, &k->f3);
     k->slopes = 1;
   }
 }
@@ -345,11 +351,11 @@ static double newton_search(integrator *in, piece_search *p, double t,
         slopes_of(in, kp);
         e = second_order_step(&cb, d, kp->inv, kp->f1, tol);
         if (e != 0 && t + e > lo && t + e < hi) return t + e;
-        e3 = third_order_step(&cb, d, kp->f, kp->inv, kp->f1, kp->f2, tol);
+        e3 = reversion_step(&cb, d, kp->f, kp->inv, kp->f1, kp->f2, kp->f3, tol);
         if (e3 != 0 && t + e3 > lo && t + e3 < hi) return t + e3;
-        /* not certified: the next point from the third-order step (series
+        /* not certified: the next point from the reversion step (series
         ** reversion), nearer than Newton's for the same slopes */
-        e3 = d + reversion_tail(d, kp->inv, kp->f1, kp->f2);
+        e3 = d + reversion_tail(d, kp->inv, kp->f1, kp->f2, kp->f3);
         next = t + e3 > lo && t + e3 < hi ? t + e3 : t + d;
       }
     }
@@ -368,7 +374,7 @@ static int refine_order(int n) {
 }
 
 /* A better guess, no bound: s(t) from a rule of refine_order on the
-** nearer part of the bracket, then the third-order step from it (series
+** nearer part of the bracket, then the reversion step from it (series
 ** reversion).  The Hermite guess errs by up to ~1e-2 of the piece where a
 ** branch point stands near it; this step takes it within reach of the
 ** certificates for a rule without its bound. */
@@ -385,9 +391,9 @@ static double refine_guess(integrator *in, const piece_search *p, double t,
   f = arclen_hodo_speed(&in->h, t);
   in->evals += r->n + 1;
   if (f > 0) {
-    double inv = 1 / f, d = -sg * inv, f1, f2, e;
-    speed_slopes(&in->h, t, inv, &f1, &f2);
-    e = d + reversion_tail(d, inv, f1, f2);
+    double inv = 1 / f, d = -sg * inv, f1, f2, f3, e;
+    speed_slopes(&in->h, t, inv, &f1, &f2, &f3);
+    e = d + reversion_tail(d, inv, f1, f2, f3);
     if (t + e > lo && t + e < hi) return t + e;
   }
   return t;
@@ -395,7 +401,7 @@ static double refine_guess(integrator *in, const piece_search *p, double t,
 
 /* s(t) = goal in the piece (goal in [0, plen]): the bracket moved up
 ** past a goal beyond hi, then
-** the guess -- the third-order step from lo once lo is inside the piece
+** the guess -- the reversion step from lo once lo is inside the piece
 ** (a sweep's next distance: its speed and slopes are known), else the
 ** Hermite guess on the bracket -- and the Newton search from it. */
 static double solve_goal(integrator *in, piece_search *p, double goal,
@@ -411,7 +417,7 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
     slopes_of(in, lo);
     if (lo->slopes) {
       double d = (goal - lo->s - lo->sc) * lo->inv;
-      t = lo->t + d + reversion_tail(d, lo->inv, lo->f1, lo->f2);
+      t = lo->t + d + reversion_tail(d, lo->inv, lo->f1, lo->f2, lo->f3);
     }
   }
   if (!(t > p->lo.t && t < p->hi.t)) {
