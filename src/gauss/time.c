@@ -294,7 +294,10 @@ static void slopes_of(integrator *in, known *k) {
 /* s at t inside the bracket: from the nearer end whose s is known, plus
 ** the integral between to within share (sub_integral; near the answer it
 ** is short and needs few points), and the speed there. */
-static void eval_at(integrator *in, const piece_search *p, double t,
+/* How far ahead a forward range's order is taken (eval_at), in ranges. */
+#define WINDOW 4
+
+static void eval_at(integrator *in, piece_search *p, double t,
                     double share, known *k) {
   double e, x = p->lo.t, y = t, sign = 1;
   int n;
@@ -303,8 +306,19 @@ static void eval_at(integrator *in, const piece_search *p, double t,
     y = p->hi.t;
     sign = -1;
   }
-  n = p->pre_n && share == p->pre_share && x >= p->pre_x && y <= p->pre_y
-          ? p->pre_n : 0;
+  if (p->pre_n && share == p->pre_share && x >= p->pre_x && y <= p->pre_y) {
+    n = p->pre_n;
+  } else if (sign > 0) {
+    /* forward from lo: the order for WINDOW times the range, which the
+    ** next distances' ranges, further on from a higher lo, will lie in */
+    p->pre_x = x;
+    p->pre_y = fmin(x + WINDOW * (y - x), p->hi.t);
+    p->pre_share = share;
+    n = p->pre_n = stadium_order(in, p->pre_x + (p->pre_y - p->pre_x) / 2,
+                                 (p->pre_y - p->pre_x) / 2, share);
+  } else {
+    n = 0;
+  }
   two_sum(sign < 0 ? p->hi.s : p->lo.s,
           sign * sub_integral(in, x, y, share, p->a, p->b, p->r, n), &k->s, &e);
   k->sc = (sign < 0 ? p->hi.sc : p->lo.sc) + e;
@@ -439,9 +453,7 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
                              (p->pre_y - p->pre_x) / 2, share);
     t = refine_guess(in, p, t, goal);
   }
-  t = newton_search(in, p, t, goal, tol, share);
-  p->pre_n = 0;
-  return t;
+  return newton_search(in, p, t, goal, tol, share);
 }
 
 /* time cuts at the feet within 0.2 of the width, more than the length
