@@ -253,10 +253,10 @@ int arclen_integ_next_piece(integrator *in, double *from, double *to, double *le
   return 0;
 }
 
-/* The first pieces from piece i0 on, between the feet, in increasing t. */
-void arclen_integ_push_initial(integrator *in, int i0) {
+/* The first pieces, between the feet, in increasing t. */
+void arclen_integ_push_initial(integrator *in) {
   int i;
-  for (i = in->nmin; i >= i0; i--)     /* the stack pops the first first */
+  for (i = in->nmin; i >= 0; i--)      /* the stack pops the first first */
     push(in, arclen_first_from(in, i), arclen_first_to(in, i), 0);
 }
 

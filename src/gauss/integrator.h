@@ -209,9 +209,8 @@ int arclen_integ_first_orders(const integrator *in, double *c, double *half_widt
 void arclen_integ_first_pieces(const integrator *in, double *c, double *half_width);
 int arclen_integ_orders_of(const integrator *in, int i0, int i1, const double *c,
                            const double *half_width, int *n);
-/* The first pieces from piece i0 on onto the stack; then next_piece pops
-** them in order. */
-void arclen_integ_push_initial(integrator *in, int i0);
+/* The first pieces onto the stack; then next_piece pops them in order. */
+void arclen_integ_push_initial(integrator *in);
 /* The next accepted piece [*from, *to] in increasing t, its length and
 ** rule (rule may be NULL); 0 when none is left. */
 int arclen_integ_next_piece(integrator *in, double *from, double *to,

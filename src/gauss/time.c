@@ -463,9 +463,11 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
 #define TIME_FOOTCUT 0.2
 
 /* The pieces of the integral in increasing t: the first pieces with their
-** orders straight from the branch points when those are to be had (the
-** first piece's order alone, the others' only when a distance lies past
-** it), else the integrator's stack, whose pieces and rules are the same
+** orders straight from the branch points when those are to be had (all
+** of them together, as the length takes them: their chains of square
+** roots and logs run side by side, which beats leaving the later pieces'
+** for when a distance lies past the first, doc/benchmarks.md), else the
+** integrator's stack, whose pieces and rules are the same
 ** (spec/fastpath_spec.lua), so that the answer does not depend on which
 ** path gave them. */
 typedef struct piece_walk {
@@ -476,22 +478,15 @@ typedef struct piece_walk {
 
 static void walk_start(integrator *in, piece_walk *w) {
   w->k = 0;
-  arclen_integ_first_pieces(in, w->c, w->half_width);
-  w->fast = !in->want_err && arclen_integ_orders_of(in, 0, 1, w->c, w->half_width, w->n);
+  w->fast = !in->want_err && arclen_integ_first_orders(in, w->c, w->half_width, w->n);
   if (!w->fast) {
     arclen_integ_prepare_bounds(in);
-    arclen_integ_push_initial(in, 0);
+    arclen_integ_push_initial(in);
   }
 }
 
 static int walk_next(integrator *in, piece_walk *w, double *a, double *b,
                      double *len, const arclen_gauss_rule **r, int *last) {
-  if (w->fast && w->k == 1 &&
-      !arclen_integ_orders_of(in, 1, in->nmin + 1, w->c, w->half_width, w->n)) {
-    w->fast = 0;                       /* the rest by the stack */
-    arclen_integ_prepare_bounds(in);
-    arclen_integ_push_initial(in, 1);
-  }
   if (w->fast) {
     if (w->k > in->nmin) return 0;
     *r = arclen_rule_at_least(w->n[w->k]);
