@@ -1,9 +1,9 @@
 -- The default method's inverse is one sweep for arclen.time and
--- arclen.times (src/gauss/time.c): the pieces walked in increasing t, the
--- first pieces' orders straight from the branch points until a later
--- piece's cannot be had, then the integrator's stack for the rest; in a
--- piece the searches chain from the last point evaluated, whose s is a
--- compensated sum.  These check the hand-over and a long chain.
+-- arclen.times (src/gauss/time.c): the pieces walked in increasing t, by
+-- the first pieces' orders straight from the branch points when all of
+-- them are to be had, else by the integrator's stack; in a piece the
+-- searches chain from the last point evaluated, whose s is a compensated
+-- sum.  These check the stack's curves and a long run of distances.
 local arclen = require("arclen")
 local H = require("helpers")
 
@@ -26,11 +26,10 @@ local function ds(c, t, T)
 end
 
 describe("the inverse's sweep", function()
-  -- Near-cusp curves whose goal lies past the first piece, where the
-  -- later first pieces' orders are not to be had (found by a scan of
-  -- random curves at tol 1e-12): the walk hands over to the stack after
-  -- the first piece; {info = true} takes the stack from the start.
-  local handed_over = {
+  -- Near-cusp curves whose later first pieces' orders are not to be had
+  -- (found by a scan of random curves at tol 1e-12), at distances past the
+  -- first piece: the plain call takes the stack as {info = true} does.
+  local no_orders = {
     {{0.60154331709937736, 2.3183290209762877, -2.1736824062716229, 3.111621161943642,
       4.2691572013611605, 1.889374574583762, -1.8694806614378354, -2.4221437358533593}, 0.383},
     {{-2.8452790681099138, -3.3737966347346546, -2.5486605223054792, -4.1536770271341314,
@@ -41,8 +40,8 @@ describe("the inverse's sweep", function()
       2.8122723807299437, 4.9171181394927714, 0.93786332274249951, 4.5474552522764107}, 0.491},
   }
 
-  it("hands the walk over to the stack mid-way with the stack's times, to the bit", function()
-    for i, case in ipairs(handed_over) do
+  it("takes the stack where the first pieces' orders fail, as the report does, to the bit", function()
+    for i, case in ipairs(no_orders) do
       local c, u = case[1], case[2]
       local L = arclen.length(c, {tol = 1e-12})
       for _, f in ipairs({u - 0.01, u, u + 0.01}) do
