@@ -435,10 +435,10 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
     }
   }
   if (!(t > p->lo.t && t < p->hi.t)) {
-    double span = p->hi.s - p->lo.s + (p->hi.sc - p->lo.sc);
+    double ds = p->hi.s - p->lo.s + (p->hi.sc - p->lo.sc);
     double lo, hi, margin;
     t = hermite_guess(p->lo.t, p->hi.t, speed_of(in, &p->lo),
-                      speed_of(in, &p->hi), span,
+                      speed_of(in, &p->hi), ds,
                       goal - p->lo.s - p->lo.sc);
     /* the first certified integral's order, for the bracket's part from
     ** its nearer end to a 32nd of it past the guess (the refined guess
