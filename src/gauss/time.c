@@ -235,19 +235,19 @@ static void two_sum(double a, double b, double *s, double *e) {
 }
 
 /* A point of the search whose s is known: s(t) - s(a) = s + sc (a
-** compensated pair), the speed f there (< 0: not taken yet) and, when
-** slopes, its derivatives f1, f2. */
+** compensated pair), the speed f there (< 0: not taken yet) and inv = 1/f,
+** and, when slopes, its derivatives f1, f2, f3. */
 typedef struct known {
   double t, s, sc, f, inv, f1, f2, f3;
   int slopes;
 } known;
 
-/* The search inside an accepted piece [a, b] (half-width hp) of length
-** plen with rule r: the bracket of the sweep, lo (s <= the goal) and hi (s
-** above it, or the piece's end), sqrt(lead2) for cauchy_near, and an
-** order taken ahead for the first integral of a search. */
+/* The search inside an accepted piece [a, b] of length plen with rule r:
+** the bracket of the sweep, lo (s <= the goal) and hi (s above it, or the
+** piece's end), sqrt(lead2) for cauchy_near, and an order taken ahead
+** (eval_at, solve_goal) with the range and share it holds for. */
 typedef struct piece_search {
-  double a, b, hp, plen, sqlead;
+  double a, b, plen, sqlead;
   const arclen_gauss_rule *r;
   known lo, hi;
   double pre_x, pre_y, pre_share;  /* stadium_order's pre_n holds there */
@@ -267,7 +267,6 @@ static void search_piece(integrator *in, piece_search *p, double a, double b,
   p->a = a;
   p->b = b;
   p->plen = plen;
-  p->hp = (b - a) / 2;
   p->r = r;
   p->sqlead = sqrt(in->br.lead2);
   p->pre_n = 0;
@@ -291,11 +290,14 @@ static void slopes_of(integrator *in, known *k) {
   }
 }
 
-/* s at t inside the bracket: from the nearer end whose s is known, plus
-** the integral between to within share (sub_integral; near the answer it
-** is short and needs few points), and the speed there. */
 /* How far ahead a forward range's order is taken (eval_at), in ranges. */
 #define WINDOW 4
+
+/* s at t inside the bracket: from the nearer end whose s is known, plus
+** the integral between to within share (sub_integral; near the answer it
+** is short and needs few points), and the speed there.  A forward range's
+** order is kept for WINDOW times its length (stadium_order's holds for
+** every sub-range), which a sweep's next ranges from a higher lo lie in. */
 
 static void eval_at(integrator *in, piece_search *p, double t,
                     double share, known *k) {
@@ -309,8 +311,6 @@ static void eval_at(integrator *in, piece_search *p, double t,
   if (p->pre_n && share == p->pre_share && x >= p->pre_x && y <= p->pre_y) {
     n = p->pre_n;
   } else if (sign > 0) {
-    /* forward from lo: the order for WINDOW times the range, which the
-    ** next distances' ranges, further on from a higher lo, will lie in */
     p->pre_x = x;
     p->pre_y = fmin(x + WINDOW * (y - x), p->hi.t);
     p->pre_share = share;
@@ -442,7 +442,8 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
                       goal - p->lo.s - p->lo.sc);
     /* the first certified integral's order, for the bracket's part from
     ** its nearer end to a 32nd of it past the guess (the refined guess
-    ** moves it by less), taken beside the refined guess, not after it */
+    ** moves it by less nine times in ten; else eval_at takes its own),
+    ** taken beside the refined guess, not after it */
     lo = p->lo.t;
     hi = p->hi.t;
     margin = (hi - lo) / 32;
