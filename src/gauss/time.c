@@ -418,6 +418,11 @@ static double refine_guess(integrator *in, const piece_search *p, double t,
 ** the guess -- the reversion step from lo once lo is inside the piece
 ** (a sweep's next distance: its speed and slopes are known), else the
 ** Hermite guess on the bracket -- and the Newton search from it. */
+/* The reversion step from lo is a sweep's next distance's guess, and a
+** piece's first distance's when its Newton step from the piece's start is
+** within this share of the piece; a longer one takes the Hermite guess. */
+#define REVERSION_REACH 8
+
 static double solve_goal(integrator *in, piece_search *p, double goal,
                          double tol, double share) {
   double t = -1;
@@ -426,11 +431,11 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
     set_known(&p->hi, p->b, p->plen);
   }
   if (goal >= p->plen) return p->b;    /* on the last piece: s >= L */
-  if (p->lo.t > p->a) {
+  if (speed_of(in, &p->lo) > 0) {
     known *lo = &p->lo;
-    slopes_of(in, lo);
-    if (lo->slopes) {
-      double d = (goal - lo->s - lo->sc) * lo->inv;
+    double d = (goal - lo->s - lo->sc) * lo->inv;
+    if (lo->t > p->a || d < (p->hi.t - lo->t) / REVERSION_REACH) {
+      slopes_of(in, lo);
       t = lo->t + d + reversion_tail(d, lo->inv, lo->f1, lo->f2, lo->f3);
     }
   }
