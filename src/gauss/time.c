@@ -106,11 +106,11 @@ static double reversion_step(const cauchy *cb, double d, double f,
 
 /* A first guess for s(t) = goal in [a, b]: the cubic Hermite interpolant
 ** of s from its values 0, plen and slopes fa, fb (the speeds) at the ends,
-** inverted by three Newton steps on u = (t - a)/(b - a) kept in (0, 1).
-** Three, not more: each is a division on the path to the answer, and the
-** search's reversion step takes the guess much closer for the cost of
-** one. */
-#define HERMITE_STEPS 3
+** inverted by two Newton steps on u = (t - a)/(b - a) kept in (0, 1).
+** Two, not more: each is a division on the path to the answer, and the
+** refined guess's reversion step takes it much closer for the cost of one
+** (doc/benchmarks.md: the steps tried). */
+#define HERMITE_STEPS 2
 static double hermite_guess(double a, double b, double fa, double fb,
                             double plen, double goal) {
   double w = b - a, u = goal / plen;
