@@ -6,12 +6,14 @@
 ** machine's state as times do, and they tell where a method's time goes
 ** when its code is bound by how many instructions issue, not by latency.
 **
-**   bench_icount gl24 | one | multi | all | all15 | time | time15
+**   bench_icount gl24 | one | multi | all | all15 | time | time15 | times10
 **
 ** gl24: the fixed 24-point rule on every curve; one, multi: the default
 ** method at tol 1e-12 on the curves it integrates in one piece, in more;
 ** all, all15: on every curve at tol 1e-12, 1e-15; time, time15:
-** arclen_time at L/2 (as bench_length asks) at tol 1e-12, 1e-15.  Prints
+** arclen_time at L/2 (as bench_length asks) at tol 1e-12, 1e-15; times10:
+** arclen_times on 10 distances (j + 1/2) L/10 at tol 1e-12, counted as 10
+** calls (a path's walk hands a cubic about that many at k = 10 n).  Prints
 ** the number of calls measured.
 */
 #include <stdio.h>
@@ -29,7 +31,10 @@ static volatile double sink;
 #if defined(__GNUC__)
 __attribute__((noinline))
 #endif
-static double measured(const double *c, int gl24, double rtol, double half) {
+static double measured(const double *c, int gl24, double rtol, double half,
+                       const double *ds) {
+  double t[10];
+  if (ds) return arclen_times(c, 2, ds, 10, rtol, t, NULL, NULL) + t[9];
   if (half > 0) return arclen_time(c, half, rtol);
   return gl24 ? arclen_length_gl(c, 2, 24) : arclen_length(c, rtol);
 }
@@ -48,9 +53,11 @@ int main(int argc, char **argv) {
   int gl24 = strcmp(mode, "gl24") == 0, one = strcmp(mode, "one") == 0;
   int multi = strcmp(mode, "multi") == 0, all15 = strcmp(mode, "all15") == 0;
   int time15 = strcmp(mode, "time15") == 0, time = time15 || strcmp(mode, "time") == 0;
-  int i, calls = 0;
-  if (!gl24 && !one && !multi && !all15 && !time && strcmp(mode, "all") != 0) {
-    fprintf(stderr, "usage: bench_icount gl24|one|multi|all|all15|time|time15\n");
+  int times10 = strcmp(mode, "times10") == 0;
+  int i, j, calls = 0;
+  double ds[10];
+  if (!gl24 && !one && !multi && !all15 && !time && !times10 && strcmp(mode, "all") != 0) {
+    fprintf(stderr, "usage: bench_icount gl24|one|multi|all|all15|time|time15|times10\n");
     return 2;
   }
   bench_random_curves(curves, NCURVES, 20261121);
@@ -59,9 +66,10 @@ int main(int argc, char **argv) {
     if ((one || multi) && (pieces_of(c) > 1) != multi) continue;
     double rtol = all15 || time15 ? 1e-15 : 1e-12;
     /* L/2 outside the collected function, as bench_length's halves */
-    double half = time ? arclen_length(c, 1e-15) / 2 : 0;
-    sink = measured(c, gl24, rtol, half);
-    calls++;
+    double half = time || times10 ? arclen_length(c, 1e-15) / 2 : 0;
+    for (j = 0; j < 10; j++) ds[j] = half * (2 * j + 1) / 10;
+    sink = measured(c, gl24, rtol, times10 ? 0 : half, times10 ? ds : NULL);
+    calls += times10 ? 10 : 1;
   }
   printf("%d\n", calls);
   return 0;

@@ -5,71 +5,118 @@
 */
 #include "gauss/integrator.h"
 
+/* Cauchy's estimates near t: f is analytic within r of [t - D, t + D]
+** with |f| <= m there, so that |f^(k)| <= k! m / r^k on [t - D, t + D].
+** No branch point lies within dist of the segment (dist, a lower bound of
+** the nearest one's distance, the larger of its offsets along and across);
+** r = 0.9 dist, and every point within r of the segment is within D + r of
+** t, so |f| <= sqrt(lead2) prod (|t - re_k| + im_k + D + r) over the pairs
+** (as arclen_bound_piece).  A few operations, where the piece's Bernstein
+** ellipse (arclen_bound_piece) took square roots and sees only the branch
+** point nearest to the piece; ok 0 where a root is too near. */
+typedef struct cauchy {
+  double m, r, D;
+  int ok;
+} cauchy;
+
+static void cauchy_near(const arclen_branch *br, double sqlead, double t,
+                        double D, cauchy *cb) {
+  double dist = 1, m = sqlead;
+  int k;
+  for (k = 0; k < br->n; k += 2) {
+    double dx = fabs(br->re[k] - t) - D, dk = dx > br->im[k] ? dx : br->im[k];
+    dist = dk < dist ? dk : dist;
+  }
+  cb->D = D;
+  cb->r = 0.9 * dist;
+  for (k = 0; k < br->n; k += 2) m *= fabs(br->re[k] - t) + br->im[k] + D + cb->r;
+  cb->m = m;
+  cb->ok = dist > 0 && m < 1e300;
+}
+
 /* Whether a Newton step d from t (d = -g/f) lands within tol of the goal
 ** without evaluating there: s(t + d) - goal = g + f d + R = R (up to the
 ** rule error of g, which the tolerance's other half covers), and Taylor
-** gives |R| <= max |f'| d^2 / 2.  On the piece f is analytic inside its
-** Bernstein ellipse with |f| <= M, which holds a disc of radius
-** r = a_semi - 1 = e / (sqrt(1 + e) + 1) (times half_width) about every point of
-** the piece, so |f'| <= M / r (Cauchy's estimate). */
-static double disc_radius(const piece_bound *pbound, double half_width) {
-  return half_width * pbound->e / (sqrt(1 + pbound->e) + 1);
+** gives |R| <= max |f'| d^2 / 2 with |f'| <= m / r. */
+static int newton_certified(const cauchy *cb, double d, double tol) {
+  return cb->ok && fabs(d) <= cb->D && cb->m * d * d <= 2 * tol * cb->r;
 }
 
-static int newton_certified(const piece_bound *pbound, double half_width, double d,
-                            double tol) {
-  return pbound->m * d * d <= 2 * tol * disc_radius(pbound, half_width);
-}
-
-/* The speed's first and second derivatives at t, where it is f > 0:
-** f1 = (z' . z'')/f and f2 = (|z''|^2 + z' . z''' - f1^2)/f. */
-static void speed_slopes(const arclen_hodo *h, double t, double f,
-                         double *f1, double *f2) {
-  double p = 0, q = 0;
+/* The speed's first three derivatives at t, where it is f > 0 (inv = 1/f:
+** one division on the search's chain, not one per use), from f^2 = |z'|^2
+** differentiated (z'''' = 0): f1 = (z' . z'')/f, f2 = (|z''|^2 + z' .
+** z''' - f1^2)/f and f3 = 3 (z'' . z''' - f1 f2)/f. */
+static void speed_slopes(const arclen_hodo *h, double t, double inv,
+                         double *f1, double *f2, double *f3) {
+  double p = 0, q = 0, u = 0;
   int k;
   for (k = 0; k < h->dim; k++) {
     double v = (h->a2[k] * t + h->a1[k]) * t + h->a0[k];
     double v1 = 2 * h->a2[k] * t + h->a1[k];
     p += v * v1;
     q += v1 * v1 + v * 2 * h->a2[k];
+    u += v1 * 2 * h->a2[k];
   }
-  *f1 = p / f;
-  *f2 = (q - *f1 * *f1) / f;
+  *f1 = p * inv;
+  *f2 = (q - *f1 * *f1) * inv;
+  *f3 = 3 * (u - *f1 * *f2) * inv;
 }
 
-/* The terms past d of the root of g + f e + f1 e^2/2 + f2 e^3/6 = 0 by
-** series reversion in d = -g/f: e = d - (f1/2f) d^2 + (f1^2/2f^2 -
-** f2/6f) d^3. */
-static double reversion_tail(double d, double f, double f1, double f2) {
-  return d * d * (-f1 / (2 * f) + d * (f1 * f1 / (2 * f * f) - f2 / (6 * f)));
+/* The terms past d of the root of g + f e + f1 e^2/2 + f2 e^3/6 + f3
+** e^4/24 = 0 by series reversion in d = -g/f: with b2 = f1/2f, b3 =
+** f2/6f and b4 = f3/24f, e = d - b2 d^2 + (2 b2^2 - b3) d^3 + (5 b2 b3 -
+** 5 b2^3 - b4) d^4 (inv = 1/f). */
+static double reversion_tail(double d, double inv, double f1, double f2,
+                             double f3) {
+  double b2 = f1 * inv * 0.5, b3 = f2 * inv * (1.0 / 6), b4 = f3 * inv * (1.0 / 24);
+  return d * d * (-b2 + d * (2 * b2 * b2 - b3 + d * (5 * b2 * (b3 - b2 * b2) - b4)));
 }
 
 /* The step to the root of the Taylor polynomial of second order, from the
 ** Newton step d = -g/f and the slope f1 of the speed: e = d - c with c =
 ** f1 d^2 / (2 f) makes g + f e + f1 e^2 / 2 = (f1 / 2) c (c - 2 d), and
-** the remainder is at most max |f''| |e|^3 / 6 with |f''| <= 2 M / r^2
-** (Cauchy, as for newton_certified).  Returns e when the two are within
-** tol (1/1024 of it kept for rounding), else 0 (e = 0 means g = 0, which
-** the caller has taken already). */
-static double second_order_step(const piece_bound *pbound, double half_width, double d,
-                                double f, double f1, double tol) {
-  double r = disc_radius(pbound, half_width), c = f1 * d * d / (2 * f), e = d - c;
+** the remainder is at most max |f''| |e|^3 / 6 with |f''| <= 2 m / r^2
+** (cauchy).  Returns e when the two are within tol (1/1024 of it kept for
+** rounding), else 0 (e = 0 means g = 0, which the caller has taken
+** already). */
+static double second_order_step(const cauchy *cb, double d, double inv,
+                                double f1, double tol) {
+  double r = cb->r, c = f1 * d * d * inv * 0.5, e = d - c;
   double res = fabs(f1 / 2 * c * (c - 2 * d)) +
-               pbound->m * fabs(e * e * e) / (3 * r * r);
-  return res <= tol * (1 - 1.0 / 1024) ? e : 0;
+               cb->m * fabs(e * e * e) / (3 * r * r);
+  return cb->ok && fabs(e) <= cb->D && res <= tol * (1 - 1.0 / 1024) ? e : 0;
+}
+
+/* The reversion step e = d + reversion_tail (the root of the Taylor
+** polynomial of fourth order, to its own fourth order) when it is within
+** tol: with g = -f d the polynomial's value there is f (e - d) + e^2 (f1/2
+** + e (f2/6 + e f3/24)), and the remainder is at most max |f''''| |e|^5 /
+** 120 with |f''''| <= 24 m / r^4 (cauchy).  A sweep's chained guess errs
+** by ~1e-5 of the piece, whose Newton step this certifies where the
+** second-order one does not; 0 when not within tol. */
+static double reversion_step(const cauchy *cb, double d, double f,
+                               double inv, double f1, double f2, double f3,
+                               double tol) {
+  double r = cb->r, tail = reversion_tail(d, inv, f1, f2, f3);
+  double e = d + tail, e2 = e * e;
+  double res = fabs(f * tail + e2 * (f1 / 2 + e * (f2 / 6 + e * f3 / 24))) +
+               cb->m * (e2 * e2 * fabs(e)) / (5 * (r * r) * (r * r));
+  return cb->ok && fabs(e) <= cb->D && res <= tol * (1 - 1.0 / 1024) ? e : 0;
 }
 
 /* A first guess for s(t) = goal in [a, b]: the cubic Hermite interpolant
-** of s from its values 0, plen and slopes (the speeds) at the ends,
-** inverted by three Newton steps on u = (t - a)/(b - a) kept in (0, 1).
-** Three, not more: each is a division on the path to the answer, and
-** refine_guess() takes the guess much closer for the cost of one. */
-#define HERMITE_STEPS 3
-static double hermite_guess(const arclen_hodo *h, double a, double b,
+** of s from its values 0, plen and slopes fa, fb (the speeds) at the ends,
+** inverted by two Newton steps on u = (t - a)/(b - a) kept in (0, 1).
+** Two, not more: each is a division on the path to the answer, and the
+** refined guess's reversion step takes it much closer for the cost of one
+** (doc/benchmarks.md: the steps tried). */
+#define HERMITE_STEPS 2
+static double hermite_guess(double a, double b, double fa, double fb,
                             double plen, double goal) {
-  double w = b - a, fa = w * arclen_hodo_speed(h, a);
-  double fb = w * arclen_hodo_speed(h, b), u = goal / plen;
+  double w = b - a, u = goal / plen;
   int it;
+  fa *= w;
+  fb *= w;
   for (it = 0; it < HERMITE_STEPS; it++) {
     double u2 = u * u, u3 = u2 * u;
     double s = plen * (3 * u2 - 2 * u3) + fa * (u - 2 * u2 + u3) +
@@ -83,32 +130,55 @@ static double hermite_guess(const arclen_hodo *h, double a, double b,
   return a + w * u;
 }
 
-/* A better guess, no bound: s(t) from the piece's own rule r on the nearer
-** part of [a, b] (about as good as on the piece), then the third-order
-** step from it (series reversion).  The Hermite guess errs by up to ~1e-2
-** of the piece where a branch point stands near it; this step saves most
-** of the certified evaluations that would follow. */
-static double refine_guess(integrator *in, double a, double b, double plen,
-                           double goal, const arclen_gauss_rule *r,
-                           double t) {
-  double sg, f;
-  if (t - a <= b - t)
-    sg = arclen_apply_rule(&in->h, r, a + (t - a) / 2, (t - a) / 2) - goal;
-  else
-    sg = plen - arclen_apply_rule(&in->h, r, t + (b - t) / 2, (b - t) / 2) - goal;
-  f = arclen_hodo_speed(&in->h, t);
-  in->evals += r->n + 1;
-  if (f > 0) {
-    double d = -sg / f, f1, f2, e;
-    speed_slopes(&in->h, t, f, &f1, &f2);
-    e = d + reversion_tail(d, f, f1, f2);
-    if (t + e > a && t + e < b) return t + e;
+/* The piece's Bernstein ellipse holds a disc of radius r = a_semi - 1 =
+** e / (sqrt(1 + e) + 1) (times half_width) about every point of the
+** piece, where |f| <= M. */
+static double disc_radius(const piece_bound *pbound, double half_width) {
+  return half_width * pbound->e / (sqrt(1 + pbound->e) + 1);
+}
+
+/* The order for [c - h, c + h] from its own distance to the branch
+** points: no branch point lies within dist of the segment (dist, a lower
+** bound of the nearest one's distance, the larger of its offsets along and
+** across), so the Bernstein ellipse of semi-minor axis b = 0.9 dist, which
+** lies within b of the segment, holds none; every point within b of the
+** segment is within h + b of c, so |f| <= M = sqrt(lead2) prod (|c - re_k|
+** + im_k + h + b) over the pairs (as arclen_bound_piece); rho = (A + b)/h
+** with A = sqrt(h^2 + b^2) and rho^2 - 1 = 2 b (A + b)/h^2.  The ellipse
+** bound (integrator.h's head) then sets the order, a few operations where
+** the piece's ellipse sees only the branch point nearest to the piece: a
+** tenth of a piece away from it takes a third of the points.  The order
+** holds for every sub-range too (the same b: its ellipse lies within b of
+** it, so within the region of M, and its rho is larger), so it may be
+** taken before the sub-range is known.  0 when no order up to the tables'
+** does (a real root inside, or too near). */
+static int stadium_order(const integrator *in, double c, double h,
+                         double target) {
+  const arclen_branch *br = &in->br;
+  double dist = 32 * h, prod, b, A, lr, nn;
+  int k;
+  for (k = 0; k < br->n; k += 2) {
+    double dx = fabs(br->re[k] - c) - h, dk = dx > br->im[k] ? dx : br->im[k];
+    dist = dk < dist ? dk : dist;
   }
-  return t;
+  if (!(dist > 0)) return 0;
+  b = 0.9 * dist;
+  A = sqrt(h * h + b * b);
+  /* h (64/15) M / (target (rho^2 - 1)) but for sqrt(lead2), whose log2
+  ** lead_log bounds from above (it carries the factor 4/pi > 1 too) */
+  prod = h * h * h * (64.0 / 15.0) / (target * 2 * b * (A + b));
+  for (k = 0; k < br->n; k += 2) prod *= fabs(br->re[k] - c) + br->im[k] + h + b;
+  lr = arclen_rough_log2((A + b) / h) - ARCLEN_LOG2_ERR;
+  if (!(prod > 0 && prod < 1e300 && lr > 0)) return 0;   /* the other bounds */
+  nn = 1 + (arclen_rough_log2(prod) + in->lead_log + ARCLEN_LOG2_ERR) / (2 * lr);
+  return nn <= 2 ? 2 : nn < ARCLEN_GAUSS_MAX ? (int)ceil(nn) : 0;
 }
 
 /* The integral over [x, y] inside an accepted piece to within target
-** (scaled units).  The piece's Bernstein ellipse (ebound, half-width hp) holds
+** (scaled units).  Its order n when given (stadium_order's for a range
+** that holds it), else from its own distance to the branch points
+** (stadium_order); where that fails (a root too near), the piece's
+** Bernstein ellipse (ebound, half-width hp) holds
 ** the disc of radius r = hp (a_semi - 1) about every point of the piece
 ** (disc_radius), so a short [x, y] of half-width h has the
 ** ellipse of semi-minor axis r inside it, rho = r/h + sqrt(1 + (r/h)^2),
@@ -116,13 +186,17 @@ static double refine_guess(integrator *in, double a, double b, double plen,
 ** rho sets its order, for a few operations.  A longer one takes its own
 ** branch-cut bound, or the piece's rule r when that is not at hand. */
 static double sub_integral(integrator *in, double x, double y, double target,
-                           const piece_bound *ebound, double hp,
-                           const arclen_gauss_rule *r) {
-  double c = x + (y - x) / 2, h = (y - x) / 2;
-  double rad = disc_radius(ebound, hp);
-  int n = 0;
+                           double pa, double pb, const arclen_gauss_rule *r,
+                           int n) {
+  double c = x + (y - x) / 2, h = (y - x) / 2, hp = (pb - pa) / 2, rad = 0;
+  piece_bound eb, *ebound = &eb;
   if (!(h > 0)) return 0;
-  if (h < rad / 2) {
+  if (!n) n = stadium_order(in, c, h, target);
+  if (!n) {
+    arclen_bound_piece(&in->br, pa + hp, hp, ebound);
+    rad = disc_radius(ebound, hp);
+  }
+  if (!n && h < rad / 2) {
     double beta = rad / h, rho = beta + sqrt(1 + beta * beta);
     double lnum = arclen_rough_log2(h * (64.0 / 15.0) * ebound->m / target) -
                   arclen_rough_log2(rho * rho - 1) + 2 * ARCLEN_LOG2_ERR;
@@ -150,108 +224,242 @@ static double sub_integral(integrator *in, double x, double y, double target,
   return arclen_apply_rule(&in->h, r, c, h);
 }
 
-/* An accepted piece [a, b] (half-width hp), its length plen and rule r
-** (scaled units), and its Bernstein ellipse ebound (M and e for Cauchy's
-** estimates), shared by every search inside it. */
+
+/* s + e = a + b exactly (Knuth's TwoSum): a piece's s values are carried
+** from point to point, and the chain of many distances would otherwise
+** add a rounding per step. */
+static void two_sum(double a, double b, double *s, double *e) {
+  double x = a + b, bv = x - a, av = x - bv;
+  *s = x;
+  *e = (a - av) + (b - bv);
+}
+
+/* A point of the search whose s is known: s(t) - s(a) = s + sc (a
+** compensated pair), the speed f there (< 0: not taken yet) and inv = 1/f,
+** and, when slopes, its derivatives f1, f2, f3. */
+typedef struct known {
+  double t, s, sc, f, inv, f1, f2, f3;
+  int slopes;
+} known;
+
+/* The search inside an accepted piece [a, b] of length plen with rule r:
+** the bracket of the sweep, lo (s <= the goal) and hi (s above it, or the
+** piece's end), sqrt(lead2) for cauchy_near, and an order taken ahead
+** (eval_at, solve_goal) with the range and share it holds for. */
 typedef struct piece_search {
-  double a, b, plen, hp;
+  double a, b, plen, sqlead;
   const arclen_gauss_rule *r;
-  piece_bound ebound;
+  known lo, hi;
+  double pre_x, pre_y, pre_share;  /* stadium_order's pre_n holds there */
+  int pre_n;
 } piece_search;
+
+static void set_known(known *k, double t, double s) {
+  k->t = t;
+  k->s = s;
+  k->sc = 0;
+  k->f = -1;
+  k->slopes = 0;
+}
 
 static void search_piece(integrator *in, piece_search *p, double a, double b,
                          double plen, const arclen_gauss_rule *r) {
   p->a = a;
   p->b = b;
   p->plen = plen;
-  p->hp = (b - a) / 2;
   p->r = r;
-  arclen_bound_piece(&in->br, a + (b - a) / 2, (b - a) / 2, &p->ebound);
-  in->evals += 2;
+  p->sqlead = sqrt(in->br.lead2);
+  p->pre_n = 0;
+  set_known(&p->lo, a, 0);
+  set_known(&p->hi, b, plen);
 }
 
-/* [lo, hi] holds the answer; slo, shi: s there, from the piece's start. */
-typedef struct bracket {
-  double lo, slo, hi, shi;
-} bracket;
-
-/* Safeguarded Newton for s(t) = goal from the guess t inside the bracket
-** (goal in [slo, shi]): s is increasing, so the bracket always holds the
-** answer, and a step leaving it is replaced by bisection.  s(t) is taken
-** from the nearer end of the bracket, whose s is known, plus the integral
-** between (sub_integral): near the answer these are short and need few
-** points.  The k-th such integral may err by share 2^-k, so the s values
-** known err by less than 2 share more than the bracket's did.  The bracket
-** is left holding the last points evaluated, for a search that follows. */
-static double newton_search(integrator *in, const piece_search *p,
-                            bracket *bk, double t, double goal, double tol,
-                            double share) {
-  double lo = bk->lo, hi = bk->hi, slo = bk->slo, shi = bk->shi;
-  int it;
-  if (t < lo || t > hi) t = lo + (hi - lo) / 2;   /* a guess from the piece */
-  for (it = 0; it < 100; it++) {
-    double g, f, next;
-    if (t - lo <= hi - t)
-      g = slo + sub_integral(in, lo, t, share, &p->ebound, p->hp, p->r) - goal;
-    else
-      g = shi - sub_integral(in, t, hi, share, &p->ebound, p->hp, p->r) - goal;
-    share /= 2;
-    f = arclen_hodo_speed(&in->h, t);
+static double speed_of(integrator *in, known *k) {
+  if (k->f < 0) {
+    k->f = arclen_hodo_speed(&in->h, k->t);
+    k->inv = 1 / k->f;
     in->evals++;
-    if (g < 0) {
-      lo = t;
-      slo = g + goal;
-    } else if (g > 0) {
-      hi = t;
-      shi = g + goal;
-    }
-    if (fabs(g) <= tol) break;
-    next = f > 0 ? t - g / f : lo + (hi - lo) / 2;
-    if (!(f > 0 && next > lo && next < hi)) {   /* a Newton step only */
-      next = lo + (hi - lo) / 2;
-    } else if (newton_certified(&p->ebound, p->hp, next - t, tol)) {
-      t = next;
-      break;
+  }
+  return k->f;
+}
+
+static void slopes_of(integrator *in, known *k) {
+  if (!k->slopes && k->f > 0) {
+    speed_slopes(&in->h, k->t, k->inv, &k->f1, &k->f2, &k->f3);
+    k->slopes = 1;
+  }
+}
+
+/* How far ahead a forward range's order is taken (eval_at), in ranges. */
+#define WINDOW 4
+
+/* s at t inside the bracket: from the nearer end whose s is known, plus
+** the integral between to within share (sub_integral; near the answer it
+** is short and needs few points), and the speed there.  A forward range's
+** order is kept for WINDOW times its length (stadium_order's holds for
+** every sub-range), which a sweep's next ranges from a higher lo lie in. */
+
+static void eval_at(integrator *in, piece_search *p, double t,
+                    double share, known *k) {
+  double e, x = p->lo.t, y = t, sign = 1;
+  int n;
+  if (t - p->lo.t > p->hi.t - t) {
+    x = t;
+    y = p->hi.t;
+    sign = -1;
+  }
+  if (p->pre_n && share == p->pre_share && x >= p->pre_x && y <= p->pre_y) {
+    n = p->pre_n;
+  } else if (sign > 0) {
+    p->pre_x = x;
+    p->pre_y = fmin(x + WINDOW * (y - x), p->hi.t);
+    p->pre_share = share;
+    n = p->pre_n = stadium_order(in, p->pre_x + (p->pre_y - p->pre_x) / 2,
+                                 (p->pre_y - p->pre_x) / 2, share);
+  } else {
+    n = 0;
+  }
+  two_sum(sign < 0 ? p->hi.s : p->lo.s,
+          sign * sub_integral(in, x, y, share, p->a, p->b, p->r, n), &k->s, &e);
+  k->sc = (sign < 0 ? p->hi.sc : p->lo.sc) + e;
+  k->t = t;
+  k->f = -1;
+  k->slopes = 0;
+  speed_of(in, k);
+}
+
+/* Safeguarded Newton for s(t) = goal from the guess t inside the bracket:
+** s is increasing, so the bracket always holds the answer, and a step
+** leaving it is replaced by bisection.  The k-th integral may err by share
+** 2^-k, so the s values known err by less than 2 share more than the
+** bracket's did.  The bracket is left holding the last points evaluated,
+** for the next distance. */
+static double newton_search(integrator *in, piece_search *p, double t,
+                            double goal, double tol, double share) {
+  int it;
+  if (!(t > p->lo.t && t < p->hi.t))   /* a guess from outside: the middle */
+    t = p->lo.t + (p->hi.t - p->lo.t) / 2;
+  for (it = 0; it < 100; it++) {
+    known k, *kp;
+    double g, next, d, e, e3, lo, hi;
+    eval_at(in, p, t, share, &k);
+    share /= 2;
+    g = (k.s - goal) + k.sc;
+    if (g <= 0) {
+      p->lo = k;
+      kp = &p->lo;
     } else {
-      double f1, f2, e, d = -g / f, e3;
-      speed_slopes(&in->h, t, f, &f1, &f2);
-      e = second_order_step(&p->ebound, p->hp, d, f, f1, tol);
-      if (e != 0 && t + e > lo && t + e < hi) {
-        t = t + e;
-        break;
-      }
-      /* not certified: the next point from the third-order step (series
-      ** reversion, as refine_guess), nearer than Newton's for the same
-      ** slopes */
-      e3 = d + reversion_tail(d, f, f1, f2);
-      if (t + e3 > lo && t + e3 < hi) next = t + e3;
+      p->hi = k;
+      kp = &p->hi;
     }
-    if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) break;
+    if (fabs(g) <= tol) return t;
+    lo = p->lo.t;
+    hi = p->hi.t;
+    next = lo + (hi - lo) / 2;
+    if (kp->f > 0) {
+      d = -g * kp->inv;
+      if (t + d > lo && t + d < hi) {
+        cauchy cb;
+        cauchy_near(&in->br, p->sqlead, t, 2 * fabs(d), &cb);
+        if (newton_certified(&cb, d, tol)) return t + d;
+        slopes_of(in, kp);
+        e = second_order_step(&cb, d, kp->inv, kp->f1, tol);
+        if (e != 0 && t + e > lo && t + e < hi) return t + e;
+        e3 = reversion_step(&cb, d, kp->f, kp->inv, kp->f1, kp->f2, kp->f3, tol);
+        if (e3 != 0 && t + e3 > lo && t + e3 < hi) return t + e3;
+        /* not certified: the next point from the reversion step (series
+        ** reversion), nearer than Newton's for the same slopes */
+        e3 = d + reversion_tail(d, kp->inv, kp->f1, kp->f2, kp->f3);
+        next = t + e3 > lo && t + e3 < hi ? t + e3 : t + d;
+      }
+    }
+    if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) return t;
     t = next;
   }
-  bk->lo = lo;
-  bk->slo = slo;
-  bk->hi = hi;
-  bk->shi = shi;
   return t;
 }
 
-/* s(t) = goal inside the accepted piece [a, b] of length plen (goal in
-** [0, plen]): the Hermite guess, refined, then the Newton search with the
-** whole piece as its bracket and half of tol for its integrals. */
-static double solve_in_piece(integrator *in, double a, double b, double plen,
-                             double goal, double tol,
-                             const arclen_gauss_rule *r) {
-  piece_search p;
-  bracket bk;
-  double t = hermite_guess(&in->h, a, b, plen, goal);
-  search_piece(in, &p, a, b, plen, r);
-  t = refine_guess(in, a, b, plen, goal, r, t);
-  bk.lo = a;
-  bk.slo = 0;
-  bk.hi = b;
-  bk.shi = plen;
-  return newton_search(in, &p, &bk, t, goal, tol, tol / 2);
+/* The refined guess's order: a third of the piece's, for about a third
+** of its digits (the certificates then need the guess within ~1e-5 of the
+** piece; fewer points left more searches a second certified integral);
+** short rules whole, which keeps a straight piece's times exact. */
+static int refine_order(int n) {
+  return n < 6 ? n : (n + 1) / 3;
+}
+
+/* A better guess, no bound: s(t) from a rule of refine_order on the
+** nearer part of the bracket, then the reversion step from it (series
+** reversion).  The Hermite guess errs by up to ~1e-2 of the piece where a
+** branch point stands near it; this step takes it within reach of the
+** certificates for a rule without its bound. */
+static double refine_guess(integrator *in, const piece_search *p, double t,
+                           double goal) {
+  double sg, f, lo = p->lo.t, hi = p->hi.t;
+  const arclen_gauss_rule *r = arclen_rule_at_least(refine_order(p->r->n));
+  if (t - lo <= hi - t)
+    sg = (p->lo.s - goal) + p->lo.sc +
+         arclen_apply_rule(&in->h, r, lo + (t - lo) / 2, (t - lo) / 2);
+  else
+    sg = (p->hi.s - goal) + p->hi.sc -
+         arclen_apply_rule(&in->h, r, t + (hi - t) / 2, (hi - t) / 2);
+  f = arclen_hodo_speed(&in->h, t);
+  in->evals += r->n + 1;
+  if (f > 0) {
+    double inv = 1 / f, d = -sg * inv, f1, f2, f3, e;
+    speed_slopes(&in->h, t, inv, &f1, &f2, &f3);
+    e = d + reversion_tail(d, inv, f1, f2, f3);
+    if (t + e > lo && t + e < hi) return t + e;
+  }
+  return t;
+}
+
+/* s(t) = goal in the piece (goal in [0, plen]): the bracket moved up
+** past a goal beyond hi, then
+** the guess -- the reversion step from lo once lo is inside the piece
+** (a sweep's next distance: its speed and slopes are known), else the
+** Hermite guess on the bracket -- and the Newton search from it. */
+/* The reversion step from lo is a sweep's next distance's guess, and a
+** piece's first distance's when its Newton step from the piece's start is
+** within this share of the piece; a longer one takes the Hermite guess. */
+#define REVERSION_REACH 8
+
+static double solve_goal(integrator *in, piece_search *p, double goal,
+                         double tol, double share) {
+  double t = -1;
+  if (goal >= p->hi.s + p->hi.sc && p->hi.t < p->b) {
+    p->lo = p->hi;                     /* the last search ended above */
+    set_known(&p->hi, p->b, p->plen);
+  }
+  if (goal >= p->plen) return p->b;    /* on the last piece: s >= L */
+  if (speed_of(in, &p->lo) > 0) {
+    known *lo = &p->lo;
+    double d = (goal - lo->s - lo->sc) * lo->inv;
+    if (lo->t > p->a || d < (p->hi.t - lo->t) / REVERSION_REACH) {
+      slopes_of(in, lo);
+      t = lo->t + d + reversion_tail(d, lo->inv, lo->f1, lo->f2, lo->f3);
+    }
+  }
+  if (!(t > p->lo.t && t < p->hi.t)) {
+    double ds = p->hi.s - p->lo.s + (p->hi.sc - p->lo.sc);
+    double lo, hi, margin;
+    t = hermite_guess(p->lo.t, p->hi.t, speed_of(in, &p->lo),
+                      speed_of(in, &p->hi), ds,
+                      goal - p->lo.s - p->lo.sc);
+    /* the first certified integral's order, for the bracket's part from
+    ** its nearer end to a 32nd of it past the guess (the refined guess
+    ** moves it by less nine times in ten; else eval_at takes its own),
+    ** taken beside the refined guess, not after it */
+    lo = p->lo.t;
+    hi = p->hi.t;
+    margin = (hi - lo) / 32;
+    p->pre_x = t - lo <= hi - t ? lo : fmax(t - margin, lo);
+    p->pre_y = t - lo <= hi - t ? fmin(t + margin, hi) : hi;
+    p->pre_share = share;
+    p->pre_n = stadium_order(in, p->pre_x + (p->pre_y - p->pre_x) / 2,
+                             (p->pre_y - p->pre_x) / 2, share);
+    t = refine_guess(in, p, t, goal);
+  }
+  return newton_search(in, p, t, goal, tol, share);
 }
 
 /* time cuts at the feet within 0.2 of the width, more than the length
@@ -260,95 +468,40 @@ static double solve_in_piece(integrator *in, double a, double b, double plen,
 ** of a bound, a rule and a division (doc/benchmarks.md: the shares tried). */
 #define TIME_FOOTCUT 0.2
 
-/* time's common case, as arclen_integ_integrate() takes it: the first pieces' orders
-** straight from the branch points (arclen_cut_orders), then their rules in
-** increasing t up to the piece that holds the goal.  The first piece's
-** order comes alone, the others' only when the goal lies past it: at L/2
-** a third of the orders went to pieces never reached.  Returns 0 when
-** those orders are not to be had (a piece to cut, a real or far root):
-** the caller then takes the stack, whose pieces and rules before the
-** goal are the same, so the answer does not depend on where it failed. */
-static int time_first_pieces(integrator *in, double goal, double *t) {
-  double c[ARCLEN_CUT_PIECES], half_width[ARCLEN_CUT_PIECES], cum = 0;
-  int n[ARCLEN_CUT_PIECES], i;
-  arclen_integ_first_pieces(in, c, half_width);
-  if (!arclen_integ_orders_of(in, 0, 1, c, half_width, n)) return 0;
-  for (i = 0; i <= in->nmin; i++) {
-    if (i == 1 && !arclen_integ_orders_of(in, 1, in->nmin + 1, c, half_width, n))
-      return 0;
-    const arclen_gauss_rule *r = arclen_rule_at_least(n[i]);
-    double piece = arclen_apply_rule(&in->h, r, c[i], half_width[i]);
-    in->evals += r->n;
-    in->pieces++;
-    if (cum + piece >= goal) {
-      if (i == in->nmin && goal >= cum + piece) return 1;   /* t = 1 */
-      *t = solve_in_piece(in, arclen_first_from(in, i), arclen_first_to(in, i), piece,
-                          goal - cum, in->rtol * in->len_lower, r);
-      return 1;
-    }
-    cum += piece;
-  }
-  return 1;                            /* s >= L: t = 1 */
-}
-
-int arclen_time_gauss(const double *c, int dim, double s,
-                      const arclen_opts *o, double *t, arclen_info *info) {
-  integrator in;
-  double cum = 0, pa, pbound, piece, goal;
-  const arclen_gauss_rule *r;
-  int e;
-  e = arclen_integ_check_args(c, dim, o->rtol, 0, 1);   /* time ignores o->t0, t1 */
-  *t = NAN;
-  if (info) arclen_info_init(info);
-  if (e) return e;
-  if (isnan(s)) return ARCLEN_EINVAL;
-  if (s <= 0) { *t = 0; return ARCLEN_OK; }
-  if (!arclen_integ_start(&in, c, dim, 0, 1, o->rtol * 0.25, TIME_FOOTCUT)) {
-    *t = 1;              /* a point: every s > 0 is past its end */
-    return ARCLEN_OK;
-  }
-  in.want_err = info != NULL;
-  goal = ldexp(s, -in.h.exp);
-  *t = 1;
-  if (!in.want_err && time_first_pieces(&in, goal, t)) {
-    arclen_integ_fill_info(info, &in, in.h.exp);
-    return ARCLEN_OK;
-  }
-  arclen_integ_prepare_bounds(&in);
-  arclen_integ_push_initial(&in);
-  while (arclen_integ_next_piece(&in, &pa, &pbound, &piece, &r)) {
-    if (cum + piece >= goal) {
-      if (in.top == 0 && goal >= cum + piece) break;   /* s >= L: t = 1 */
-      *t = solve_in_piece(&in, pa, pbound, piece, goal - cum,
-                          o->rtol * 0.25 * in.len_lower, r);
-      break;
-    }
-    cum += piece;
-  }
-  arclen_integ_fill_info(info, &in, in.h.exp);
-  return ARCLEN_OK;
-}
-
 /* The pieces of the integral in increasing t: the first pieces with their
-** orders straight from the branch points when those are to be had (as
-** time_first_pieces), else the integrator's stack (as arclen_time_gauss). */
+** orders straight from the branch points when those are to be had (all
+** of them together, as the length takes them: their chains of square
+** roots and logs run side by side, which beats leaving the later pieces'
+** for when a distance lies past the first, doc/benchmarks.md), else the
+** integrator's stack, whose pieces and rules are the same
+** (spec/fastpath_spec.lua), so that the answer does not depend on which
+** path gave them. */
 typedef struct piece_walk {
   int fast, k;
   double c[ARCLEN_CUT_PIECES], half_width[ARCLEN_CUT_PIECES];
   int n[ARCLEN_CUT_PIECES];
 } piece_walk;
 
+static void walk_start(integrator *in, piece_walk *w) {
+  w->k = 0;
+  w->fast = !in->want_err && arclen_integ_first_orders(in, w->c, w->half_width, w->n);
+  if (!w->fast) {
+    arclen_integ_prepare_bounds(in);
+    arclen_integ_push_initial(in);
+  }
+}
+
 static int walk_next(integrator *in, piece_walk *w, double *a, double *b,
                      double *len, const arclen_gauss_rule **r, int *last) {
   if (w->fast) {
     if (w->k > in->nmin) return 0;
     *r = arclen_rule_at_least(w->n[w->k]);
-    *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->half_width[w->k]);
     *a = arclen_first_from(in, w->k);
     *b = arclen_first_to(in, w->k);
+    *last = w->k == in->nmin;
+    *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->half_width[w->k]);
     in->evals += (*r)->n;
     in->pieces++;
-    *last = w->k == in->nmin;
     w->k++;
     return 1;
   }
@@ -357,43 +510,71 @@ static int walk_next(integrator *in, piece_walk *w, double *a, double *b,
   return 1;
 }
 
-#define CHAIN 16
-
-/* A later distance in the same piece: the search starts from the bracket
-** the previous one left (its lower end lo, where s is slo < goal), with
-** the third-order step from lo as its guess (series reversion, as in
-** refine_guess), so its integrals are short. */
-static double chained_guess(const integrator *in, const bracket *bk,
-                            double goal) {
-  double f = arclen_hodo_speed(&in->h, bk->lo), t;
-  if (f > 0) {
-    double d = (goal - bk->slo) / f, f1, f2;
-    speed_slopes(&in->h, bk->lo, f, &f1, &f2);
-    t = bk->lo + d + reversion_tail(d, f, f1, f2);
-    if (t > bk->lo && t < bk->hi) return t;
-  }
-  return bk->lo + (bk->hi - bk->lo) / 2;
-}
-
-/* The distances s[i..] that the piece of length plen starting at cum
-** holds (as arclen_time_gauss decides it: s <= cum + plen, and on the last
-** piece not s >= cum + plen, which is t = 1), each s scaled by 2^-exp. */
+/* The distances s[i..] (scaled by 2^-exp) that the piece of length plen
+** starting at cum holds: s <= cum + plen, and every one on the last. */
 static long goals_in_piece(const double *s, long i, long n, int exp,
                            double cum, double plen, int last) {
   long j = i;
-  while (j < n) {
-    double g = ldexp(s[j], exp);
-    if (!(cum + plen >= g) || (last && g >= cum + plen)) break;
-    j++;
-  }
+  while (j < n && (last || arclen_times_pow2(s[j], exp) <= cum + plen)) j++;
   return j - i;
+}
+
+/* The sweep: t[i] for the ascending s[i] > 0 (i < n; t preset to 1), the
+** pieces in increasing t, each holding a run of distances searched one
+** after the other from where the last search ended.  The distances of a
+** piece share its tolerance: each one's integrals err by tol / m in all (m
+** distances in the piece), so that every s value known errs by less than
+** tol, as one search's do; the compensated sums keep their rounding to
+** one.  The Newton certificate takes tol on top. */
+static void sweep(const double *c, int dim, const double *s, long n,
+                  double rtol, double *t, arclen_info *info) {
+  integrator in;
+  piece_walk w;
+  piece_search p;
+  double cum = 0, tol, pa, pb, plen;
+  const arclen_gauss_rule *r;
+  long i = 0, m, q;
+  int last = 0;
+  if (!arclen_integ_start(&in, c, dim, 0, 1, rtol * 0.25, TIME_FOOTCUT)) {
+    if (info) arclen_integ_fill_info(info, &in, in.h.exp);
+    return;                            /* a point: every s > 0 is past it */
+  }
+  in.want_err = info != NULL;
+  walk_start(&in, &w);
+  tol = in.rtol * in.len_lower;
+  while (i < n && !last && walk_next(&in, &w, &pa, &pb, &plen, &r, &last)) {
+    m = goals_in_piece(s, i, n, -in.h.exp, cum, plen, last);
+    if (m > 0) {
+      double share = tol / (double)m / 2;
+      search_piece(&in, &p, pa, pb, plen, r);
+      for (q = 0; q < m; q++, i++) {
+        if (q > 0 && s[i] == s[i - 1])
+          t[i] = t[i - 1];
+        else
+          t[i] = solve_goal(&in, &p, arclen_times_pow2(s[i], -in.h.exp) - cum,
+                            tol, share);
+      }
+    }
+    cum += plen;
+  }
+  arclen_integ_fill_info(info, &in, in.h.exp);
+}
+
+int arclen_time_gauss(const double *c, int dim, double s,
+                      const arclen_opts *o, double *t, arclen_info *info) {
+  int e = arclen_integ_check_args(c, dim, o->rtol, 0, 1);   /* time ignores o->t0, t1 */
+  *t = NAN;
+  if (info) arclen_info_init(info);
+  if (e) return e;
+  if (isnan(s)) return ARCLEN_EINVAL;
+  if (s <= 0) { *t = 0; return ARCLEN_OK; }
+  *t = 1;
+  sweep(c, dim, &s, 1, o->rtol, t, info);
+  return ARCLEN_OK;
 }
 
 int arclen_times(const double *c, int dim, const double *s, long n,
                  double rtol, double *t, double *pts, double *tan) {
-  integrator in;
-  piece_walk w;
-  double cum = 0, tol;
   long i, j;
   int e = arclen_integ_check_args(c, dim, rtol, 0, 1);
   if (!e && n < 0) e = ARCLEN_EDOMAIN;
@@ -407,59 +588,7 @@ int arclen_times(const double *c, int dim, const double *s, long n,
   }
   for (i = 0; i < n && s[i] <= 0; i++) t[i] = 0;
   for (j = i; j < n; j++) t[j] = 1;
-  if (i < n && arclen_integ_start(&in, c, dim, 0, 1, rtol * 0.25,
-                                  TIME_FOOTCUT)) {
-    w.fast = arclen_integ_first_orders(&in, w.c, w.half_width, w.n);
-    w.k = 0;
-    if (!w.fast) {
-      arclen_integ_prepare_bounds(&in);
-      arclen_integ_push_initial(&in);
-    }
-    tol = in.rtol * in.len_lower;
-    while (i < n) {
-      double pa, pbound, plen;
-      const arclen_gauss_rule *r;
-      int last;
-      long m, q;
-      piece_search p;
-      bracket bk;
-      if (!walk_next(&in, &w, &pa, &pbound, &plen, &r, &last)) break;
-      m = goals_in_piece(s, i, n, -in.h.exp, cum, plen, last);
-      if (m > 0) {
-        /* A chain of searches, each from the bracket the last one left,
-        ** carries its s values on: CHAIN goals at most (then the piece's
-        ** ends again), each whose integrals err by tol / CHAIN in all, so
-        ** that the s values err by less than tol, as one search's do, and
-        ** the chain's roundings stay within CHAIN additions. */
-        double budget = tol / (double)(m < CHAIN ? m : CHAIN);
-        search_piece(&in, &p, pa, pbound, plen, r);
-        for (q = 0; q < m; q++, i++) {
-          double goal = ldexp(s[i], -in.h.exp) - cum, guess;
-          if (q > 0 && s[i] == s[i - 1]) {
-            t[i] = t[i - 1];
-            continue;
-          }
-          if (q % CHAIN == 0 || goal >= bk.shi) {   /* the piece's end */
-            bk.hi = pbound;
-            bk.shi = plen;
-          }
-          if (q % CHAIN == 0) {
-            bk.lo = pa;
-            bk.slo = 0;
-          }
-          if (bk.lo == pa) {
-            guess = refine_guess(&in, pa, pbound, plen, goal, r,
-                                 hermite_guess(&in.h, pa, pbound, plen, goal));
-          } else {
-            guess = chained_guess(&in, &bk, goal);
-          }
-          t[i] = newton_search(&in, &p, &bk, guess, goal, tol, budget / 2);
-        }
-      }
-      if (last) break;
-      cum += plen;
-    }
-  }
+  if (i < n) sweep(c, dim, s + i, n - i, rtol, t + i, NULL);
   /* ascending, as the distances: each t within tol L of its truth, so a t
   ** below the one before it may take that one's place and stay within */
   for (i = 1; i < n; i++)
