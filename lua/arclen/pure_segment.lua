@@ -1,0 +1,503 @@
+-- arclen.pure_segment -- the segments other than cubics in plain Lua, for
+-- the Lua engine (arclen.pure): lines, quadratic Beziers and conics
+-- (rational quadratics with weights (1, w, 1), Floater's eq. 1), 2D and
+-- 3D: length, time at a length, point, derivative, sub-range.  The
+-- numbers are checked by the caller (pure.lua); here c is a list of floats
+-- in the contract's order (points, then w) and d the dimension.
+--
+-- Lengths: a line by a scaled hypot; a quadratic in closed form, every
+-- difference rewritten as a sum of positive terms; a conic as the affine
+-- image of a circular (w < 1) or hyperbolic (w > 1) arc, its speed in the
+-- angle integrated by adaptive Gauss-Legendre (a circle's speed is
+-- constant there, so its length is exact at any tol); w = 1 is a
+-- quadratic.  Times: the inverse by safeguarded Newton steps on those
+-- lengths, within tol * L.
+local rules = require("arclen.pure_rules")
+
+local abs, sqrt, log, huge = math.abs, math.sqrt, math.log, math.huge
+local sin, cos, atan, exp, floor = math.sin, math.cos, math.atan, math.exp, math.floor
+
+local M = {}
+
+-- kind name -> {letter, points}; the letters of the packed kinds string.
+M.KINDS = {line = {letter = "L", npts = 2}, quad = {letter = "Q", npts = 3},
+           cubic = {letter = "C", npts = 4}, conic = {letter = "R", npts = 3, w = true}}
+M.NAME = {L = "line", Q = "quad", C = "cubic", R = "conic"}
+
+-- The count of numbers of a kind in d dimensions.
+function M.count(kind, d)
+  local k = M.KINDS[kind]
+  return k.npts * d + (k.w and 1 or 0)
+end
+
+-- ---- small exact-enough helpers ----------------------------------------
+
+local LN2 = log(2)
+
+-- log(1 + x) to a few ulps (Goldberg's trick: the rounding of 1 + x cancels).
+local function log1p(x)
+  local u = 1 + x
+  if u == 1 then return x end
+  return log(u) * x / (u - 1)
+end
+
+local function asinh(x)
+  local ax, r = abs(x), nil
+  if ax > 1e8 then r = log(ax) + LN2          -- 1/(4 x^2) below an ulp
+  else r = log1p(ax + ax * ax / (1 + sqrt(1 + ax * ax))) end
+  return x < 0 and -r or r
+end
+
+local function atanh(x) return 0.5 * log1p(2 * x / (1 - x)) end
+
+-- sinh and cosh (gone from Lua 5.4's math): small |x| by the series, so
+-- that sinh keeps its relative precision.
+local function sinh_cosh(x)
+  local ax = abs(x)
+  if ax < 0.5 then
+    local x2, term, sh = x * x, x, x
+    for k = 1, 12 do
+      term = term * x2 / ((2 * k) * (2 * k + 1))
+      sh = sh + term
+    end
+    return sh, sqrt(1 + sh * sh)
+  end
+  local e = exp(ax)
+  local sh, ch = (e - 1 / e) / 2, (e + 1 / e) / 2
+  return x < 0 and -sh or sh, ch
+end
+
+local function tanh(x)
+  local sh, ch = sinh_cosh(x)
+  return sh / ch
+end
+
+local function tan(x) return sin(x) / cos(x) end
+
+-- |v| for a vector of d components, scaled so that no square over- or
+-- underflows.
+local function norm(v, d)
+  local m = 0
+  for i = 1, d do if abs(v[i]) > m then m = abs(v[i]) end end
+  if m == 0 or m == huge then return m end
+  local s = 0
+  for i = 1, d do
+    local q = v[i] / m
+    s = s + q * q
+  end
+  return m * sqrt(s)
+end
+M.norm = norm
+
+-- Point i (1-based) of c as a list of d numbers.
+local function pt(c, i, d)
+  local p = {}
+  for j = 1, d do p[j] = c[(i - 1) * d + j] end
+  return p
+end
+
+local function diff(p, q, d)
+  local r = {}
+  for j = 1, d do r[j] = p[j] - q[j] end
+  return r
+end
+
+-- ---- lines -----------------------------------------------------------
+
+local function line_length(c, d)
+  return norm(diff(pt(c, 2, d), pt(c, 1, d), d), d)
+end
+
+-- ---- quadratic Beziers -------------------------------------------------
+
+-- The quadratic's speed 2 |A + t B| (A = P1 - P0, B = P2 - 2 P1 + P0) as
+-- its coefficients a = B.B, b = A.B, c = A.A and K = |A x B|^2 = a c - b^2
+-- (from the legs P1 - P0, P2 - P1, so that it does not cancel), all scaled
+-- by 1/m^2 (m the largest leg component; the length is m times the
+-- scaled one).
+local function quad_setup(c, d)
+  local A, E, B = {}, {}, {}
+  local m = 0
+  for j = 1, d do
+    A[j] = c[d + j] - c[j]
+    E[j] = c[2 * d + j] - c[d + j]
+    if abs(A[j]) > m then m = abs(A[j]) end
+    if abs(E[j]) > m then m = abs(E[j]) end
+  end
+  local q = {m = m}
+  if m == 0 then return q end
+  for j = 1, d do
+    A[j] = A[j] / m
+    E[j] = E[j] / m
+    B[j] = E[j] - A[j]
+  end
+  local a, b, cc = 0, 0, 0
+  for j = 1, d do
+    a = a + B[j] * B[j]
+    b = b + A[j] * B[j]
+    cc = cc + A[j] * A[j]
+  end
+  local K
+  if d == 2 then
+    local x = A[1] * E[2] - A[2] * E[1]      -- A x B = A x E
+    K = x * x
+  else
+    local x = A[2] * E[3] - A[3] * E[2]
+    local y = A[3] * E[1] - A[1] * E[3]
+    local z = A[1] * E[2] - A[2] * E[1]
+    K = x * x + y * y + z * z
+  end
+  q.A, q.B, q.a, q.b, q.c, q.K, q.d = A, B, a, b, cc, K, d
+  return q
+end
+
+-- The speed |dP/dt| at t (in the curve's units).
+local function quad_speed(q, t)
+  if q.m == 0 then return 0 end
+  local v = {}
+  for j = 1, q.d do v[j] = 2 * (q.A[j] + t * q.B[j]) end
+  return q.m * norm(v, q.d)
+end
+
+-- The length of the quadratic between t0 <= t1:
+--   L = [U R + K asinh(U / sqrt K)]_{U0}^{U1} / a^(3/2),  U = a t + b,
+--   R = sqrt(U^2 + K),
+-- as the integral of 2 sqrt((U^2 + K) / a) dt.  Ends of one sign: both
+-- differences rewritten without cancellation (U1 - U0 = a (t1 - t0)):
+--   U1 R1 - U0 R0 = (U1 - U0)(U1 + U0)(U1^2 + U0^2 + K) / (U1 R1 + U0 R0)
+--   asinh(U1/k) - asinh(U0/k) = asinh((U1 - U0)(U1 + U0) / (U1 R0 + U0 R1))
+-- (the second by asinh x - asinh y = asinh(x sqrt(1+y^2) - y sqrt(1+x^2))).
+-- Nearly straight (a < 1e-16 c: the direction turns by less than 1e-8)
+-- the chord, within (turn)^2/24 of the arc.
+local function quad_length(q, t0, t1)
+  if q.m == 0 or t1 <= t0 then return 0 end
+  local a, b, K = q.a, q.b, q.K
+  if a <= 1e-16 * q.c then
+    -- P(t1) - P(t0) = (t1 - t0)(2 A + (t1 + t0) B)
+    local v, s = {}, t1 + t0
+    for j = 1, q.d do v[j] = 2 * q.A[j] + s * q.B[j] end
+    return q.m * (t1 - t0) * norm(v, q.d)
+  end
+  local U0, U1, dU = a * t0 + b, a * t1 + b, a * (t1 - t0)
+  local br
+  if U0 < 0 and U1 > 0 then                    -- the vertex is inside: two sums
+    local R0, R1 = sqrt(U0 * U0 + K), sqrt(U1 * U1 + K)
+    br = U1 * R1 - U0 * R0
+    if K > 0 then
+      local k = sqrt(K)
+      br = br + K * (asinh(U1 / k) - asinh(U0 / k))
+    end
+  else
+    if U1 <= 0 then U0, U1 = -U1, -U0 end      -- reflect: 0 <= U0 < U1
+    local R0, R1 = sqrt(U0 * U0 + K), sqrt(U1 * U1 + K)
+    local sum = U1 + U0
+    br = dU * sum * (U1 * U1 + U0 * U0 + K) / (U1 * R1 + U0 * R0)
+    if K > 0 then br = br + K * asinh(dU * sum / (U1 * R0 + U0 * R1)) end
+  end
+  return q.m * br / (a * sqrt(a))
+end
+
+-- ---- conics -------------------------------------------------------------
+
+-- The conic (P0, P1, P2; w) as c + U cos th + V sin th, th in [-al, al],
+-- al = acos w (w < 1), or c + U cosh th + V sinh th, th in [-al, al], al =
+-- acosh w (w > 1), with m = (P0 + P2)/2, D = P1 - m, h = (P2 - P0)/2:
+--   U = D w / (1 - w^2),  V = h / sqrt|1 - w^2|
+-- (at th = 0 the curve's midpoint (m + w P1)/(1 + w), at the ends P0, P2).
+-- The rational parameter is the half-angle one: tan(th/2) = (2t - 1)
+-- tan(al/2) (tanh for w > 1).  The speed in th is |V cos th - U sin th|
+-- (|V cosh th + U sinh th|), smooth on [-al, al]: constant on a circle.
+local function conic_setup(c, d)
+  local w = c[3 * d + 1]
+  local k = {w = w, d = d}
+  if w == 1 then
+    k.quad = quad_setup(c, d)
+    return k
+  end
+  local U, V = {}, {}
+  local one = (1 - w) * (1 + w)              -- exact enough: 1 - w exact near 1
+  local hyp = w > 1
+  local s = 1 / sqrt(abs(one))
+  for j = 1, d do
+    local p0, p1, p2 = c[j], c[d + j], c[2 * d + j]
+    local h = (p2 - p0) / 2
+    local D = (p1 - p0) - h                   -- P1 - m, from the legs
+    U[j] = D * w / one
+    V[j] = h * s
+  end
+  local al
+  if hyp then al = log1p((w - 1) + sqrt(-one))           -- acosh w
+  else al = 2 * atan(sqrt((1 - w) / (1 + w))) end        -- acos w, accurate near 1
+  k.U, k.V, k.hyp, k.al = U, V, hyp, al
+  k.th = hyp and tanh(al / 2) or tan(al / 2)
+  return k
+end
+
+local function conic_speed_th(k, th)
+  local v = {}
+  if k.hyp then
+    local sh, ch = sinh_cosh(th)
+    for j = 1, k.d do v[j] = k.V[j] * ch + k.U[j] * sh end
+  else
+    local ct, st = cos(th), sin(th)
+    for j = 1, k.d do v[j] = k.V[j] * ct - k.U[j] * st end
+  end
+  return norm(v, k.d)
+end
+
+-- The angle of the rational parameter t and back.
+local function th_of_t(k, t)
+  local x = (2 * t - 1) * k.th
+  if k.hyp then return 2 * atanh(x) end
+  return 2 * atan(x)
+end
+
+local function t_of_th(k, th)
+  if th <= -k.al then return 0 end
+  if th >= k.al then return 1 end
+  local x = k.hyp and tanh(th / 2) or tan(th / 2)
+  local t = (1 + x / k.th) / 2
+  if t < 0 then return 0 elseif t > 1 then return 1 end
+  return t
+end
+
+-- Gauss-Legendre on [a, b] with rule R (nodes symmetric about 0).
+local function gl(f, a, b, R)
+  local c, h = (a + b) / 2, (b - a) / 2
+  local s = 0
+  for i = 1, #R.x do
+    local x, wt = R.x[i], R.w[i]
+    if x == 0 then s = s + wt * f(c)
+    else s = s + wt * (f(c - h * x) + f(c + h * x)) end
+  end
+  return s * h
+end
+
+local RULE = rules[16]
+local MAX_PIECES = 4096
+
+-- int_a^b f by adaptive Gauss-Legendre: a piece is accepted when its two
+-- halves agree with the whole to rtol/4 of the piece (relative, so that
+-- the pieces' errors add up to rtol/4 of the whole); returns the integral
+-- and the count of evaluations.
+local function adaptive(f, a, b, rtol)
+  if b <= a then return 0, 0 end
+  local total, evals = 0, 0
+  local stack = {{a, b, gl(f, a, b, RULE)}}
+  evals = evals + 16
+  local guard = 0
+  while #stack > 0 do
+    guard = guard + 1
+    local top = table.remove(stack)
+    local x, y, whole = top[1], top[2], top[3]
+    local m = (x + y) / 2
+    local l, r = gl(f, x, m, RULE), gl(f, m, y, RULE)
+    evals = evals + 32
+    local both = l + r
+    if abs(both - whole) <= 0.25 * rtol * abs(both) or guard > MAX_PIECES
+       or m <= x or m >= y then
+      total = total + both
+    else
+      stack[#stack + 1] = {m, y, r}
+      stack[#stack + 1] = {x, m, l}
+    end
+  end
+  return total, evals
+end
+
+-- The conic's length between angles a < b.
+local function conic_length_th(k, a, b, rtol)
+  local f = function(th) return conic_speed_th(k, th) end
+  return adaptive(f, a, b, rtol)
+end
+
+-- ---- the kinds' functions -----------------------------------------------
+
+-- The point at t.
+function M.point(kind, c, d, t)
+  local out = {}
+  if kind == "line" then
+    local s = 1 - t
+    for j = 1, d do out[j] = s * c[j] + t * c[d + j] end
+  elseif kind == "quad" then
+    local s = 1 - t
+    local b0, b1, b2 = s * s, 2 * t * s, t * t
+    for j = 1, d do out[j] = b0 * c[j] + b1 * c[d + j] + b2 * c[2 * d + j] end
+  else  -- conic: N(t)/D(t), exact at the ends
+    local w, s = c[3 * d + 1], 1 - t
+    if t == 0 then for j = 1, d do out[j] = c[j] end return out end
+    if t == 1 then for j = 1, d do out[j] = c[2 * d + j] end return out end
+    local b0, b1, b2 = s * s, 2 * w * t * s, t * t
+    local den = b0 + b1 + b2
+    for j = 1, d do out[j] = (b0 * c[j] + b1 * c[d + j] + b2 * c[2 * d + j]) / den end
+  end
+  return out
+end
+
+-- The derivative in t (the rational one for a conic:
+-- 2 [w (1-t)^2 (P1-P0) + t (1-t) (P2-P0) + w t^2 (P2-P1)] / D(t)^2).
+function M.derivative(kind, c, d, t)
+  local out = {}
+  if kind == "line" then
+    for j = 1, d do out[j] = c[d + j] - c[j] end
+  elseif kind == "quad" then
+    local s = 1 - t
+    for j = 1, d do out[j] = 2 * (s * (c[d + j] - c[j]) + t * (c[2 * d + j] - c[d + j])) end
+  else
+    local w, s = c[3 * d + 1], 1 - t
+    local den = s * s + 2 * w * t * s + t * t
+    for j = 1, d do
+      local p0, p1, p2 = c[j], c[d + j], c[2 * d + j]
+      out[j] = 2 * (w * s * s * (p1 - p0) + t * s * (p2 - p0) + w * t * t * (p2 - p1))
+               / (den * den)
+    end
+  end
+  return out
+end
+
+-- The direction where the derivative vanishes (a unit vector's limit):
+-- a quadratic's second derivative (its negative at t = 1, approached from
+-- the left); a conic's chord P2 - P0 (P1 on an end point); a line has none.
+function M.fallback_direction(kind, c, d, t)
+  local v = {}
+  if kind == "quad" then
+    for j = 1, d do
+      v[j] = c[2 * d + j] - 2 * c[d + j] + c[j]
+      if t == 1 then v[j] = -v[j] end
+    end
+  elseif kind == "conic" then
+    for j = 1, d do v[j] = c[2 * d + j] - c[j] end
+  else
+    for j = 1, d do v[j] = 0 end
+  end
+  return v
+end
+
+-- The length; the second result counts the speed evaluations.
+function M.length(kind, c, d, rtol)
+  if kind == "line" then return line_length(c, d), 1 end
+  if kind == "quad" then return quad_length(quad_setup(c, d), 0, 1), 1 end
+  local k = conic_setup(c, d)
+  if k.quad then return quad_length(k.quad, 0, 1), 1 end
+  return conic_length_th(k, -k.al, k.al, rtol)
+end
+
+-- The times of the ascending distances s[1..] (each in [0, L], L the
+-- segment's length as measured by M.length), each with |s(t) - s| <=
+-- tol L; returns the times and the count of evaluations.
+function M.times(kind, c, d, L, s, rtol)
+  local ts, evals = {}, 0
+  if kind == "line" then
+    for q = 1, #s do
+      local t = L > 0 and s[q] / L or 0
+      ts[q] = t < 0 and 0 or (t > 1 and 1 or t)
+    end
+    return ts, #s
+  end
+  local len, speed, lo0, hi0, to_t
+  local goal_tol = 0.5 * rtol * L
+  if kind == "quad" or (kind == "conic" and c[3 * d + 1] == 1) then
+    local q = quad_setup(c, d)
+    len = function(a, b) evals = evals + 1; return quad_length(q, a, b) end
+    speed = function(t) return quad_speed(q, t) end
+    lo0, hi0, to_t = 0, 1, function(t) return t end
+  else
+    local k = conic_setup(c, d)
+    len = function(a, b)
+      local v, e = conic_length_th(k, a, b, rtol)
+      evals = evals + e
+      return v
+    end
+    speed = function(th) return conic_speed_th(k, th) end
+    lo0, hi0 = -k.al, k.al
+    to_t = function(th) return t_of_th(k, th) end
+  end
+  -- a sweep: the anchor (x, at distance sa) only moves forward
+  local ax, sa = lo0, 0
+  for q = 1, #s do
+    local goal = s[q]
+    if goal <= 0 then ts[q] = 0
+    elseif goal >= L then ts[q] = 1
+    else
+      if goal < sa then ax, sa = lo0, 0 end       -- not ascending: start over
+      local lo, hi = ax, hi0
+      local v0 = speed(ax)
+      local x = v0 > 0 and ax + (goal - sa) / v0 or (ax + hi) / 2
+      if not (x > lo and x < hi) then x = (lo + hi) / 2 end
+      local found = nil
+      for _ = 1, 100 do
+        local v = sa + len(ax, x)
+        local f = v - goal
+        if abs(f) <= goal_tol then found = x break end
+        if f < 0 then
+          lo, ax, sa = x, x, v                     -- the anchor moves on
+        else
+          hi = x
+        end
+        local sp = speed(x)
+        local nx = sp > 0 and x - f / sp or nil
+        if not nx or not (nx > lo and nx < hi) then nx = (lo + hi) / 2 end
+        if nx == x or hi - lo <= 0 then found = x break end
+        x = nx
+      end
+      ts[q] = to_t(found or x)
+    end
+  end
+  return ts, evals
+end
+
+-- The piece from t0 to t1 (t0 > t1: reversed), of the same kind; the ends
+-- exact where t is 0 or 1.
+function M.sub(kind, c, d, t0, t1)
+  local out = {}
+  local function put(i, p) for j = 1, d do out[(i - 1) * d + j] = p[j] end end
+  if kind == "line" then
+    put(1, M.point(kind, c, d, t0))
+    put(2, M.point(kind, c, d, t1))
+    return out
+  end
+  if kind == "quad" then
+    -- blossom b(u, v) = (1-u)(1-v) P0 + ((1-u) v + u (1-v)) P1 + u v P2
+    local function blossom(u, v)
+      local p = {}
+      for j = 1, d do
+        local p0, p1, p2 = c[j], c[d + j], c[2 * d + j]
+        local a0, a1 = p0 + u * (p1 - p0), p1 + u * (p2 - p1)
+        p[j] = a0 + v * (a1 - a0)
+      end
+      return p
+    end
+    put(1, M.point(kind, c, d, t0))
+    put(2, blossom(t0, t1))
+    put(3, M.point(kind, c, d, t1))
+    return out
+  end
+  -- conic: the blossom of the homogeneous curve (P0, 1), (w P1, w), (P2, 1)
+  local w = c[3 * d + 1]
+  local function hblossom(u, v)
+    local p, wt = {}, 0
+    local a0w, a1w = 1 + u * (w - 1), w + u * (1 - w)
+    wt = a0w + v * (a1w - a0w)
+    for j = 1, d do
+      local h0, h1, h2 = c[j], w * c[d + j], c[2 * d + j]
+      local a0, a1 = h0 + u * (h1 - h0), h1 + u * (h2 - h1)
+      p[j] = a0 + v * (a1 - a0)
+    end
+    return p, wt
+  end
+  local q0, w0 = hblossom(t0, t0)
+  local q1, w1 = hblossom(t0, t1)
+  local q2, w2 = hblossom(t1, t1)
+  for j = 1, d do q0[j], q1[j], q2[j] = q0[j] / w0, q1[j] / w1, q2[j] / w2 end
+  put(1, t0 == 0 and pt(c, 1, d) or t0 == 1 and pt(c, 3, d) or q0)
+  put(2, q1)
+  put(3, t1 == 0 and pt(c, 1, d) or t1 == 1 and pt(c, 3, d) or q2)
+  out[3 * d + 1] = w1 / sqrt(w0 * w2)       -- weights (w0, w1, w2) -> (1, w', 1)
+  return out
+end
+
+-- The conic as its own angle parametrization, for the specs.
+M._conic_setup, M._th_of_t, M._t_of_th = conic_setup, th_of_t, t_of_th
+M._floor = floor
+
+return M
