@@ -1,0 +1,168 @@
+/*
+** conic_seg.c -- the conic segment: the rational quadratic Bezier P0 P1 P2
+** with weights (1, w, 1), w > 0 (Floater's eq. 1), in 2D and 3D.  The piece
+** over [t0, t1] is again such a conic (the homogeneous blossom, weights
+** renormalized to (1, w', 1)), so every partial length is the exact one of
+** conic/conic_length.c.  A 3D arc lies in the plane of its points and is
+** measured on its isometric image in 2D, built from |a|, a.c and |a x c|
+** alone; a flat triangle (collinear points) is a segment run along a line,
+** possibly turning back, measured as the variation of its coordinate.
+*/
+#include <float.h>
+#include <math.h>
+
+#include "arclen.h"
+#include "segment/segment.h"
+
+static double dot(const double *u, const double *v, int dim) {
+  double s = u[0] * v[0] + u[1] * v[1];
+  return dim == 3 ? s + u[2] * v[2] : s;
+}
+
+/* The homogeneous blossom's weight W(u, v) and the point of B(u, v),
+** formed relative to P0 (so far-away points keep the legs' digits). */
+static double blossom(const double *p, int dim, double u, double v,
+                      double *out) {
+  double w = p[3 * dim];
+  double b0 = (1 - u) * (1 - v), b1 = ((1 - u) * v + u * (1 - v)) * w;
+  double b2 = u * v, W = b0 + b1 + b2;
+  int k;
+  for (k = 0; k < dim; k++)
+    out[k] = p[k] + (b1 * (p[dim + k] - p[k]) + b2 * (p[2 * dim + k] - p[k])) / W;
+  return W;
+}
+
+void arclen_rquad_sub(const double *p, int dim, double t0, double t1,
+                      double *out) {
+  double W0 = blossom(p, dim, t0, t0, out);
+  double W1 = blossom(p, dim, t0, t1, out + dim);
+  double W2 = blossom(p, dim, t1, t1, out + 2 * dim);
+  int k;
+  /* the ends exactly where the curve's ends are */
+  if (t0 == 0 || t0 == 1)
+    for (k = 0; k < dim; k++) out[k] = p[t0 == 0 ? k : 2 * dim + k];
+  if (t1 == 0 || t1 == 1)
+    for (k = 0; k < dim; k++) out[2 * dim + k] = p[t1 == 0 ? k : 2 * dim + k];
+  /* weights (W0, W1, W2) -> (1, W1/sqrt(W0 W2), 1): the same curve
+  ** (Farin, "NURBS", the standard form); square roots apart so that no
+  ** product overflows */
+  out[3 * dim] = W1 / (sqrt(W0) * sqrt(W2));
+}
+
+void arclen_rquad_point(const double *p, int dim, double t, double *out) {
+  double w = p[3 * dim], s = 1 - t;
+  double b0 = s * s, b1 = 2 * s * t * w, b2 = t * t, D = b0 + b1 + b2;
+  int k;
+  for (k = 0; k < dim; k++) {
+    /* relative to the nearer end: P0 at t = 0 and P2 at t = 1 exactly */
+    if (t <= 0.5)
+      out[k] = p[k] + (b1 * (p[dim + k] - p[k]) + b2 * (p[2 * dim + k] - p[k])) / D;
+    else
+      out[k] = p[2 * dim + k]
+               + (b0 * (p[k] - p[2 * dim + k]) + b1 * (p[dim + k] - p[2 * dim + k])) / D;
+  }
+}
+
+/* C'(t) = 2 [w (1-t)^2 (P1 - P0) + t (1-t) (P2 - P0) + w t^2 (P2 - P1)] / D^2,
+** D = (1-t)^2 + 2 w t (1-t) + t^2 (the quotient rule; the t^3 terms
+** cancel). */
+void arclen_rquad_derivative(const double *p, int dim, double t,
+                             double *out) {
+  double w = p[3 * dim], s = 1 - t, D = s * s + 2 * w * t * s + t * t;
+  int k;
+  for (k = 0; k < dim; k++)
+    out[k] = 2 * (w * s * s * (p[dim + k] - p[k])
+                  + t * s * (p[2 * dim + k] - p[k])
+                  + w * t * t * (p[2 * dim + k] - p[dim + k])) / (D * D);
+}
+
+/* X(t) for the 1D conic (0, x1, x2; w). */
+static double coord(double x1, double x2, double w, double t) {
+  double s = 1 - t;
+  if (t <= 0.5) return (2 * w * t * s * x1 + t * t * x2) / (s * s + 2 * w * t * s + t * t);
+  return x2 + (s * s * (-x2) + 2 * w * t * s * (x1 - x2)) / (s * s + 2 * w * t * s + t * t);
+}
+
+/* The length of a conic whose points lie on a line: the total variation
+** of its coordinate along the line's direction (the longest leg's), split
+** where X' = 0, i.e. at the roots of w x1 + (x2 - 2 w x1) t + (w - 1) x2 t^2
+** (the numerator of C' above) in (0, 1). */
+static double collinear_length(const double *p, int dim) {
+  double leg[3][3], len[3], e[3], x1, x2, w = p[3 * dim];
+  double re[2], im[2], ts[4], L = 0;
+  int i, k, best = 0, n, m = 0;
+  for (k = 0; k < dim; k++) {
+    leg[0][k] = p[dim + k] - p[k];
+    leg[1][k] = p[2 * dim + k] - p[dim + k];
+    leg[2][k] = p[2 * dim + k] - p[k];
+  }
+  for (i = 0; i < 3; i++) {
+    len[i] = arclen_seg_norm(leg[i], dim);
+    if (len[i] > len[best]) best = i;
+  }
+  if (!(len[best] > 0)) return 0;           /* a point */
+  for (k = 0; k < dim; k++) e[k] = leg[best][k] / len[best];
+  x1 = dot(leg[0], e, dim);
+  x2 = dot(leg[2], e, dim);
+  ts[m++] = 0;
+  n = arclen_quadratic((w - 1) * x2, x2 - 2 * w * x1, w * x1, re, im);
+  for (i = 0; i < n; i++)
+    if (im[i] == 0 && re[i] > 0 && re[i] < 1) ts[m++] = re[i];
+  if (m == 3 && ts[2] < ts[1]) { double r = ts[1]; ts[1] = ts[2]; ts[2] = r; }
+  ts[m++] = 1;
+  for (i = 0; i + 1 < m; i++)
+    L += fabs(coord(x1, x2, w, ts[i + 1]) - coord(x1, x2, w, ts[i]));
+  return L;
+}
+
+/* The whole arc's length. */
+static int whole_length(const double *p, int dim, double *len,
+                        arclen_info *info) {
+  double q[6], w = p[3 * dim];
+  int k;
+  if (dim == 3) {
+    /* the isometric image in the plane: P0 -> 0, P1 -> (|a|, 0), P2 -> P1
+    ** + (a.c/|a|, |a x c|/|a|) */
+    double a[3], c[3], x[3], la, lc, lx;
+    for (k = 0; k < 3; k++) {
+      a[k] = p[3 + k] - p[k];
+      c[k] = p[6 + k] - p[3 + k];
+    }
+    x[0] = a[1] * c[2] - a[2] * c[1];
+    x[1] = a[2] * c[0] - a[0] * c[2];
+    x[2] = a[0] * c[1] - a[1] * c[0];
+    la = arclen_seg_norm(a, 3);
+    lc = arclen_seg_norm(c, 3);
+    lx = arclen_seg_norm(x, 3);
+    /* a flat triangle: the same test as arclen_conic_degenerate's */
+    if (!(la > 0) || !(lc > 0) || !(lx / la / lc > 16 * DBL_EPSILON)) {
+      *len = collinear_length(p, 3);
+      return isfinite(*len) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
+    }
+    q[0] = 0; q[1] = 0; q[2] = la; q[3] = 0;
+    q[4] = la + dot(a, c, 3) / la; q[5] = lx / la;
+  } else {
+    for (k = 0; k < 6; k++) q[k] = p[k];
+    if (arclen_conic_degenerate(q)) {
+      *len = collinear_length(p, 2);
+      return isfinite(*len) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
+    }
+  }
+  return arclen_conic_length(q, w, len, info);
+}
+
+int arclen_rquad_length(const double *p, int dim, double t0, double t1,
+                        double *len, arclen_info *info) {
+  double sub[10], lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
+  int rc;
+  *len = 0;
+  if (lo == hi) return ARCLEN_OK;
+  if (lo == 0 && hi == 1) {
+    rc = whole_length(p, dim, len, info);
+  } else {
+    arclen_rquad_sub(p, dim, lo, hi, sub);
+    rc = whole_length(sub, dim, len, info);
+  }
+  if (rc == ARCLEN_OK && t1 < t0) *len = -*len;
+  return rc;
+}
