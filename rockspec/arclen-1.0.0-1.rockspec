@@ -82,6 +82,7 @@ build = {
     ["arclen.pure"] = "lua/arclen/pure.lua",
     ["arclen.pure_gauss"] = "lua/arclen/pure_gauss.lua",
     ["arclen.pure_rules"] = "lua/arclen/pure_rules.lua",
+    ["arclen.pure_segment"] = "lua/arclen/pure_segment.lua",
     ["arclen.pure_svgpath"] = "lua/arclen/pure_svgpath.lua",
     ["arclen.repro.conicplot"] = "lua/arclen/repro/conicplot.lua",
     ["arclen.repro.fitstats"] = "lua/arclen/repro/fitstats.lua",

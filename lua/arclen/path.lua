@@ -271,7 +271,8 @@ end
 -- 4 points), or tagged with its kind: {kind = "line", x0, y0, x1, y1} or
 -- {"line", x0, y0, x1, y1}, the numbers flat or as points ({kind =
 -- "conic", {x0, y0}, {x1, y1}, {x2, y2}, w}; a conic's w may also be the
--- field w).  Returns the kind and the flat numbers (checked).
+-- field w).  Returns the kind, the flat numbers (checked), the dimension
+-- and the segment's name for messages.
 local function read_segment(c, k, fname)
   if type(c) ~= "table" then
     argerror(1, fname, format("segment %d must be a table, got %s", k, type(c)))
@@ -321,7 +322,7 @@ local function read_segment(c, k, fname)
   if kind == "conic" and not (flat[#flat] > 0) then
     argerror(1, fname, format("%s: the weight w must be > 0", what))
   end
-  return kind, flat, #flat == n3 and 3 or 2
+  return kind, flat, #flat == n3 and 3 or 2, what
 end
 
 -- The subpaths' segments as cubics only (paths whose method is not
@@ -396,10 +397,10 @@ local function from_cubics(_, cubics, opts)
   local subpaths, sp, dim, prev_kind = {}, nil, nil, nil
   local any = false
   for k = 1, #cubics do
-    local kind, flat, d = read_segment(cubics[k], k, fname)
+    local kind, flat, d, what = read_segment(cubics[k], k, fname)
     dim = dim or d
     if d ~= dim then
-      argerror(1, fname, format("segment %d is %dD, the first is %dD", k, d, dim))
+      argerror(1, fname, format("%s is %dD, the first is %dD", what, d, dim))
     end
     local joined = sp ~= nil
     if sp then
@@ -1120,7 +1121,7 @@ end
 
 -- p:segments() -> the number of segments; p:segment(k) -> a copy of
 -- segment k's numbers and its kind name ("line", "quad", "cubic",
--- "conic"); p:kinds() -> the list of the segments' kind names.
+-- "conic").
 function Path:segments()
   check_self(self, "segments")
   return self.n
@@ -1134,13 +1135,6 @@ function Path:segment(k)
   local c, out = segs_of(self)[k], {}
   for i = 1, #c do out[i] = c[i] end
   return out, kind_of(self, k)
-end
-
-function Path:kinds()
-  check_self(self, "kinds")
-  local out = {}
-  for k = 1, self.n do out[k] = kind_of(self, k) end
-  return out
 end
 
 -- The shortest of %.15g, %.16g, %.17g that reads back as x.
@@ -1175,11 +1169,24 @@ local function conic_arc(c)
   return rx, ry, deg, det > 0 and 1 or 0
 end
 
+-- Is the conic the straight segment P0 P2 (P1 on it, ends included)?
+-- Its points are then weighted means of 0, lambda, 1 along it (variation
+-- diminishing: the segment, once).
+local function straight_conic(c)
+  local ex, ey = c[5] - c[1], c[6] - c[2]
+  local px, py = c[3] - c[1], c[4] - c[2]
+  if ex * py - ey * px ~= 0 then return false end
+  local ee = ex * ex + ey * ey
+  local lam = ee > 0 and (px * ex + py * ey) / ee or -1
+  return lam >= 0 and lam <= 1
+end
+
 -- p:svg() -> SVG path data (absolute commands, Z on a cyclic path) that
 -- reads back to the same segments (2D paths): a line as L, a quadratic
 -- as Q, a cubic as C, an elliptic conic (w < 1) as A (exact: an SVG arc
 -- is the same ellipse, read back to rounding), a parabolic one (w = 1) as
--- Q; a hyperbolic one (w > 1) has no SVG command: cubics within tol.
+-- Q, a straight one as L; a hyperbolic one (w > 1) has no SVG command:
+-- cubics within tol (Hausdorff distance tol times its longer leg).
 function Path:svg()
   check_self(self, "svg")
   if self.dim ~= 2 then error("'svg': SVG path data is 2D; this path is 3D", 2) end
@@ -1202,7 +1209,9 @@ function Path:svg()
     else
       local rx, ry, deg, sweep
       if c[7] < 1 then rx, ry, deg, sweep = conic_arc(c) end
-      if rx then
+      if not rx and straight_conic(c) then
+        out[#out + 1] = format("L%s %s", num(c[5]), num(c[6]))
+      elseif rx then
         out[#out + 1] = format("A%s %s %s 0 %d %s %s", num(rx), num(ry), num(deg), sweep,
                                num(c[5]), num(c[6]))
       else

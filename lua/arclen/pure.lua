@@ -781,7 +781,9 @@ local function segments_of(segs, kinds, arg)
   end
   if not kinds then
     if #segs % 8 ~= 0 then argerror(1, "_walk", "packed cubics: a multiple of 8 numbers expected") end
-    return floor(#segs / 8), function(k) return {unpack(segs, 8 * k - 7, 8 * k)}, "cubic", 2 end
+    return floor(#segs / 8), function(k)
+      return (check_curve("_walk", {unpack(segs, 8 * k - 7, 8 * k)})), "cubic", 2
+    end
   end
   local d = (#kinds > 0 and #segs == 12 * #kinds) and 3 or 2
   local n, rec = records(segs, kinds, d, 1, "_walk")
