@@ -8,7 +8,8 @@
 -- Lengths: a line by a scaled hypot; a quadratic in closed form, every
 -- difference rewritten as a sum of positive terms; a conic as the affine
 -- image of a circular (w < 1) or hyperbolic (w > 1) arc, its speed in the
--- angle integrated by adaptive Gauss-Legendre (a circle's speed is
+-- angle integrated by Gauss-Legendre on pieces bounded by the speed's
+-- branch points (a circle's speed is
 -- constant there, so its length is exact at any tol); w = 1 is a
 -- quadratic.  Times: the inverse by safeguarded Newton steps on those
 -- lengths, within tol * L.
@@ -73,6 +74,8 @@ local function tanh(x)
 end
 
 local function tan(x) return sin(x) / cos(x) end
+
+local atan2 = math.atan2 or math.atan          -- Lua 5.1's name, 5.4's
 
 -- |v| for a vector of d components, scaled so that no square over- or
 -- underflows.
@@ -256,6 +259,50 @@ local function conic_setup(c, d)
   else al = 2 * atan(sqrt((1 - w) / (1 + w))) end        -- acos w, accurate near 1
   k.U, k.V, k.hyp, k.al = U, V, hyp, al
   k.th = hyp and tanh(al / 2) or tan(al / 2)
+  -- The speed's branch points.  With uu = |U|^2, vv = |V|^2, uv = U.V and
+  -- X = |U x V|^2 = uu vv - uv^2:
+  --   ellipse:   speed^2 = p + R cos(2 th - phi),  p = (vv + uu)/2,
+  --              R = |((vv - uu)/2, -uv)|: zero at 2 th - phi = pi +- i eta,
+  --              eta = acosh(p/R), p - R = X/(p + R);
+  --   hyperbola: speed^2 = a0 + R cosh(2 th + psi), a0 = (vv - uu)/2,
+  --              R = sqrt(b0^2 - c0^2) (b0 = (vv + uu)/2, c0 = uv,
+  --              tanh psi = c0/b0): zero at 2 th + psi = +- i eta, eta =
+  --              acos(-a0/R) = 2 asin(sqrt((R + a0)/(2R))), R + a0 = X/(R - a0).
+  -- Feet (real parts) and the half-height eta/2 of the branch points;
+  -- none on a circle (R = 0: the speed is constant).
+  local uu, vv, uv = 0, 0, 0
+  for j = 1, d do
+    uu, vv, uv = uu + U[j] * U[j], vv + V[j] * V[j], uv + U[j] * V[j]
+  end
+  local X
+  if d == 2 then X = (U[1] * V[2] - U[2] * V[1]) ^ 2
+  else
+    X = (U[2] * V[3] - U[3] * V[2]) ^ 2 + (U[3] * V[1] - U[1] * V[3]) ^ 2
+        + (U[1] * V[2] - U[2] * V[1]) ^ 2
+  end
+  k.feet = {}
+  if not hyp then
+    local p, R = (vv + uu) / 2, sqrt(((vv - uu) / 2) ^ 2 + uv * uv)
+    k.p, k.R = p, R
+    if R > 0 then
+      local x = X / (p + R) / R                 -- p/R - 1
+      local eta = log1p(x + sqrt(x * (x + 2)))  -- acosh(1 + x)
+      local phi = atan2(-uv, (vv - uu) / 2)
+      for j = -2, 2 do k.feet[#k.feet + 1] = (phi + math.pi) / 2 + j * math.pi end
+      k.eta2 = eta / 2
+    end
+  else
+    local a0, b0, c0 = (vv - uu) / 2, (vv + uu) / 2, uv
+    local R = sqrt((b0 - c0) * (b0 + c0))
+    k.a0, k.R = a0, R
+    if R > 0 then
+      local psi = atanh(c0 / b0)
+      local eta = 2 * math.asin(math.min(1, sqrt(X / (R - a0) / (2 * R))))
+      k.feet[1] = -psi / 2
+      k.eta2 = eta / 2
+      k.psi = psi
+    end
+  end
   return k
 end
 
@@ -287,42 +334,102 @@ local function t_of_th(k, th)
   return t
 end
 
-local RULE = rules[16]
-local MAX_PIECES = 4096
 
--- int_a^b f by adaptive Gauss-Legendre: a piece is accepted when its two
--- halves agree with the whole to rtol/4 of the piece (relative, so that
--- the pieces' errors add up to rtol/4 of the whole); returns the integral
--- and the count of evaluations.
-local function adaptive(f, a, b, rtol)
+local EPS = 2.220446049250313e-16
+
+-- The conic's length between angles a < b, within rtol/4 of budget
+-- (density times the width: the caller's share of tol L) by Gauss-Legendre
+-- on pieces whose order meets Trefethen's bound (ATAP Thm 19.3)
+--   |E| <= (64/15) hw M rho^(-2n) / (rho^2 - 1)
+-- with rho inside the Bernstein ellipse through the nearest branch point
+-- (conic_setup) and M >= speed on it; a piece no order up to 128 meets is
+-- cut at a branch point's foot inside it, else in half.
+local ORDERS = {8, 12, 16, 24, 32, 48, 64, 96, 128}
+local MAX_CONIC_PIECES = 2000
+
+-- max |speed| on the ellipse of parameter r about [c - hw, c + hw].
+local function conic_bound(k, c, hw, r)
+  local half_minor, half_major = hw * (r - 1 / r) / 2, hw * (r + 1 / r) / 2
+  if k.hyp then
+    local xr = math.max(abs(2 * (c - half_major) + k.psi), abs(2 * (c + half_major) + k.psi))
+    local _, ch = sinh_cosh(xr)
+    return sqrt(abs(k.a0) + k.R * ch)
+  end
+  local _, ch = sinh_cosh(2 * half_minor)
+  return sqrt(k.p + k.R * ch)
+end
+
+local function conic_length_th(k, a, b, rtol, density)
   if b <= a then return 0, 0 end
-  local total, evals = 0, 0
-  local stack = {{a, b, gl(f, a, b, RULE)}}
-  evals = evals + 16
-  local guard = 0
-  while #stack > 0 do
-    guard = guard + 1
-    local top = table.remove(stack)
-    local x, y, whole = top[1], top[2], top[3]
-    local m = (x + y) / 2
-    local l, r = gl(f, x, m, RULE), gl(f, m, y, RULE)
-    evals = evals + 32
-    local both = l + r
-    if abs(both - whole) <= 0.25 * rtol * abs(both) or guard > MAX_PIECES
-       or m <= x or m >= y then
-      total = total + both
+  if not k.eta2 then                             -- a circle (or a point): constant speed
+    return (b - a) * conic_speed_th(k, (a + b) / 2), 1
+  end
+  if not density then
+    -- a lower bound of the length over the width: the chord's,
+    --   C(b) - C(a) = 2 sin(hw) (-sin(m) U + cos(m) V)      (ellipse)
+    --              = 2 sinh(hw) (sinh(m) U + cosh(m) V)      (hyperbola)
+    -- (m, hw the middle and half-width: no cancellation); a closed conic
+    -- (P0 = P2) takes a quarter of the mean speed at 16 points
+    local m, h = (a + b) / 2, (b - a) / 2
+    local v, cu, cv = {}, nil, nil
+    if k.hyp then
+      local sh, ch = sinh_cosh(m)
+      local shh = sinh_cosh(h)
+      cu, cv = 2 * shh * sh, 2 * shh * ch
     else
-      stack[#stack + 1] = {m, y, r}
-      stack[#stack + 1] = {x, m, l}
+      cu, cv = -2 * sin(h) * sin(m), 2 * sin(h) * cos(m)
+    end
+    for j = 1, k.d do v[j] = cu * k.U[j] + cv * k.V[j] end
+    density = norm(v, k.d) / (b - a)
+    if not (density > 0) then
+      density = 0
+      for i = 1, 16 do density = density + conic_speed_th(k, a + (i - 0.5) * (b - a) / 16) end
+      density = density / 64
+    end
+  end
+  local f = function(th) return conic_speed_th(k, th) end
+  local total, evals, pieces = 0, 0, 0
+  local stack = {{a, b}}
+  while #stack > 0 do
+    local top = table.remove(stack)
+    local x, y = top[1], top[2]
+    local c, hw = (x + y) / 2, (y - x) / 2
+    -- the nearest branch point's rho
+    local rho, foot = huge, nil
+    for _, ft in ipairs(k.feet) do
+      local ux, uy = (ft - c) / hw, k.eta2 / hw
+      local sf = (sqrt((ux - 1) ^ 2 + uy * uy) + sqrt((ux + 1) ^ 2 + uy * uy)) / 2
+      local r = sf + sqrt((sf - 1) * (sf + 1))
+      if r < rho then rho, foot = r, ft end
+    end
+    local target = 0.25 * rtol * density * (y - x)
+    local done = false
+    if rho > 1.05 then
+      local r = 1 + (rho - 1) * 0.9
+      local M = conic_bound(k, c, hw, r)
+      for _, n in ipairs(ORDERS) do
+        local bound = (64 / 15) * hw * M * r ^ (-2 * n) / (r * r - 1)
+        if bound <= target or bound <= 4 * EPS * M * hw then
+          total = total + gl(f, x, y, rules[n])
+          evals = evals + n
+          done = true
+          break
+        end
+      end
+    end
+    pieces = pieces + 1
+    if not done then
+      if pieces > MAX_CONIC_PIECES then
+        total = total + gl(f, x, y, rules[128])
+        evals = evals + 128
+      else
+        local cut = (foot and foot > x + 0.01 * (y - x) and foot < y - 0.01 * (y - x)) and foot or c
+        stack[#stack + 1] = {cut, y}
+        stack[#stack + 1] = {x, cut}
+      end
     end
   end
   return total, evals
-end
-
--- The conic's length between angles a < b.
-local function conic_length_th(k, a, b, rtol)
-  local f = function(th) return conic_speed_th(k, th) end
-  return adaptive(f, a, b, rtol)
 end
 
 -- ---- the kinds' functions -----------------------------------------------
@@ -417,8 +524,9 @@ function M.times(kind, c, d, L, s, rtol)
     lo0, hi0, to_t = 0, 1, function(t) return t end
   else
     local k = conic_setup(c, d)
+    local density = L / (2 * k.al)
     len = function(a, b)
-      local v, e = conic_length_th(k, a, b, rtol)
+      local v, e = conic_length_th(k, a, b, rtol, density)
       evals = evals + e
       return v
     end
