@@ -1166,6 +1166,10 @@ local function conic_arc(c)
   local phi = (atan2(G, F) + atan2(H, E)) / 2
   local deg = phi * (180 / math.pi)
   if not (rx > 0 and ry > 0 and rx < huge) then return nil end
+  if rx - ry <= 4 * 2.220446049250313e-16 * rx then   -- a circle to rounding: no axis
+    rx = sqrt(abs(det))
+    ry, deg = rx, 0
+  end
   return rx, ry, deg, det > 0 and 1 or 0
 end
 

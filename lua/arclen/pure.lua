@@ -2,9 +2,10 @@
 -- in plain Lua (5.1-5.4, LuaJIT), for where the C core cannot load (LuaTeX
 -- without --shell-escape, a platform without a binary).  Same names, same
 -- argument checks and messages, same guarantee (every distance within tol *
--- L): the default method on plane cubics (pure_gauss.lua), SVG path data
--- without arcs (pure_svgpath.lua).  3D curves, the other methods
--- (elliptic, metapost, ...), conics, elliptical arcs, the root solvers and
+-- L): the default method on plane cubics (pure_gauss.lua), lines,
+-- quadratics and conics in 2D and 3D (pure_segment.lua), SVG path data
+-- without arcs (pure_svgpath.lua).  3D cubics, the other methods
+-- (elliptic, metapost, ...), Floater's conics, elliptical arcs, the root solvers and
 -- the speed's critical points stay in the C core: asked for here, they
 -- raise an error that says so and how to get it.
 --
