@@ -83,19 +83,38 @@ static double coord(double x1, double x2, double w, double t) {
   return x2 + (s * s * (-x2) + 2 * w * t * s * (x1 - x2)) / (s * s + 2 * w * t * s + t * t);
 }
 
-/* The length of a conic whose points lie on a line: the total variation
-** of its coordinate along the line's direction (the longest leg's), split
-** where X' = 0, i.e. at the roots of w x1 + (x2 - 2 w x1) t + (w - 1) x2 t^2
-** (the numerator of C' above) in (0, 1). */
-static double collinear_length(const double *p, int dim) {
-  double leg[3][3], len[3], e[3], x1, x2, w = p[3 * dim];
-  double re[2], im[2], ts[4], L = 0;
+/* The legs a = P1 - P0, c = P2 - P1, k = P2 - P0 (one rounding each; their
+** halves where a difference overflows) scaled by 2^-e into [1/2, 1) at
+** most, so that no square over- or underflows; returns e (0 and zero legs
+** for a point). */
+static int scaled_legs(const double *p, int dim, double leg[3][3]) {
+  static const int to[3] = {1, 2, 2}, from[3] = {0, 1, 0};
+  double mx = 0;
+  int i, k, e, half = 0;
+  for (i = 0; i < 3; i++)
+    for (k = 0; k < dim; k++) {
+      leg[i][k] = p[to[i] * dim + k] - p[from[i] * dim + k];
+      if (!isfinite(leg[i][k])) half = 1;
+    }
+  for (i = 0; i < 3; i++)
+    for (k = 0; k < dim; k++) {
+      if (half) leg[i][k] = p[to[i] * dim + k] / 2 - p[from[i] * dim + k] / 2;
+      if (fabs(leg[i][k]) > mx) mx = fabs(leg[i][k]);
+    }
+  if (mx == 0) return 0;
+  frexp(mx, &e);
+  for (i = 0; i < 3; i++)
+    for (k = 0; k < dim; k++) leg[i][k] = ldexp(leg[i][k], -e);
+  return e + half;
+}
+
+/* The length of a conic whose points lie on a line, from its scaled legs:
+** the total variation of its coordinate along the line's direction (the
+** longest leg's), split where X' = 0, i.e. at the roots of w x1 + (x2 - 2
+** w x1) t + (w - 1) x2 t^2 (the numerator of C' above) in (0, 1). */
+static double collinear_length(double leg[3][3], int dim, double w) {
+  double len[3], e[3] = {0, 0, 0}, x1, x2, re[2], im[2], ts[4], L = 0;
   int i, k, best = 0, n, m = 0;
-  for (k = 0; k < dim; k++) {
-    leg[0][k] = p[dim + k] - p[k];
-    leg[1][k] = p[2 * dim + k] - p[dim + k];
-    leg[2][k] = p[2 * dim + k] - p[k];
-  }
   for (i = 0; i < 3; i++) {
     len[i] = arclen_seg_norm(leg[i], dim);
     if (len[i] > len[best]) best = i;
@@ -118,16 +137,13 @@ static double collinear_length(const double *p, int dim) {
 /* The whole arc's length. */
 static int whole_length(const double *p, int dim, double *len,
                         arclen_info *info) {
-  double q[6], w = p[3 * dim];
-  int k;
+  double leg[3][3], q[6], w = p[3 * dim], L;
+  int e = scaled_legs(p, dim, leg), flat, rc;
   if (dim == 3) {
-    /* the isometric image in the plane: P0 -> 0, P1 -> (|a|, 0), P2 -> P1
-    ** + (a.c/|a|, |a x c|/|a|) */
-    double a[3], c[3], x[3], la, lc, lx;
-    for (k = 0; k < 3; k++) {
-      a[k] = p[3 + k] - p[k];
-      c[k] = p[6 + k] - p[3 + k];
-    }
+    /* the isometric image in the plane, P1 at the origin: P0 -> (-|a|, 0),
+    ** P2 -> (a.c/|a|, |a x c|/|a|), so both legs keep one rounding */
+    double x[3], la, lc, lx;
+    const double *a = leg[0], *c = leg[1];
     x[0] = a[1] * c[2] - a[2] * c[1];
     x[1] = a[2] * c[0] - a[0] * c[2];
     x[2] = a[0] * c[1] - a[1] * c[0];
@@ -135,20 +151,25 @@ static int whole_length(const double *p, int dim, double *len,
     lc = arclen_seg_norm(c, 3);
     lx = arclen_seg_norm(x, 3);
     /* a flat triangle: the same test as arclen_conic_degenerate's */
-    if (!(la > 0) || !(lc > 0) || !(lx / la / lc > 16 * DBL_EPSILON)) {
-      *len = collinear_length(p, 3);
-      return isfinite(*len) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
-    }
-    q[0] = 0; q[1] = 0; q[2] = la; q[3] = 0;
-    q[4] = la + dot(a, c, 3) / la; q[5] = lx / la;
+    flat = !(la > 0) || !(lc > 0) || !(lx / la / lc > 16 * DBL_EPSILON);
+    q[0] = -la; q[1] = 0; q[2] = 0; q[3] = 0;
+    if (!flat) { q[4] = dot(a, c, 3) / la; q[5] = lx / la; }
   } else {
+    int k;
     for (k = 0; k < 6; k++) q[k] = p[k];
-    if (arclen_conic_degenerate(q)) {
-      *len = collinear_length(p, 2);
-      return isfinite(*len) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
-    }
+    flat = arclen_conic_degenerate(q);
   }
-  return arclen_conic_length(q, w, len, info);
+  if (flat) {
+    if (info) info->branch = "collinear";
+    L = ldexp(collinear_length(leg, dim, w), e);
+    *len = L;
+    return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
+  }
+  rc = arclen_conic_length(q, w, &L, info);
+  if (rc == ARCLEN_OK && dim == 3) L = ldexp(L, e);
+  *len = rc == ARCLEN_OK ? L : NAN;
+  if (rc == ARCLEN_OK && !isfinite(L)) return ARCLEN_EOVERFLOW;
+  return rc;
 }
 
 int arclen_rquad_length(const double *p, int dim, double t0, double t1,
