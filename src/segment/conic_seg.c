@@ -141,19 +141,43 @@ static int whole_length(const double *p, int dim, double *len,
   int e = scaled_legs(p, dim, leg), flat, rc;
   if (dim == 3) {
     /* the isometric image in the plane, P1 at the origin: P0 -> (-|a|, 0),
-    ** P2 -> (a.c/|a|, |a x c|/|a|), so both legs keep one rounding */
-    double x[3], la, lc, lx;
-    const double *a = leg[0], *c = leg[1];
-    x[0] = a[1] * c[2] - a[2] * c[1];
-    x[1] = a[2] * c[0] - a[0] * c[2];
-    x[2] = a[0] * c[1] - a[1] * c[0];
-    la = arclen_seg_norm(a, 3);
-    lc = arclen_seg_norm(c, 3);
+    ** P2 -> |c| (cos, sin) of the angle between a and c, so both legs keep
+    ** one rounding.  The angle from a and c each scaled by its own power
+    ** of two: a leg 2^-1000 of the other would make the products of a
+    ** common scale subnormal, and its direction a guess */
+    double a[3], c[3], as[3], cs[3], x[3], la, lc, lx, ma = 0, mc = 0;
+    int k, ea = 0, ec = 0, half = 0;
+    for (k = 0; k < 3; k++) {
+      a[k] = p[3 + k] - p[k];
+      c[k] = p[6 + k] - p[3 + k];
+      if (!isfinite(a[k]) || !isfinite(c[k])) half = 1;
+    }
+    for (k = 0; k < 3; k++) {
+      if (half) { a[k] = p[3 + k] / 2 - p[k] / 2; c[k] = p[6 + k] / 2 - p[3 + k] / 2; }
+      ma = fmax(ma, fabs(a[k]));
+      mc = fmax(mc, fabs(c[k]));
+    }
+    if (ma > 0) frexp(ma, &ea);
+    if (mc > 0) frexp(mc, &ec);
+    for (k = 0; k < 3; k++) { as[k] = ldexp(a[k], -ea); cs[k] = ldexp(c[k], -ec); }
+    x[0] = as[1] * cs[2] - as[2] * cs[1];
+    x[1] = as[2] * cs[0] - as[0] * cs[2];
+    x[2] = as[0] * cs[1] - as[1] * cs[0];
+    la = arclen_seg_norm(as, 3);
+    lc = arclen_seg_norm(cs, 3);
     lx = arclen_seg_norm(x, 3);
     /* a flat triangle: the same test as arclen_conic_degenerate's */
     flat = !(la > 0) || !(lc > 0) || !(lx / la / lc > 16 * DBL_EPSILON);
-    q[0] = -la; q[1] = 0; q[2] = 0; q[3] = 0;
-    if (!flat) { q[4] = dot(a, c, 3) / la; q[5] = lx / la; }
+    if (!flat) {
+      q[0] = -ldexp(la, ea); q[1] = 0; q[2] = 0; q[3] = 0;
+      q[4] = ldexp(dot(as, cs, 3) / la, ec);
+      q[5] = ldexp(lx / la, ec);
+      rc = arclen_conic_length(q, w, &L, info);
+      if (rc == ARCLEN_OK && half) L *= 2;
+      *len = rc == ARCLEN_OK ? L : NAN;
+      if (rc == ARCLEN_OK && !isfinite(L)) return ARCLEN_EOVERFLOW;
+      return rc;
+    }
   } else {
     int k;
     for (k = 0; k < 6; k++) q[k] = p[k];
@@ -166,9 +190,7 @@ static int whole_length(const double *p, int dim, double *len,
     return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
   }
   rc = arclen_conic_length(q, w, &L, info);
-  if (rc == ARCLEN_OK && dim == 3) L = ldexp(L, e);
   *len = rc == ARCLEN_OK ? L : NAN;
-  if (rc == ARCLEN_OK && !isfinite(L)) return ARCLEN_EOVERFLOW;
   return rc;
 }
 

@@ -54,8 +54,12 @@ int arclen_segment_check(int kind, int dim, const double *seg) {
   if (kind < 0 || kind >= ARCLEN_SEG_NKINDS) return ARCLEN_EDOMAIN;
   if (dim != 2 && dim != 3) return ARCLEN_EDIM;
   n = arclen_segment_count(kind, dim);
-  for (i = 0; i < n; i++)
-    if (!isfinite(seg[i])) return ARCLEN_EINVAL;
+  {
+    /* x - x is 0 for a finite x, NaN for inf and NaN: one test in all */
+    double z = 0;
+    for (i = 0; i < n; i++) z += seg[i] - seg[i];
+    if (z != 0) return ARCLEN_EINVAL;
+  }
   if (kind == ARCLEN_SEG_CONIC && !(seg[3 * dim] > 0)) return ARCLEN_EINVAL;
   return ARCLEN_OK;
 }
