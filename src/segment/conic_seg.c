@@ -173,10 +173,15 @@ static int whole_length(const double *p, int dim, double *len,
       q[4] = ldexp(dot(as, cs, 3) / la, ec);
       q[5] = ldexp(lx / la, ec);
       rc = arclen_conic_length(q, w, &L, info);
-      if (rc == ARCLEN_OK && half) L *= 2;
-      *len = rc == ARCLEN_OK ? L : NAN;
-      if (rc == ARCLEN_OK && !isfinite(L)) return ARCLEN_EOVERFLOW;
-      return rc;
+      /* EDOMAIN: the image is flat after all (a leg at the bottom of the
+      ** double range, 5e-324 beside 100, rounds its direction away) */
+      if (rc != ARCLEN_EDOMAIN) {
+        if (rc == ARCLEN_OK && half) L *= 2;
+        *len = rc == ARCLEN_OK ? L : NAN;
+        if (rc == ARCLEN_OK && !isfinite(L)) return ARCLEN_EOVERFLOW;
+        return rc;
+      }
+      flat = 1;
     }
   } else {
     int k;

@@ -131,9 +131,12 @@ static double closed_form(double U0, double h, double q, double K) {
   t1 = h * (U1 + U0) * (U1 * U1 + U0 * U0 + K * K) / (U1 * S1 + U0 * S0);
   /* (K^2/q)(asinh(U1/K) - asinh(U0/K)) = (K^2/q) asinh(h q Y), Y = (U1 +
   ** U0)/(U1 S0 + U0 S1) (sinh of a difference; no cancellation) */
-  if (!(K > 0)) return t1;
+  if (!(K * K > 0)) return t1;   /* K^2 below the double range: t2 is too */
   Y = (U1 + U0) / (U1 * S0 + U0 * S1);
   x = h * q * Y;
+  /* x overflows only for K below 1e-300 (then U0 = 0, S0 = K): K^2 log x
+  ** is nothing beside t1 */
+  if (!isfinite(x)) return t1;
   t2 = x <= 1 ? K * K * h * Y * asinhc(x) : K * K / q * asinh_pos(x);
   return t1 + t2;
 }
