@@ -27,8 +27,17 @@ static double blossom(const double *p, int dim, double u, double v,
   double b0 = (1 - u) * (1 - v), b1 = ((1 - u) * v + u * (1 - v)) * w;
   double b2 = u * v, W = b0 + b1 + b2;
   int k;
-  for (k = 0; k < dim; k++)
-    out[k] = p[k] + (b1 * (p[dim + k] - p[k]) + b2 * (p[2 * dim + k] - p[k])) / W;
+  /* the weights divided first: b1 (P1 - P0) alone may overflow (w = 1e5
+  ** beside points at 1e304) where b1/W (P1 - P0) does not */
+  for (k = 0; k < dim; k++) {
+    double l1 = p[dim + k] - p[k], l2 = p[2 * dim + k] - p[k], x;
+    if (isfinite(l1) && isfinite(l2)) {
+      out[k] = p[k] + ((b1 / W) * l1 + (b2 / W) * l2);
+    } else {            /* points on both sides of +-DBL_MAX/2: half legs */
+      x = (b1 / W) * (p[dim + k] / 2 - p[k] / 2) + (b2 / W) * (p[2 * dim + k] / 2 - p[k] / 2);
+      out[k] = (p[k] + x) + x;
+    }
+  }
   return W;
 }
 
@@ -53,13 +62,20 @@ void arclen_rquad_point(const double *p, int dim, double t, double *out) {
   double w = p[3 * dim], s = 1 - t;
   double b0 = s * s, b1 = 2 * s * t * w, b2 = t * t, D = b0 + b1 + b2;
   int k;
+  for (k = 0; k < dim; k++)
+    if (!isfinite(p[2 * dim + k] - p[k]) || !isfinite(p[dim + k] - p[k])) {
+      blossom(p, dim, t, t, out);      /* legs beyond DBL_MAX: halved there */
+      if (t == 1)
+        for (k = 0; k < dim; k++) out[k] = p[2 * dim + k];
+      return;
+    }
   for (k = 0; k < dim; k++) {
     /* relative to the nearer end: P0 at t = 0 and P2 at t = 1 exactly */
     if (t <= 0.5)
-      out[k] = p[k] + (b1 * (p[dim + k] - p[k]) + b2 * (p[2 * dim + k] - p[k])) / D;
+      out[k] = p[k] + ((b1 / D) * (p[dim + k] - p[k]) + (b2 / D) * (p[2 * dim + k] - p[k]));
     else
       out[k] = p[2 * dim + k]
-               + (b0 * (p[k] - p[2 * dim + k]) + b1 * (p[dim + k] - p[2 * dim + k])) / D;
+               + ((b0 / D) * (p[k] - p[2 * dim + k]) + (b1 / D) * (p[dim + k] - p[2 * dim + k]));
   }
 }
 
@@ -152,6 +168,8 @@ static int whole_length(const double *p, int dim, double *len,
       c[k] = p[6 + k] - p[3 + k];
       if (!isfinite(a[k]) || !isfinite(c[k])) half = 1;
     }
+    for (k = 0; k < 3; k++)          /* a leg's norm up to 2 sqrt 3 of it */
+      if (fabs(a[k]) > 0x1p1020 || fabs(c[k]) > 0x1p1020) half = 1;
     for (k = 0; k < 3; k++) {
       if (half) { a[k] = p[3 + k] / 2 - p[k] / 2; c[k] = p[6 + k] / 2 - p[3 + k] / 2; }
       ma = fmax(ma, fabs(a[k]));
@@ -201,15 +219,34 @@ static int whole_length(const double *p, int dim, double *len,
 
 int arclen_rquad_length(const double *p, int dim, double t0, double t1,
                         double *len, arclen_info *info) {
-  double sub[10], lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
-  int rc;
+  double q[10], sub[10], lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
+  int rc, k, half = 0;
   *len = 0;
   if (lo == hi) return ARCLEN_OK;
   if (lo == 0 && hi == 1) {
     rc = whole_length(p, dim, len, info);
   } else {
-    arclen_rquad_sub(p, dim, lo, hi, sub);
+    /* the piece of the conic moved to P0 = 0 (the legs, one rounding each;
+    ** halved where they overflow): its control points are then rounded
+    ** relative to the arc's size, not to its distance from the origin */
+    for (k = 0; k < dim; k++) {
+      q[k] = 0;
+      q[dim + k] = p[dim + k] - p[k];
+      q[2 * dim + k] = p[2 * dim + k] - p[k];
+      if (!isfinite(q[dim + k]) || !isfinite(q[2 * dim + k])) half = 1;
+    }
+    if (half)
+      for (k = 0; k < dim; k++) {
+        q[dim + k] = p[dim + k] / 2 - p[k] / 2;
+        q[2 * dim + k] = p[2 * dim + k] / 2 - p[k] / 2;
+      }
+    q[3 * dim] = p[3 * dim];
+    arclen_rquad_sub(q, dim, lo, hi, sub);
     rc = whole_length(sub, dim, len, info);
+    if (rc == ARCLEN_OK && half) {
+      *len *= 2;
+      if (!isfinite(*len)) rc = ARCLEN_EOVERFLOW;
+    }
   }
   if (rc == ARCLEN_OK && t1 < t0) *len = -*len;
   return rc;
