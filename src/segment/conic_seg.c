@@ -63,7 +63,8 @@ void arclen_rquad_point(const double *p, int dim, double t, double *out) {
   double b0 = s * s, b1 = 2 * s * t * w, b2 = t * t, D = b0 + b1 + b2;
   int k;
   for (k = 0; k < dim; k++)
-    if (!isfinite(p[2 * dim + k] - p[k]) || !isfinite(p[dim + k] - p[k])) {
+    if (!isfinite(p[2 * dim + k] - p[k]) || !isfinite(p[dim + k] - p[k]) ||
+        !isfinite(p[dim + k] - p[2 * dim + k])) {
       blossom(p, dim, t, t, out);      /* legs beyond DBL_MAX: halved there */
       if (t == 1)
         for (k = 0; k < dim; k++) out[k] = p[2 * dim + k];
