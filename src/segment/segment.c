@@ -122,10 +122,13 @@ static int len_to(const void *ctx, double t, double *len) {
   return plain_length(c->kind, c->dim, c->seg, 0, t, len, NULL);
 }
 
+/* The speed for Newton's step: the kind's derivative itself (plain_time
+** has brought the points within 2^+-500 already, so nothing overflows). */
 static double speed_at(const void *ctx, double t) {
   const seg_ctx *c = (const seg_ctx *)ctx;
   double d[3];
-  arclen_segment_derivative(c->kind, c->dim, c->seg, t, d);
+  if (c->kind == ARCLEN_SEG_QUAD) arclen_quad_derivative(c->seg, c->dim, t, d);
+  else arclen_rquad_derivative(c->seg, c->dim, t, d);
   return arclen_seg_norm(d, c->dim);
 }
 
