@@ -169,10 +169,13 @@ static int whole_length(const double *p, int dim, double *len,
       c[k] = p[6 + k] - p[3 + k];
       if (!isfinite(a[k]) || !isfinite(c[k])) half = 1;
     }
-    for (k = 0; k < 3; k++)          /* a leg's norm up to 2 sqrt 3 of it */
+    /* a leg's norm is up to sqrt 3 times its largest part: quarters of
+    ** the points where a part nears DBL_MAX (exact but for subnormals,
+    ** nothing beside such legs) */
+    for (k = 0; k < 3; k++)
       if (fabs(a[k]) > 0x1p1020 || fabs(c[k]) > 0x1p1020) half = 1;
     for (k = 0; k < 3; k++) {
-      if (half) { a[k] = p[3 + k] / 2 - p[k] / 2; c[k] = p[6 + k] / 2 - p[3 + k] / 2; }
+      if (half) { a[k] = p[3 + k] / 4 - p[k] / 4; c[k] = p[6 + k] / 4 - p[3 + k] / 4; }
       ma = fmax(ma, fabs(a[k]));
       mc = fmax(mc, fabs(c[k]));
     }
@@ -195,7 +198,7 @@ static int whole_length(const double *p, int dim, double *len,
       /* EDOMAIN: the image is flat after all (a leg at the bottom of the
       ** double range, 5e-324 beside 100, rounds its direction away) */
       if (rc != ARCLEN_EDOMAIN) {
-        if (rc == ARCLEN_OK && half) L *= 2;
+        if (rc == ARCLEN_OK && half) L *= 4;
         *len = rc == ARCLEN_OK ? L : NAN;
         if (rc == ARCLEN_OK && !isfinite(L)) return ARCLEN_EOVERFLOW;
         return rc;
