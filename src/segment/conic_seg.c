@@ -206,19 +206,29 @@ static int whole_length(const double *p, int dim, double *len,
       flat = 1;
     }
   } else {
-    int k;
-    for (k = 0; k < 6; k++) q[k] = p[k];
+    /* a leg's norm is up to sqrt 2 times its largest part: beyond 2^1020
+    ** the conic at a quarter (exact but for subnormals), or its legs'
+    ** norms overflow (and the flatness test with them) */
+    int k, big = 0;
+    for (k = 0; k < 4; k++)
+      if (!(fabs(p[k + 2] - p[k]) <= 0x1p1020)) big = 1;
+    for (k = 0; k < 6; k++) q[k] = big ? p[k] / 4 : p[k];
     flat = arclen_conic_degenerate(q);
+    if (!flat) {
+      rc = arclen_conic_length(q, w, &L, info);
+      if (rc == ARCLEN_OK && big) {
+        L *= 4;
+        if (!isfinite(L)) rc = ARCLEN_EOVERFLOW;
+      }
+      *len = rc == ARCLEN_OK ? L : NAN;
+      return rc;
+    }
   }
-  if (flat) {
-    if (info) info->branch = "collinear";
-    L = ldexp(collinear_length(leg, dim, w), e);
-    *len = L;
-    return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
-  }
-  rc = arclen_conic_length(q, w, &L, info);
-  *len = rc == ARCLEN_OK ? L : NAN;
-  return rc;
+  /* flat: the points on a line */
+  if (info) info->branch = "collinear";
+  L = ldexp(collinear_length(leg, dim, w), e);
+  *len = L;
+  return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
 }
 
 int arclen_rquad_length(const double *p, int dim, double t0, double t1,
@@ -239,16 +249,20 @@ int arclen_rquad_length(const double *p, int dim, double t0, double t1,
       q[2 * dim + k] = p[2 * dim + k] - p[k];
       if (!isfinite(q[dim + k]) || !isfinite(q[2 * dim + k])) half = 1;
     }
+    for (k = 0; k < 2 * dim && !half; k++)
+      if (fabs(q[dim + k]) > 0x1p1000) half = 1;
+    /* legs near DBL_MAX: the piece measured at 1/16 (exact), so that its
+    ** polygon's sums stay finite, then scaled back */
     if (half)
       for (k = 0; k < dim; k++) {
-        q[dim + k] = p[dim + k] / 2 - p[k] / 2;
-        q[2 * dim + k] = p[2 * dim + k] / 2 - p[k] / 2;
+        q[dim + k] = p[dim + k] / 16 - p[k] / 16;
+        q[2 * dim + k] = p[2 * dim + k] / 16 - p[k] / 16;
       }
     q[3 * dim] = p[3 * dim];
     arclen_rquad_sub(q, dim, lo, hi, sub);
     rc = whole_length(sub, dim, len, info);
     if (rc == ARCLEN_OK && half) {
-      *len *= 2;
+      *len *= 16;
       if (!isfinite(*len)) rc = ARCLEN_EOVERFLOW;
     }
   }
