@@ -11,6 +11,8 @@
 ** provably far below an ulp (see near_straight()).
 */
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #include "arclen.h"
 #include "segment/segment.h"
@@ -30,6 +32,13 @@ static double dot(const double *u, const double *v, int dim) {
   return dim == 3 ? s + u[2] * v[2] : s;
 }
 
+/* |v| of the scaled vectors below (components at most 1, so the squares
+** neither overflow nor, where they matter, underflow): sqrt of the sum,
+** within an ulp and a half, at a third of hypot's cost. */
+static double norm(const double *v, int dim) {
+  return sqrt(dot(v, v, dim));
+}
+
 /* |u x v| (2D: the scalar cross product's size). */
 static double cross_norm(const double *u, const double *v, int dim) {
   double w[3];
@@ -37,21 +46,43 @@ static double cross_norm(const double *u, const double *v, int dim) {
   w[0] = u[1] * v[2] - u[2] * v[1];
   w[1] = u[2] * v[0] - u[0] * v[2];
   w[2] = u[0] * v[1] - u[1] * v[0];
-  return arclen_seg_norm(w, 3);
+  return norm(w, 3);
 }
 
 /* v(t) = (1 - t) a + t c: a and c exactly at the ends. */
 static void speed_vector(const double *a, const double *c, int dim, double t,
                          double *v) {
   int k;
-  for (k = 0; k < dim; k++)
-    v[k] = t == 0 ? a[k] : t == 1 ? c[k] : (1 - t) * a[k] + t * c[k];
+  if (t == 0 || t == 1) {
+    for (k = 0; k < dim; k++) v[k] = t == 0 ? a[k] : c[k];
+    return;
+  }
+  for (k = 0; k < dim; k++) v[k] = (1 - t) * a[k] + t * c[k];
+}
+
+/* 2^e for e in [-1022, 1023], from its bits (ldexp costs a call and a
+** rounding-mode-proof path that exact powers of two do not need). */
+static double pow2(int e) {
+  uint64_t bits = (uint64_t)(e + 1023) << 52;
+  double v;
+  memcpy(&v, &bits, sizeof v);
+  return v;
+}
+
+/* asinh(x) for x >= 0 as log1p(x + x^2/(1 + sqrt(1 + x^2))): the identity
+** asinh x = log(x + sqrt(1 + x^2)) with the 1 taken out, every term
+** positive; half the cost of libm's asinh, within a few ulps.  x^2 is
+** finite here (x <= the ratio of two scaled lengths). */
+static double asinh_pos(double x) {
+  double x2 = x * x;
+  if (x > 0x1p500) return log(x) + 0.69314718055994530942;   /* log 2x */
+  return log1p(x + x2 / (1 + sqrt(1 + x2)));
 }
 
 /* asinh(x)/x, 1 at 0 (asinh keeps a tiny x's digits, so the quotient is
 ** within an ulp or two everywhere). */
 static double asinhc(double x) {
-  return x == 0 ? 1 : asinh(x) / x;
+  return x == 0 ? 1 : asinh_pos(x) / x;
 }
 
 /* 2 int |v| over [lo, lo + h] by the 10-point rule.  Used when m = min |v|
@@ -66,9 +97,9 @@ static double near_straight(const double *a, const double *c, int dim,
   int i;
   for (i = 0; i < 5; i++) {
     speed_vector(a, c, dim, lo + h * gl10[i][0], v);
-    s += gl10[i][1] * arclen_seg_norm(v, dim);
+    s += gl10[i][1] * norm(v, dim);
     speed_vector(a, c, dim, lo + h * (1 - gl10[i][0]), v);
-    s += gl10[i][1] * arclen_seg_norm(v, dim);
+    s += gl10[i][1] * norm(v, dim);
   }
   return 2 * h * s;
 }
@@ -76,13 +107,16 @@ static double near_straight(const double *a, const double *c, int dim,
 /* 2 int |v| dt over [lo, hi] by the closed form, U0 = v(lo).b/|b|, U1 = U0 +
 ** h |b|, K as above (|v|^2 = U^2 + K^2). */
 static double closed_form(double U0, double h, double q, double K) {
-  double U1 = U0 + h * q, S0, S1, t1, t2, Y;
+  double U1 = U0 + h * q, S0, S1, t1, t2, Y, x;
   if (U0 < 0 && U1 > 0) {
     /* the vertex (min |v| = K) inside: two same-sign halves from it */
     double A0 = -U0;
-    S0 = hypot(A0, K); S1 = hypot(U1, K);
+    S0 = sqrt(A0 * A0 + K * K); S1 = sqrt(U1 * U1 + K * K);
     t1 = U1 * S1 + A0 * S0;
-    t2 = K > 0 ? K * K * (asinh(U1 / K) + asinh(A0 / K)) : 0;
+    /* asinh(U1/K) + asinh(A0/K) = asinh((U1 S0 + A0 S1)/K^2) (sinh of a
+    ** sum); where K^2 underflows the term is below the rounding of t1 */
+    x = (U1 * S0 + A0 * S1) / (K * K);
+    t2 = K > 0 && isfinite(x) ? K * K * asinh_pos(x) : 0;
     return (t1 + t2) / q;
   }
   if (U1 <= 0) {                  /* both ends before the vertex: reflect */
@@ -91,16 +125,19 @@ static double closed_form(double U0, double h, double q, double K) {
     U0 = r;
   }
   if (U1 == 0) return 0;
-  S0 = hypot(U0, K); S1 = hypot(U1, K);
+  S0 = sqrt(U0 * U0 + K * K); S1 = sqrt(U1 * U1 + K * K);
   /* U1 S1 - U0 S0 = (U1 - U0)(U1 + U0)(U1^2 + U0^2 + K^2)/(U1 S1 + U0 S0),
   ** divided by q with U1 - U0 = h q */
   t1 = h * (U1 + U0) * (U1 * U1 + U0 * U0 + K * K) / (U1 * S1 + U0 * S0);
   /* (K^2/q)(asinh(U1/K) - asinh(U0/K)) = (K^2/q) asinh(h q Y), Y = (U1 +
   ** U0)/(U1 S0 + U0 S1) (sinh of a difference; no cancellation) */
-  if (!(K > 0)) return t1;
+  if (!(K * K > 0)) return t1;   /* K^2 below the double range: t2 is too */
   Y = (U1 + U0) / (U1 * S0 + U0 * S1);
-  t2 = h * Y * q <= 1 ? K * K * h * Y * asinhc(h * q * Y)
-                      : K * K / q * asinh(h * q * Y);
+  x = h * q * Y;
+  /* x overflows only for K below 1e-300 (then U0 = 0, S0 = K): K^2 log x
+  ** is nothing beside t1 */
+  if (!isfinite(x)) return t1;
+  t2 = x <= 1 ? K * K * h * Y * asinhc(x) : K * K / q * asinh_pos(x);
   return t1 + t2;
 }
 
@@ -126,33 +163,37 @@ int arclen_quad_length(const double *p, int dim, double t0, double t1,
   }
   *len = 0;
   if (mx == 0 || h == 0) return ARCLEN_OK;
-  /* by a power of two to [1/2, 1): no square over- or underflows */
+  /* by a power of two to [1/2, 1): no square over- or underflows (a
+  ** product by 2^-e where that is a double, ldexp's rounding otherwise) */
   frexp(mx, &e);
-  for (k = 0; k < dim; k++) {
-    a[k] = ldexp(a[k], -e);
-    c[k] = ldexp(c[k], -e);
-    b[k] = c[k] - a[k];
+  if (e > -1000 && e < 1000) {
+    double sc = pow2(-e);
+    for (k = 0; k < dim; k++) { a[k] *= sc; c[k] *= sc; }
+  } else {
+    for (k = 0; k < dim; k++) { a[k] = ldexp(a[k], -e); c[k] = ldexp(c[k], -e); }
   }
-  q = arclen_seg_norm(b, dim);
+  for (k = 0; k < dim; k++) b[k] = c[k] - a[k];
+  q = norm(b, dim);
   speed_vector(a, c, dim, lo, v0);
   speed_vector(a, c, dim, lo + h, v1);
   if (q == 0) {
-    L = 2 * h * arclen_seg_norm(a, dim);
+    L = 2 * h * norm(a, dim);
   } else {
     double U0 = dot(v0, b, dim) / q, vt;
     K = cross_norm(a, c, dim) / q;   /* a x b = a x c */
     /* min |v| over the range: K where the vertex -a.b/|b|^2 is inside */
     vt = -dot(a, b, dim) / (q * q);
-    m = vt > lo && vt < lo + h ? K
-        : fmin(arclen_seg_norm(v0, dim), arclen_seg_norm(v1, dim));
-    if (m >= 4 * h * q) {
+    m = vt > lo && vt < lo + h ? K * K
+        : fmin(dot(v0, v0, dim), dot(v1, v1, dim));      /* min |v|^2 */
+    if (m >= 16 * h * h * (q * q)) {                   /* min |v| >= 4 h q */
       L = near_straight(a, c, dim, lo, h);
       if (gauss) *gauss = 1;
     } else {
       L = closed_form(U0, h, q, K);
     }
   }
-  L = ldexp(L, e + half);
+  L = e + half > -1000 && e + half < 1000 ? L * pow2(e + half)
+                                          : ldexp(L, e + half);
   if (t1 < t0) L = -L;
   *len = L;
   return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;

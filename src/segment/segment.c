@@ -54,8 +54,12 @@ int arclen_segment_check(int kind, int dim, const double *seg) {
   if (kind < 0 || kind >= ARCLEN_SEG_NKINDS) return ARCLEN_EDOMAIN;
   if (dim != 2 && dim != 3) return ARCLEN_EDIM;
   n = arclen_segment_count(kind, dim);
-  for (i = 0; i < n; i++)
-    if (!isfinite(seg[i])) return ARCLEN_EINVAL;
+  {
+    /* x - x is 0 for a finite x, NaN for inf and NaN: one test in all */
+    double z = 0;
+    for (i = 0; i < n; i++) z += seg[i] - seg[i];
+    if (z != 0) return ARCLEN_EINVAL;
+  }
   if (kind == ARCLEN_SEG_CONIC && !(seg[3 * dim] > 0)) return ARCLEN_EINVAL;
   return ARCLEN_OK;
 }
@@ -118,10 +122,13 @@ static int len_to(const void *ctx, double t, double *len) {
   return plain_length(c->kind, c->dim, c->seg, 0, t, len, NULL);
 }
 
+/* The speed for Newton's step: the kind's derivative itself (plain_time
+** has brought the points within 2^+-500 already, so nothing overflows). */
 static double speed_at(const void *ctx, double t) {
   const seg_ctx *c = (const seg_ctx *)ctx;
   double d[3];
-  arclen_segment_derivative(c->kind, c->dim, c->seg, t, d);
+  if (c->kind == ARCLEN_SEG_QUAD) arclen_quad_derivative(c->seg, c->dim, t, d);
+  else arclen_rquad_derivative(c->seg, c->dim, t, d);
   return arclen_seg_norm(d, c->dim);
 }
 
@@ -129,12 +136,27 @@ static double speed_at(const void *ctx, double t) {
 static int plain_time(int kind, int dim, const double *seg, double total,
                       double s, double rtol, double *t, long *evals) {
   seg_ctx c;
+  double scaled[ARCLEN_SEG_MAXN], mx = 0;
+  int i, n = arclen_segment_count(kind, dim) - (kind == ARCLEN_SEG_CONIC);
   if (kind == ARCLEN_SEG_LINE) {     /* t uniform: s(t) = t L */
     *t = !(s > 0) ? 0 : !(s < total) ? 1 : s / total;
     if (evals) *evals = 0;
     return ARCLEN_OK;
   }
   c.kind = kind; c.dim = dim; c.seg = seg;
+  for (i = 0; i < n; i++) mx = fmax(mx, fabs(seg[i]));
+  if (mx > 0 && (mx < 0x1p-500 || mx > 0x1p500)) {
+    /* far from 1 (subnormal lengths come in steps of 2^-1074): the same
+    ** curve scaled by a power of two, exactly but for parts below 2^-1022
+    ** of the largest */
+    int e;
+    frexp(mx, &e);
+    for (i = 0; i < n; i++) scaled[i] = ldexp(seg[i], -e);
+    if (kind == ARCLEN_SEG_CONIC) scaled[n] = seg[n];
+    c.seg = scaled;
+    total = ldexp(total, -e);
+    s = ldexp(s, -e);
+  }
   return arclen_seg_invert(len_to, speed_at, &c, total, s, rtol * total, t,
                            evals);
 }
@@ -210,14 +232,31 @@ void arclen_segment_point(int kind, int dim, const double *seg, double t,
   }
 }
 
+/* seg's points scaled by 2^-e into copy when they lie beyond 2^+-500
+** (e = 0 and a plain copy otherwise): differences of points near DBL_MAX
+** then neither overflow nor meet inf - inf.  Returns e. */
+static int scaled_copy(int kind, int dim, const double *seg, double *copy) {
+  int i, e = 0, n = arclen_segment_count(kind, dim);
+  int np = kind == ARCLEN_SEG_CONIC ? n - 1 : n;
+  double mx = 0;
+  for (i = 0; i < np; i++) mx = fmax(mx, fabs(seg[i]));
+  if (mx > 0x1p500 || (mx > 0 && mx < 0x1p-500)) frexp(mx, &e);
+  for (i = 0; i < n; i++) copy[i] = i < np ? ldexp(seg[i], -e) : seg[i];
+  return e;
+}
+
 void arclen_segment_derivative(int kind, int dim, const double *seg,
                                double t, double *d) {
+  double c[ARCLEN_SEG_MAXN];
+  int k, e;
+  if (kind == ARCLEN_SEG_CUBIC) { arclen_derivative(seg, dim, t, d); return; }
+  e = scaled_copy(kind, dim, seg, c);
   switch (kind) {
-  case ARCLEN_SEG_LINE: arclen_line_derivative(seg, dim, d); break;
-  case ARCLEN_SEG_QUAD: arclen_quad_derivative(seg, dim, t, d); break;
-  case ARCLEN_SEG_CUBIC: arclen_derivative(seg, dim, t, d); break;
-  default: arclen_rquad_derivative(seg, dim, t, d); break;
+  case ARCLEN_SEG_LINE: arclen_line_derivative(c, dim, d); break;
+  case ARCLEN_SEG_QUAD: arclen_quad_derivative(c, dim, t, d); break;
+  default: arclen_rquad_derivative(c, dim, t, d); break;
   }
+  for (k = 0; e != 0 && k < dim; k++) d[k] = ldexp(d[k], e);
 }
 
 /* v / |v| into v, or 0 (v zero); returns the norm. */
@@ -228,10 +267,12 @@ static double normalize(double *v, int dim) {
   return n;
 }
 
-void arclen_segment_unit_tangent(int kind, int dim, const double *seg,
+void arclen_segment_unit_tangent(int kind, int dim, const double *seg0,
                                  double t, double *v) {
+  double seg[ARCLEN_SEG_MAXN];
   int k;
-  if (kind == ARCLEN_SEG_CUBIC) { arclen_unit_tangent(seg, dim, t, v); return; }
+  if (kind == ARCLEN_SEG_CUBIC) { arclen_unit_tangent(seg0, dim, t, v); return; }
+  scaled_copy(kind, dim, seg0, seg);     /* a direction: the scale is free */
   arclen_segment_derivative(kind, dim, seg, t, v);
   if (normalize(v, dim) > 0 || kind == ARCLEN_SEG_LINE) return;
   if (kind == ARCLEN_SEG_QUAD) {
