@@ -332,6 +332,8 @@ local function unpack_doubles(s, fname, arg)
   return out
 end
 
+local lengths_by_kind      -- (below) lengths and lengths3 with opts.kinds
+
 -- arclen.lengths(coords [, opts]) -> {L1, L2, ...}: 8 numbers a curve.
 function M.lengths(coords, opts)
   local fname = "lengths"
@@ -486,9 +488,12 @@ local S = require("arclen.pure_segment")
 
 -- The kind name at argument arg.
 local function check_kind(kind, arg, fname)
-  if type(kind) ~= "string" or S.KINDS[kind] == nil then
-    argerror(arg, fname, format("kind must be 'line', 'quad', 'cubic' or 'conic', got %s",
-      type(kind) == "string" and "'" .. kind .. "'" or (kind == nil and "no value" or type(kind))))
+  if type(kind) ~= "string" then
+    argerror(arg, fname, format("segment kind expected (line, quad, cubic or conic), got %s",
+      kind == nil and "no value" or type(kind)))
+  end
+  if S.KINDS[kind] == nil then
+    argerror(arg, fname, format("unknown segment kind '%s' (line, quad, cubic or conic)", kind))
   end
   return kind
 end
@@ -496,11 +501,12 @@ end
 -- The segment's numbers at argument arg, as floats, and its dimension:
 -- the kind's count in 2D or 3D, finite; a conic's w > 0.
 local function check_segment(kind, seg, arg, fname)
+  local n2, n3 = S.count(kind, 2), S.count(kind, 3)
   if type(seg) ~= "table" then
-    argerror(arg, fname, format("%s segment expected (a table of numbers), got %s", kind,
+    argerror(arg, fname, format("segment expected (a table of %d or %d numbers), got %s", n2, n3,
       seg == nil and "no value" or type(seg)))
   end
-  local n, n2, n3 = #seg, S.count(kind, 2), S.count(kind, 3)
+  local n = #seg
   if n ~= n2 and n ~= n3 then
     argerror(arg, fname, format("a %s has %d (2D) or %d (3D) numbers, got %d", kind, n2, n3, n))
   end
@@ -508,13 +514,15 @@ local function check_segment(kind, seg, arg, fname)
   for i = 1, n do
     local v = seg[i]
     if type(v) ~= "number" then
-      argerror(arg, fname, format("%s number %d must be a number, got %s", kind, i, type(v)))
+      argerror(arg, fname, format("number %d must be a number, got %s", i, type(v)))
     end
-    if not isfinite(v) then argerror(arg, fname, format("%s number %d must be finite", kind, i)) end
     c[i] = v * 1.0
   end
+  for i = 1, n do
+    if not isfinite(c[i]) then argerror(arg, fname, format("number %d must be finite", i)) end
+  end
   if kind == "conic" and not (c[n] > 0) then
-    argerror(arg, fname, "a conic's weight w must be > 0")
+    argerror(arg, fname, format("conic weight (number %d) must be positive", n))
   end
   return c, n == n2 and 2 or 3
 end
@@ -523,19 +531,31 @@ local function needs_c_3d(kind, d, arg, fname)
   if kind == "cubic" and d == 3 then argerror(arg, fname, "a 3D cubic " .. NEEDS_C) end
 end
 
--- The options of the segment functions: tol, method (as arclen.length's).
+-- The options of the segment functions: as arclen.length's (tol, method,
+-- t0, t1, info; method applies to cubics).
 local function segment_opts(opts, arg, fname)
-  local rtol, t0, t1, info = check_opts(opts, arg, fname)
-  if t0 ~= 0 or t1 ~= 1 or info then
-    argerror(arg, fname, "only tol and method apply to segments")
-  end
-  return rtol
+  return check_opts(opts, arg, fname)
 end
 
--- The length of a checked segment.
-local function seg_length(kind, c, d, rtol)
-  if kind == "cubic" then return (G.length(c, 0, 1, rtol)) end
-  return (S.length(kind, c, d, rtol))
+-- The info table of a segment's length or time (as arclen.length's).
+local function seg_info(evals)
+  return {evals = evals, pieces = 1, depth = 0, err = 0, calls = 1}
+end
+
+-- The length of a checked segment; from t0 to t1 (negative when t0 > t1)
+-- when given; the second result counts the evaluations.
+local function seg_length(kind, c, d, rtol, t0, t1)
+  t0, t1 = t0 or 0, t1 or 1
+  if t0 > t1 then
+    local len, e = seg_length(kind, c, d, rtol, t1, t0)
+    return -len, e
+  end
+  if kind == "cubic" then
+    local len, info = G.length(c, t0, t1, rtol, true)
+    return len, info and info.evals or 0
+  end
+  if t0 == 0 and t1 == 1 then return S.length(kind, c, d, rtol) end
+  return S.length_range(kind, c, d, rtol, t0, t1)
 end
 
 -- The times of ascending distances s (in [0, L]) on a checked segment.
@@ -607,6 +627,16 @@ local function seg_tangent(kind, c, d, t)
   return v
 end
 
+local function check_t_named(t, arg, fname, what)
+  if type(t) ~= "number" then
+    argerror(arg, fname, format("%s must be a number, got %s", what,
+      t == nil and "no value" or type(t)))
+  end
+  if not isfinite(t) then argerror(arg, fname, what .. " must be finite") end
+  if not (t >= 0 and t <= 1) then argerror(arg, fname, what .. " must be in [0, 1]") end
+  return t
+end
+
 local function unpack_d(v, d)
   if d == 3 then return v[1], v[2], v[3] end
   return v[1], v[2]
@@ -618,7 +648,15 @@ function M.segment_length(kind, seg, opts)
   check_kind(kind, 1, fname)
   local c, d = check_segment(kind, seg, 2, fname)
   needs_c_3d(kind, d, 2, fname)
-  return seg_length(kind, c, d, segment_opts(opts, 3, fname))
+  local rtol, t0, t1, want = segment_opts(opts, 3, fname)
+  if kind == "cubic" then
+    local len, info = G.length(c, t0, t1, rtol, want)
+    if want then return len, info end
+    return len
+  end
+  local len, evals = seg_length(kind, c, d, rtol, t0, t1)
+  if want then return len, seg_info(evals) end
+  return len
 end
 
 -- arclen.segment_time(kind, seg, s [, opts]) -> t, |s(t) - s| <= tol L
@@ -630,11 +668,14 @@ function M.segment_time(kind, seg, s, opts)
   if type(s) ~= "number" or s ~= s then
     argerror(3, fname, "length must be a number (not NaN)")
   end
-  local rtol = segment_opts(opts, 4, fname)
+  local rtol, t0, t1, want = segment_opts(opts, 4, fname)
+  if t0 ~= 0 or t1 ~= 1 then argerror(4, fname, "t0 and t1 do not apply to time") end
   local L = seg_length(kind, c, d, rtol)
-  if s <= 0 then return 0 end
-  if s >= L then return 1 end
-  return seg_times(kind, c, d, L, {s}, rtol)[1]
+  local t = 0
+  if s >= L then t = 1
+  elseif s > 0 then t = seg_times(kind, c, d, L, {s}, rtol)[1] end
+  if want then return t, seg_info(0) end
+  return t
 end
 
 -- arclen.segment_point(kind, seg, t) -> x, y [, z]
@@ -658,7 +699,7 @@ function M.segment_sub(kind, seg, t0, t1)
   local fname = "segment_sub"
   check_kind(kind, 1, fname)
   local c, d = check_segment(kind, seg, 2, fname)
-  t0, t1 = check_t(t0, 3, fname), check_t(t1, 4, fname)
+  t0, t1 = check_t_named(t0, 3, fname, "t0"), check_t_named(t1, 4, fname, "t1")
   if kind ~= "cubic" then return S.sub(kind, c, d, t0, t1) end
   local out = {}
   local function blossom(u1, u2, u3, i)
@@ -684,21 +725,21 @@ end
 local function check_kinds(kinds, n, arg, fname)
   if kinds == nil then return nil end
   if type(kinds) ~= "string" then
-    argerror(arg, fname, "kinds must be a string of the letters L, Q, C, R, got " .. type(kinds))
+    argerror(arg, fname, "kinds must be a string of letters L, Q, C, R, got " .. type(kinds))
   end
   if n and #kinds ~= n then
     argerror(arg, fname, format("kinds must have one letter per segment (%d), got %d", n, #kinds))
   end
   local bad = kinds:find("[^LQCR]")
   if bad then
-    argerror(arg, fname, format("kinds: letter %d is not one of L, Q, C, R", bad))
+    argerror(arg, fname, format("kinds: letter %d is not L, Q, C or R", bad))
   end
   return kinds
 end
 
 -- Records of stride 4d from packed doubles (a string or a flat table):
 -- record k as the checked numbers of kind kinds[k]; returns n, rec(k).
-local function records(packed, kinds, d, arg, fname)
+local function records(packed, kinds, d, arg, fname, kinds_arg)
   local v = packed
   if type(packed) == "string" then v = unpack_doubles(packed, fname, arg)
   elseif type(packed) ~= "table" then
@@ -713,7 +754,8 @@ local function records(packed, kinds, d, arg, fname)
   local n = #v / stride
   n = floor(n)
   if kinds and #kinds ~= n then
-    argerror(arg, fname, format("kinds has %d letters for %d segments", #kinds, n))
+    argerror(kinds_arg or 2, fname, format("kinds must have one letter per segment (%d), got %d",
+      n, #kinds))
   end
   return n, function(k)
     local kind = kinds and S.NAME[kinds:sub(k, k)] or "cubic"
@@ -721,29 +763,30 @@ local function records(packed, kinds, d, arg, fname)
     for i = 1, cnt do
       local x = v[base + i]
       if type(x) ~= "number" or not isfinite(x) then
-        argerror(arg, fname, format("segment %d: number %d must be finite", k, i))
+        argerror(arg, fname, format("segment %d: coordinates and arguments must be finite numbers", k))
       end
       c[i] = x * 1.0
     end
     if kind == "conic" and not (c[cnt] > 0) then
-      argerror(arg, fname, format("segment %d: a conic's weight w must be > 0", k))
+      argerror(arg, fname, format("segment %d: conic weight must be positive", k))
     end
     return c, kind
   end
 end
 
 -- The lengths of packed records by kind (lengths and lengths3 with kinds).
-local function lengths_by_kind(packed, opts, d, fname)
+function lengths_by_kind(packed, opts, d, fname)
   local o = {}
   for key, v in pairs(opts) do if key ~= "kinds" then o[key] = v end end
-  local rtol = segment_opts(o, 2, fname)
+  local rtol, t0, t1, info = segment_opts(o, 2, fname)
+  if info then argerror(2, fname, "info does not apply to " .. fname) end
   local kinds = check_kinds(opts.kinds, nil, 2, fname)
   local n, rec = records(packed, kinds, d, 1, fname)
   local out = {}
   for k = 1, n do
     local c, kind = rec(k)
     if kind == "cubic" and d == 3 then argerror(1, fname, "a 3D cubic " .. NEEDS_C) end
-    out[k] = seg_length(kind, c, d, rtol)
+    out[k] = (seg_length(kind, c, d, rtol, t0, t1))
   end
   return out
 end
@@ -771,9 +814,7 @@ local function segments_of(segs, kinds, arg)
   end
   if type(segs[1]) ~= "number" then
     local n = #segs
-    if kinds and #kinds ~= n then
-      argerror(arg, "_walk", format("kinds has %d letters for %d segments", #kinds, n))
-    end
+    check_kinds(kinds, n, arg, "_walk")
     return n, function(k)
       local kind = kinds and S.NAME[kinds:sub(k, k)] or "cubic"
       local c, d = check_segment(kind, segs[k], 1, "_walk")
@@ -787,7 +828,7 @@ local function segments_of(segs, kinds, arg)
     end
   end
   local d = (#kinds > 0 and #segs == 12 * #kinds) and 3 or 2
-  local n, rec = records(segs, kinds, d, 1, "_walk")
+  local n, rec = records(segs, kinds, d, 1, "_walk", arg)
   return n, function(k)
     local c, kind = rec(k)
     return c, kind, d

@@ -434,6 +434,11 @@ end
 
 -- ---- the kinds' functions -----------------------------------------------
 
+-- A conic's length is measured to 1e-14 whatever tol (as the C core's
+-- exact one: its pieces' orders grow only with log(1/tol)); its times
+-- keep tol.
+local CONIC_RTOL = 1e-14
+
 -- The point at t.
 function M.point(kind, c, d, t)
   local out = {}
@@ -496,11 +501,23 @@ end
 
 -- The length; the second result counts the speed evaluations.
 function M.length(kind, c, d, rtol)
+  if rtol > CONIC_RTOL then rtol = CONIC_RTOL end
   if kind == "line" then return line_length(c, d), 1 end
   if kind == "quad" then return quad_length(quad_setup(c, d), 0, 1), 1 end
   local k = conic_setup(c, d)
   if k.quad then return quad_length(k.quad, 0, 1), 1 end
   return conic_length_th(k, -k.al, k.al, rtol)
+end
+
+-- The length from t0 to t1 (t0 < t1); the second result counts the
+-- evaluations.
+function M.length_range(kind, c, d, rtol, t0, t1)
+  if rtol > CONIC_RTOL then rtol = CONIC_RTOL end
+  if kind == "line" then return (t1 - t0) * line_length(c, d), 1 end
+  if kind == "quad" then return quad_length(quad_setup(c, d), t0, t1), 1 end
+  local k = conic_setup(c, d)
+  if k.quad then return quad_length(k.quad, t0, t1), 1 end
+  return conic_length_th(k, th_of_t(k, t0), th_of_t(k, t1), rtol)
 end
 
 -- The times of the ascending distances s[1..] (each in [0, L], L the
