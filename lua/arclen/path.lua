@@ -488,12 +488,15 @@ local function cumulative(self)
   if self.packed and not mp and self.n > 0 then  -- one batch call, no table a cubic
     if self.kindstr then lopts.kinds = self.kindstr end
     local lens = arclen.lengths(self.packed, lopts)
-    for k = 1, self.n do
-      total = total + lens[k]
-      cum[k] = total
+    lopts.kinds = nil
+    if lens then          -- nil: a segment's length overflowed (below, one by one)
+      for k = 1, self.n do
+        total = total + lens[k]
+        cum[k] = total
+      end
+      self.cum = cum
+      return cum
     end
-    self.cum = cum
-    return cum
   end
   local segs = segs_of(self)
   for k = 1, self.n do
@@ -501,7 +504,10 @@ local function cumulative(self)
     local kind = kind_of(self, k)
     if mp then len, err = arclen.metapost.arclength(segs[k])
     elseif kind == "cubic" then len, err = arclen.length(segs[k], lopts)
-    else len = arclen.segment_length(kind, segs[k], lopts) end
+    else
+      -- nil: arithmetic overflow, a length beyond the doubles (as a cubic's inf)
+      len = arclen.segment_length(kind, segs[k], lopts) or huge
+    end
     if len == nil then return nil, err end
     total = total + len
     cum[k] = total
