@@ -346,15 +346,16 @@ describe("paths of four kinds: p:svg", function()
     end
   end)
 
-  it("reads back to the same length (Lua engine: arcs raise, naming the C core)", function()
+  it("reads back to the same length (a Lua engine without arcs: raises, naming the C core)",
+    function()
     for _, id in ipairs({"mix2", "circle", "arcs"}) do
       local p = build(id)
-      if H.engine ~= "c" then
-        local msg = H.error_of(arclen.path.svg, p:svg())
-        assert.truthy(msg and msg:find("C core", 1, true), msg)
+      local ok, back = pcall(arclen.path.svg, p:svg(), {tol = 1e-12, arc_tol = 1e-12})
+      if H.engine ~= "c" and not ok then
+        assert.truthy(tostring(back):find("C core", 1, true), back)
         return
       end
-      local back = arclen.path.svg(p:svg(), {tol = 1e-12, arc_tol = 1e-12})
+      assert(ok, back)
       assert.is_true(math.abs(back:length() - p:length()) <= 1e-9 * p:length(),
         ("%s: %.17g vs %.17g"):format(id, back:length(), p:length()))
     end
