@@ -513,6 +513,70 @@ if has_core and type(core) == "table" and core.segment_length then
       if kind == "conic" then c[#c + 1] = 10 ^ (4 * r() - 2) end
       return c
     end
+    -- arclen.path loaded afresh on the given engine, leaving the loaded
+    -- modules as they were (as engines_diff_spec.lua does)
+    local function path_on(engine)
+      local names = {"arclen.engine", "arclen.path", "arclen.svgpath"}
+      local saved = {}
+      for _, n in ipairs(names) do saved[n] = package.loaded[n] end
+      package.loaded["arclen.engine"] = engine
+      package.loaded["arclen.path"], package.loaded["arclen.svgpath"] = nil, nil
+      local ok, mod = pcall(require, "arclen.path")
+      for _, n in ipairs(names) do package.loaded[n] = saved[n] end
+      assert(ok, mod)
+      return mod
+    end
+    local path_c, path_lua = path_on(core), path_on(pure)
+    -- a random 2D path: lines, quadratics, conics (w in [0.01, 100]) and
+    -- cubics, each from the last end; 3D: no cubics (the Lua engine's)
+    local function random_path(d, n)
+      local list, at = {}, {}
+      for j = 1, d do at[j] = rnd(10) end
+      for k = 1, n do
+        local kinds = d == 2 and {"line", "quad", "conic", "cubic"} or {"line", "quad", "conic"}
+        local kind = kinds[math.floor(r() * #kinds) + 1]
+        local npts = ({line = 2, quad = 3, conic = 3, cubic = 4})[kind]
+        local c = {kind = kind}
+        for j = 1, d do c[j] = at[j] end
+        for i = d + 1, npts * d do c[i] = c[(i - 1) % d + 1] + rnd(5) end
+        if kind == "conic" then c[#c + 1] = 10 ^ (4 * r() - 2) end
+        for j = 1, d do at[j] = c[(npts - 1) * d + j] end
+        list[k] = c
+      end
+      return list
+    end
+    for _, d in ipairs({2, 3}) do
+      it(("agree on random %dD paths of every kind: length, points, resample, dash"):format(d),
+        function()
+        for _ = 1, 20 do
+          local list = random_path(d, 12)
+          for _, tol in ipairs({1e-6, 1e-12}) do
+            local pc, pl = path_c(list, {tol = tol}), path_lua(list, {tol = tol})
+            local L = pc:length()
+            assert.is_true(math.abs(L - pl:length()) <= 2 * tol * L + 1e-15 * L)
+            local ds = {}
+            for i = 1, 25 do ds[i] = L * r() end
+            local a, b = pc:points(ds), pl:points(ds)
+            for i = 1, #ds do
+              local e = 0
+              for j = 1, d do e = e + (a[d * (i - 1) + j] - b[d * (i - 1) + j]) ^ 2 end
+              assert.is_true(math.sqrt(e) <= 2 * tol * L + 1e-13, ("%g"):format(math.sqrt(e)))
+            end
+            local ra, rb = pc:resample(9), pl:resample(9)
+            for i = 1, 9 do
+              assert.is_true(math.abs(ra[i].x - rb[i].x) + math.abs(ra[i].y - rb[i].y)
+                             <= 4 * tol * L + 1e-13)
+            end
+            local da, db = pc:dash({L / 9, L / 17}), pl:dash({L / 9, L / 17})
+            assert.are.equal(#da, #db)
+            for i = 1, #da do
+              assert.is_true(math.abs(da[i]:length() - db[i]:length()) <= 4 * tol * L + 1e-13)
+            end
+          end
+        end
+      end)
+    end
+
     for _, kind in ipairs({"line", "quad", "conic"}) do
       for _, d in ipairs({2, 3}) do
         it(("agree on %dD %ss within tol"):format(d, kind), function()
