@@ -96,8 +96,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   if (rc != ARCLEN_OK) fail("length [0, u]", kind, s, dim, "code %g u %g", rc, u);
   L2 = length(kind, dim, s, u, 1, &rc);
   if (rc != ARCLEN_OK) fail("length [u, 1]", kind, s, dim, "code %g u %g", rc, u);
-  if (fabs(L1 + L2 - L) > 2 * allow)
-    fail("additivity", kind, s, dim, "pieces %.17g, whole %.17g", L1 + L2, L);
+  /* halves: L1 + L2 may round past DBL_MAX where L is just below it */
+  if (fabs(L1 / 2 + L2 / 2 - L / 2) > allow)
+    fail("additivity", kind, s, dim, "pieces %.17g, whole %.17g", L1 / 2 + L2 / 2, L / 2);
   arclen_segment_sub(kind, dim, s, u, 1, sub);
   if (arclen_segment_check(kind, dim, sub) == ARCLEN_OK) {
     double Ls = length(kind, dim, sub, 0, 1, &rc);

@@ -107,15 +107,24 @@ describe("segments of four kinds (issue 31)", function()
 
   describe("point, derivative, sub", function()
     it("the speed at the reference times is |segment_derivative|", function()
+      local function speed(kind, s, t)
+        local d = {arclen.segment_derivative(kind, s, t)}
+        local m, v = 0, 0
+        for i = 1, #d do m = max(m, abs(d[i])) end
+        for i = 1, #d do v = v + (d[i] / m) ^ 2 end   -- no overflow at 1e300
+        return m * math.sqrt(v)
+      end
       for _, row in ipairs(rows) do
         local s = seg_of(row)
         for _, q in ipairs({{"T33", "V33"}, {"T67", "V67"}}) do
-          local d = {arclen.segment_derivative(row.kind, s, tonumber(row[q[1]]))}
-          local m, v = 0, 0
-          for i = 1, #d do m = max(m, abs(d[i])) end
-          for i = 1, #d do v = v + (d[i] / m) ^ 2 end   -- no overflow at 1e300
-          local want = tonumber(row[q[2]])
-          assert(H.relerr(m * math.sqrt(v), want) <= 1e-13, row.name)
+          -- T is rounded to a double: where the speed changes fast (w =
+          -- 38272 turns its corner within 1e-4 of t) its neighbours' speeds
+          -- bracket the reference
+          local T, want = tonumber(row[q[1]]), tonumber(row[q[2]])
+          local a, b = speed(row.kind, s, T * (1 - EPS)), speed(row.kind, s, math.min(1, T * (1 + EPS)))
+          local lo, hi = math.min(a, b) * (1 - 1e-13), math.max(a, b) * (1 + 1e-13)
+          assert(H.relerr(speed(row.kind, s, T), want) <= 1e-13 or (want >= lo and want <= hi),
+                 row.name)
         end
       end
     end)

@@ -179,6 +179,13 @@ def cases():
     c.append(("conic parabola", "conic", 2, [0.0, 0.0, 1.0, 2.0, 3.0, 0.0, 1.0]))
     c.append(("conic hyperbola w=2", "conic", 2, [0.0, 0.0, 1.0, 1.0, 2.0, 0.0, 2.0]))
     c.append(("conic hyperbola w=100", "conic", 2, [0.0, 0.0, 1.0, 1.0, 3.0, 0.5, 100.0]))
+    # nearly parallel legs with |a| ~ E^2 |c| (E = w + sqrt(w^2 - 1)): a thin
+    # hyperbola whose U + V cancels (fuzz/fuzz_segment), and the conic of
+    # w = 38272 whose pieces made it
+    c.append(("conic thin hyperbola", "conic", 2,
+              [0.0, 0.0, -38.57211758922945, -69.23200592938619, -38.784879665046418,
+               -69.613886069034223, 6.7693903785997485]))
+    c.append(("conic hyperbola w=38272", "conic", 2, [0.0, 0.0, -39.0, -70.0, -70.0, -109.0, 38272.0]))
     c.append(("conic collinear reversal", "conic", 2, [0.0, 0.0, 2.0, 0.0, 1.0, 0.0, 0.7]))
     c.append(("conic collinear hyperbola", "conic", 2, [0.0, 0.0, 1.0, 1.0, 3.0, 3.0, 3.0]))
     c.append(("conic 3d quarter circle", "conic", 3,

@@ -19,6 +19,19 @@ static double dot(const double *u, const double *v, int dim) {
   return dim == 3 ? s + u[2] * v[2] : s;
 }
 
+/* out (dim numbers) into the bounding box of the three points: a point
+** of the conic (and of its blossom) is a convex combination of them
+** (weights > 0), so only rounding can leave the box -- and beyond DBL_MAX
+** it would (points at +-1.797e308). */
+static void into_hull(const double *p, int dim, double *out) {
+  int k;
+  for (k = 0; k < dim; k++) {
+    double lo = fmin(p[k], fmin(p[dim + k], p[2 * dim + k]));
+    double hi = fmax(p[k], fmax(p[dim + k], p[2 * dim + k]));
+    out[k] = fmin(fmax(out[k], lo), hi);
+  }
+}
+
 /* The homogeneous blossom's weight W(u, v) and the point of B(u, v),
 ** formed relative to P0 (so far-away points keep the legs' digits). */
 static double blossom(const double *p, int dim, double u, double v,
@@ -38,6 +51,7 @@ static double blossom(const double *p, int dim, double u, double v,
       out[k] = (p[k] + x) + x;
     }
   }
+  into_hull(p, dim, out);
   return W;
 }
 
@@ -78,6 +92,7 @@ void arclen_rquad_point(const double *p, int dim, double t, double *out) {
       out[k] = p[2 * dim + k]
                + ((b0 / D) * (p[k] - p[2 * dim + k]) + (b1 / D) * (p[dim + k] - p[2 * dim + k]));
   }
+  into_hull(p, dim, out);
 }
 
 /* C'(t) = 2 [w (1-t)^2 (P1 - P0) + t (1-t) (P2 - P0) + w t^2 (P2 - P1)] / D^2,
