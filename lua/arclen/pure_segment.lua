@@ -247,18 +247,37 @@ local function conic_setup(c, d)
   local one = (1 - w) * (1 + w)              -- exact enough: 1 - w exact near 1
   local hyp = w > 1
   local s = 1 / sqrt(abs(one))
+  -- For w >> 1 the speed is |(V + U) e^th + (V - U) e^-th| / 2, and
+  -- V - U = a (P1 - P0) + g h (a = w/(w^2-1)) cancels to 1/(2 w^2) if
+  -- formed from U and V: g = 1/sqrt(w^2-1) - a = -1/((w^2-1)(w +
+  -- sqrt(w^2-1))) from the legs gives it (kp, km: V + U and V - U).
+  local kp, km = {}, {}
+  local g = hyp and -1 / ((-one) * (w + sqrt(-one))) or 0
   for j = 1, d do
     local p0, p1, p2 = c[j], c[d + j], c[2 * d + j]
     local h = (p2 - p0) / 2
     local D = (p1 - p0) - h                   -- P1 - m, from the legs
     U[j] = D * w / one
     V[j] = h * s
+    if hyp then
+      kp[j] = V[j] + U[j]
+      km[j] = (w / -one) * (p1 - p0) + g * h
+    end
   end
+  k.kp, k.km = kp, km
   local al
   if hyp then al = log1p((w - 1) + sqrt(-one))           -- acosh w
   else al = 2 * atan(sqrt((1 - w) / (1 + w))) end        -- acos w, accurate near 1
   k.U, k.V, k.hyp, k.al = U, V, hyp, al
   k.th = hyp and tanh(al / 2) or tan(al / 2)
+  if hyp then
+    -- 1 - tanh(al/2) = 2/(E + 1), E = e^al = w + sqrt(w^2 - 1): the
+    -- mapping of t near the ends without cancellation (th_of_t)
+    local E = w + sqrt(-one)
+    k.omt, k.th = 2 / (E + 1), ((w - 1) + sqrt(-one)) / (E + 1)
+    local _, ch = sinh_cosh(al / 2)
+    k.chh = ch
+  end
   -- The speed's branch points.  With uu = |U|^2, vv = |V|^2, uv = U.V and
   -- X = |U x V|^2 = uu vv - uv^2:
   --   ellipse:   speed^2 = p + R cos(2 th - phi),  p = (vv + uu)/2,
@@ -309,8 +328,14 @@ end
 local function conic_speed_th(k, th)
   local v = {}
   if k.hyp then
-    local sh, ch = sinh_cosh(th)
-    for j = 1, k.d do v[j] = k.V[j] * ch + k.U[j] * sh end
+    if abs(th) < 0.5 then
+      local sh, ch = sinh_cosh(th)
+      for j = 1, k.d do v[j] = k.V[j] * ch + k.U[j] * sh end
+    else
+      local e = exp(th)
+      local ie = 1 / e
+      for j = 1, k.d do v[j] = (k.kp[j] * e + k.km[j] * ie) / 2 end
+    end
   else
     local ct, st = cos(th), sin(th)
     for j = 1, k.d do v[j] = k.V[j] * ct - k.U[j] * st end
@@ -319,17 +344,33 @@ local function conic_speed_th(k, th)
 end
 
 -- The angle of the rational parameter t and back.
+-- A hyperbola's ends move fast in t (the speed there is 2 w |P1 - P0|):
+-- th = 2 atanh((2t - 1) T) = log(((1 - T) + 2 t T) / ((1 - T) + 2 (1 - t) T))
+-- and t = (T + tanh(th/2)) / (2T) = sinh((al + th)/2) / (2 T cosh(al/2)
+-- cosh(th/2)) (tanh a + tanh b = sinh(a + b) / (cosh a cosh b)), 1 - t
+-- likewise with al - th, keep their digits near the ends.
 local function th_of_t(k, t)
-  local x = (2 * t - 1) * k.th
-  if k.hyp then return 2 * atanh(x) end
-  return 2 * atan(x)
+  if t == 0 then return -k.al end
+  if t == 1 then return k.al end
+  if k.hyp then
+    local T, o = k.th, k.omt
+    return log((o + 2 * t * T) / (o + 2 * (1 - t) * T))
+  end
+  return 2 * atan((2 * t - 1) * k.th)
 end
 
 local function t_of_th(k, th)
   if th <= -k.al then return 0 end
   if th >= k.al then return 1 end
-  local x = k.hyp and tanh(th / 2) or tan(th / 2)
-  local t = (1 + x / k.th) / 2
+  local t
+  if k.hyp then
+    local _, ch = sinh_cosh(th / 2)
+    local den = 2 * k.th * k.chh * ch
+    if th <= 0 then t = sinh_cosh((k.al + th) / 2) / den
+    else t = 1 - sinh_cosh((k.al - th) / 2) / den end
+  else
+    t = (1 + tan(th / 2) / k.th) / 2
+  end
   if t < 0 then return 0 elseif t > 1 then return 1 end
   return t
 end
