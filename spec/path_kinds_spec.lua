@@ -515,7 +515,7 @@ if has_core and type(core) == "table" and core.segment_length then
       if kind == "quad" and r() < 0.3 then            -- nearly straight
         for j = 1, d do c[d + j] = (c[j] + c[2 * d + j]) / 2 + rnd(1e-6) end
       end
-      if kind == "conic" then c[#c + 1] = 10 ^ (4 * r() - 2) end
+      if kind == "conic" then c[#c + 1] = 10 ^ (6 * r() - 3) end   -- w in [1e-3, 1e3]
       return c
     end
     -- arclen.path loaded afresh on the given engine, leaving the loaded
@@ -544,7 +544,7 @@ if has_core and type(core) == "table" and core.segment_length then
         local c = {kind = kind}
         for j = 1, d do c[j] = at[j] end
         for i = d + 1, npts * d do c[i] = c[(i - 1) % d + 1] + rnd(5) end
-        if kind == "conic" then c[#c + 1] = 10 ^ (4 * r() - 2) end
+        if kind == "conic" then c[#c + 1] = 10 ^ (6 * r() - 3) end   -- w in [1e-3, 1e3]
         for j = 1, d do at[j] = c[(npts - 1) * d + j] end
         list[k] = c
       end
