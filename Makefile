@@ -69,7 +69,7 @@ BUILD = build
 OUT = $(BUILD)/$(LUA)
 # src/<area>/*.c is the core (no Lua); src/lua/ is the binding.  See
 # doc/architecture.md for the areas and the one-way order between them.
-AREAS = curve roots gauss elliptic metapost fit conic baseline svg methods
+AREAS = curve roots gauss elliptic metapost fit conic baseline segment svg methods
 CORE_SRC = $(foreach a,$(AREAS),$(wildcard src/$(a)/*.c))
 BIND_SRC = $(filter-out src/lua/svgdoc.c,$(wildcard src/lua/*.c))
 CORE_OBJ = $(patsubst src/%.c,$(BUILD)/core/%.o,$(CORE_SRC))

@@ -7,6 +7,10 @@
 -- growth (time per point as n and k grow: flat = linear in n + k).  Then
 -- the worst error of resample's points against the tol-1e-15 answer, and
 -- the peers' (bench/peers/paths/run.sh writes their points) against it.
+-- Then the segment kinds: one segment_length per kind against one cubic's
+-- length, and paths mixing lines, conic arcs and cubics (a third each)
+-- beside the cubic-only paths of the same n: length (from scratch),
+-- time, resample, dash, each in microseconds and in length calls.
 --   make bench-paths          QUICK=1 for n <= 100, k <= 10^4
 local arclen = require("arclen")
 local path = arclen.path
@@ -200,4 +204,94 @@ if PEERS then
   print(("arclen p:resample on n = 100, k = 1000: %.3f us per point (%.2f length calls), worst error %.2g L"):format(
     per[100][1000] * 1e6, per[100][1000] / t_len, worst_error(100, 1000, pts)))
   if ok == false then print("(peers' run.sh failed)") end
+end
+
+-- ---- segments of four kinds ----------------------------------------------
+
+-- One segment's length by kind, against one cubic's (arclen.length).
+print()
+print(("one segment's length by kind (%s engine, tol %g):"):format(arclen.engine or "?", TOL))
+print("| kind | us | length calls |")
+print("|---|---|---|")
+do
+  local kinds = {
+    {"line", function(c) return {c[1], c[2], c[7], c[8]} end},
+    {"quad", function(c) return {c[1], c[2], c[3], c[4], c[7], c[8]} end},
+    {"conic (w = 0.7)", function(c) return {c[1], c[2], c[3], c[4], c[7], c[8], 0.7} end, "conic"},
+    {"conic (circle)", function(c)
+      local r = math.sqrt((c[7] - c[1]) ^ 2 + (c[8] - c[2]) ^ 2) / 2
+      return {c[1], c[2], c[1] + r, c[2], c[1] + r, c[2] + r, math.sqrt(0.5)}
+    end, "conic"},
+    {"cubic", function(c) return c end},
+  }
+  for _, kd in ipairs(kinds) do
+    local name, make, kind = kd[1], kd[2], kd[3] or kd[1]
+    local segs = {}
+    for i = 1, #len_segs do segs[i] = make(len_segs[i]) end
+    local t = timed(function()
+      for i = 1, #segs do arclen.segment_length(kind, segs[i], opts) end
+    end) / #segs
+    print(("| %s | %.3f | %.2f |"):format(name, t * 1e6, t / t_len))
+  end
+end
+
+-- A random path of n segments: a third lines, a third conic arcs (circle
+-- arcs and ellipse arcs up to 120 degrees: w = cos(half the span), the
+-- middle point off the chord), a third cubics, joined end to start.
+local function mixed_segments(n)
+  local segs, x, y = {}, 0, 0
+  for k = 1, n do
+    local c
+    local pick = k % 3
+    if pick == 1 then
+      c = {kind = "line", x, y, x + 10 * uniform() - 5, y + 10 * uniform() - 5}
+      x, y = c[3], c[4]
+    elseif pick == 2 then
+      local half = (0.1 + 0.9 * uniform()) * math.pi / 3
+      local x2, y2 = x + 10 * uniform() - 5, y + 10 * uniform() - 5
+      local mx, my = (x + x2) / 2, (y + y2) / 2
+      local h = math.tan(half) * math.sqrt((x2 - x) ^ 2 + (y2 - y) ^ 2) / 2
+      local nx, ny = -(y2 - y), x2 - x
+      local nl = math.sqrt(nx * nx + ny * ny)
+      local squash = uniform() < 0.5 and 1 or 0.3   -- a circle arc, or an ellipse's
+      c = {kind = "conic", x, y, mx + squash * h * nx / nl, my + squash * h * ny / nl, x2, y2,
+           math.cos(half)}
+      x, y = x2, y2
+    else
+      c = {x, y}
+      for q = 3, 8 do c[q] = (q % 2 == 1 and x or y) + 10 * uniform() - 5 end
+      x, y = c[7], c[8]
+    end
+    segs[k] = c
+  end
+  return segs
+end
+
+print()
+print(("paths of n segments, k = 1000 points: cubics only, and mixed (a third lines, conic arcs, "
+  .. "cubics); us per call or per point, and length calls (%s engine)"):format(arclen.engine or "?"))
+print("| n | path | length us | ratio/seg | time us/call | ratio | resample us/pt | ratio | dash us/dash | ratio |")
+print("|---|---|---|---|---|---|---|---|---|---|")
+for _, n in ipairs(NS) do
+  for _, which in ipairs({"cubic", "mixed"}) do
+    local segs = which == "cubic" and random_segments(n) or mixed_segments(n)
+    local p = path(segs, {tol = TOL})
+    local t_length = timed(function()
+      p.cum = nil                      -- from scratch: every segment measured again
+      p:length()
+    end)
+    local L = p:length()
+    local k = 1000
+    local ds = distances(L, k)
+    local m = math.min(k, 200)
+    local t_time = timed(function()
+      for i = 1, m do p:time(ds[math.floor((i - 1) * k / m) + 1]) end
+    end) / m
+    local t_res = timed(function() p:resample(k) end) / k
+    local h = L / (2 * k)
+    local t_dash = timed(function() p:dash({h, h}) end) / k
+    print(("| %d | %s | %.1f | %.2f | %.3f | %.2f | %.3f | %.2f | %.3f | %.2f |"):format(
+      n, which, t_length * 1e6, t_length / n / t_len, t_time * 1e6, t_time / t_len,
+      t_res * 1e6, t_res / t_len, t_dash * 1e6, t_dash / t_len))
+  end
 end

@@ -50,8 +50,8 @@ describe("arclen.path: construction", function()
 
   it("names the argument for bad input", function()
     local E = H.error_of
-    assert.matches("#1 to 'arclen.path' %(a list of cubics expected, got string", E(arclen.path, "x"))
-    assert.matches("#1.*at least one cubic", E(arclen.path, {}))
+    assert.matches("#1 to 'arclen.path' %(a list of segments expected, got string", E(arclen.path, "x"))
+    assert.matches("#1.*at least one segment", E(arclen.path, {}))
     assert.matches("#1.*cubic 2 must have 8 %(2D%) or 12 %(3D%) numbers, got 3",
       E(arclen.path, {{0, 0, 1, 0, 2, 0, 3, 0}, {1, 2, 3}}))
     assert.matches("#1.*cubic 1: coordinate 3 must be a finite number",

@@ -359,4 +359,64 @@ int arclen_svg_arc_conics(double x1, double y1, double rx, double ry,
                           double phi_deg, int large, int sweep, double x2,
                           double y2, double c[28], int *n);
 
+/* ---- segment/: path segments of four kinds --------------------------- */
+/* A path segment is a line (P0 P1), a quadratic Bezier (P0 P1 P2), a cubic
+** (P0 P1 P2 P3, as above) or a conic: the rational quadratic Bezier P0 P1
+** P2 with weights (1, w, 1), w > 0 finite (Floater's eq. 1: circles,
+** ellipses and their arcs exactly).  Its numbers are the points, dim each,
+** then (conic) w: 2 dim, 3 dim, 4 dim or 3 dim + 1 of them. */
+enum {
+  ARCLEN_SEG_LINE,          /* "line",  letter 'L' */
+  ARCLEN_SEG_QUAD,          /* "quad",  letter 'Q' */
+  ARCLEN_SEG_CUBIC,         /* "cubic", letter 'C' */
+  ARCLEN_SEG_CONIC,         /* "conic", letter 'R' (rational) */
+  ARCLEN_SEG_NKINDS
+};
+#define ARCLEN_SEG_MAXN 12   /* numbers of the largest segment, a 3D cubic */
+int arclen_segment_kind(const char *name);        /* -1 when unknown */
+int arclen_segment_kind_of_letter(int letter);    /* -1 when unknown */
+const char *arclen_segment_kind_name(int kind);   /* NULL out of range */
+int arclen_segment_letter(int kind);              /* 0 out of range */
+/* The count of numbers of a kind in dimension dim; 0 for a bad kind or dim. */
+int arclen_segment_count(int kind, int dim);
+/* 0, ARCLEN_EDOMAIN (unknown kind), ARCLEN_EDIM (dim not 2 or 3) or
+** ARCLEN_EINVAL (a non-finite number, or w <= 0). */
+int arclen_segment_check(int kind, int dim, const double *seg);
+/* The length over [o->t0, o->t1] (negative when t0 > t1), as a method's.
+** Cubics go to method m (NULL: the default method, "gauss") with o; lines
+** and quadratics have closed forms (quadratics: a few ulps), conics the
+** exact length of arclen_conic_length (any sub-range is again a conic);
+** o->rtol matters for cubics only (but is checked).  o may be NULL
+** (defaults).  info (may be NULL): branch "line", "quad", "quad-gauss"
+** (the short rule of a nearly straight quadratic) or the conic's. */
+int arclen_segment_length(int kind, int dim, const double *seg,
+                          const arclen_method *m, const arclen_opts *o,
+                          double *len, arclen_info *info);
+/* The t in [0, 1] with |s(t) - s| <= o->rtol L (s(t) the length from 0, L
+** the whole length; s <= 0 gives 0, s >= L gives 1).  Cubics by m's time
+** (ARCLEN_EDOMAIN when m has none); the others by a safeguarded Newton
+** iteration on their exact length.  o->t0, o->t1 must be 0, 1. */
+int arclen_segment_time(int kind, int dim, const double *seg, double s,
+                        const arclen_method *m, const arclen_opts *o,
+                        double *t, arclen_info *info);
+/* arclen_times for any kind (cubics: arclen_times itself): the t at the
+** ascending lengths s[0 .. n-1], each as arclen_segment_time's; pts and tan
+** (may be NULL) get the points and unit tangents. */
+int arclen_segment_times(int kind, int dim, const double *seg,
+                         const double *s, long n, double rtol, double *t,
+                         double *pts, double *tan);
+/* Point, derivative (of the curve in t; a conic's is the rational one) and
+** unit tangent at t in [0, 1] (where the derivative vanishes, the limit
+** direction; a segment that is a point gets zeros): dim numbers each. */
+void arclen_segment_point(int kind, int dim, const double *seg, double t,
+                          double *p);
+void arclen_segment_derivative(int kind, int dim, const double *seg,
+                               double t, double *d);
+void arclen_segment_unit_tangent(int kind, int dim, const double *seg,
+                                 double t, double *v);
+/* The piece from t0 to t1 (t0 > t1: reversed) as a segment of the same kind
+** into out (a conic's weights renormalized to (1, w', 1)). */
+void arclen_segment_sub(int kind, int dim, const double *seg, double t0,
+                        double t1, double *out);
+
 #endif

@@ -6,7 +6,7 @@ depend on each other through any chain (a cycle), or when an object needs
 one of an area that comes later in the order of doc/architecture.md:
 
   curve -> roots -> gauss -> elliptic -> metapost, fit, conic, baseline
-        -> methods, svg -> svgdoc (the document reader, over expat)
+        -> segment, methods, svg -> svgdoc (the document reader, over expat)
 
 Prints "N passed, N failed" (one check per object)."""
 import collections
@@ -15,7 +15,8 @@ import subprocess
 import sys
 
 ORDER = {"curve": 0, "roots": 1, "gauss": 2, "elliptic": 3, "metapost": 4,
-         "fit": 4, "conic": 4, "baseline": 4, "methods": 5, "svg": 5,
+         "fit": 4, "conic": 4, "baseline": 4, "segment": 5, "methods": 5,
+         "svg": 5,
          "svgdoc": 6}
 
 

@@ -5,8 +5,11 @@
 --   local path = require "arclen.path"     (also arclen.path)
 --   path(cubics [, opts]), path.svg(d [, opts]), path.mplib(knots [, opts])
 --
--- A path is a list of segments (8 or 12 numbers each) in one or more
--- subpaths (a segment that does not start where the previous one ends
+-- A path is a list of segments in one or more subpaths, each of one of
+-- four kinds (lines, quadratic and cubic Beziers, conics: rational
+-- quadratics with weights (1, w, 1)), 2D or 3D, the kinds in a string of
+-- letters (L, Q, C, R; nil when all are cubics); the engine's segment_*
+-- functions measure them.  Its subpaths (a segment that does not start where the previous one ends
 -- begins a new subpath, as an SVG moveto does).  A path read from SVG path
 -- data (or by arclen.svg) keeps its cubics packed in one string of
 -- doubles and makes the list of segment tables only when a query needs
@@ -106,29 +109,261 @@ end
 -- ---- construction -------------------------------------------------------
 
 -- A path from subpaths {x =, y =, closed =, cubic...} (see svgpath.lua).
-local function build(subpaths, o)
-  local self = setmetatable({n = 0, dim = 2, cyclic = false, tol = o.tol,
+local function build(subpaths, o, dim)
+  local self = setmetatable({n = 0, dim = dim or 2, cyclic = false, tol = o.tol,
     method = o.method, segs = {}, first = {}, nsub = 0}, Path)
+  local letters, mixed = {}, false
   for _, sp in ipairs(subpaths) do
     if self.x0 == nil then self.x0, self.y0, self.z0 = sp.x, sp.y, sp.z end
     if #sp > 0 then
       self.nsub = self.nsub + 1
       self.first[self.nsub] = self.n + 1
-      for _, c in ipairs(sp) do
+      for i, c in ipairs(sp) do
         self.n = self.n + 1
         self.segs[self.n] = c
+        local l = sp.kinds and sp.kinds[i] or "C"
+        letters[self.n] = l
+        if l ~= "C" then mixed = true end
       end
     end
   end
-  if self.n > 0 then self.dim = #self.segs[1] == 12 and 3 or 2 end
+  if not dim and self.n > 0 then self.dim = #self.segs[1] == 12 and 3 or 2 end
+  if mixed then self.kindstr = table.concat(letters) end
   self.first[self.nsub + 1] = self.n + 1
   self.cyclic = #subpaths == 1 and subpaths[1].closed and self.n > 0 or false
   return self
 end
 
+local new_array = arclen._array      -- a table with room for n items
+
+local unpack_cubics = arclen._cubics    -- packed cubics into tables, in C
+
+-- The segments as tables of numbers, made from the packed records on
+-- first need (paths from build_flat); other paths have them from the start.
+local function segs_of(self)
+  local segs = self.segs
+  if segs then return segs end
+  if self.kindstr then segs = arclen._segments(self.packed, self.kindstr, self.dim)
+  else segs = unpack_cubics(self.packed) end
+  self.segs = segs
+  return segs
+end
+
+-- ---- the kinds --------------------------------------------------------------
+
+local KIND_OF = {L = "line", Q = "quad", C = "cubic", R = "conic"}
+local LETTER = {line = "L", quad = "Q", cubic = "C", conic = "R"}
+local NPTS = {line = 2, quad = 3, cubic = 4, conic = 3}
+local function count_of(kind, d) return NPTS[kind] * d + (kind == "conic" and 1 or 0) end
+
+-- The kind name of segment k.
+local function kind_of(self, k)
+  local kinds = self.kindstr
+  if not kinds then return "cubic" end
+  return KIND_OF[kinds:sub(k, k)]
+end
+
+-- The last point's offset in a segment's numbers (its first coordinate
+-- is at offset + 1).
+local function end_offset(kind, d) return (NPTS[kind] - 1) * d end
+
+-- Point, derivative and sub-range of segment c of the given kind.
+local function seg_point(kind, c, t)
+  if kind == "cubic" then return arclen.point(c, t) end
+  return arclen.segment_point(kind, c, t)
+end
+local function seg_derivative(kind, c, t)
+  if kind == "cubic" then return arclen.derivative(c, t) end
+  return arclen.segment_derivative(kind, c, t)
+end
+local function seg_sub(kind, c, t0, t1)
+  if kind == "cubic" then return arclen.subcurve(c, t0, t1) end
+  return arclen.segment_sub(kind, c, t0, t1)
+end
+
+-- A line and a quadratic as the same curve in cubic form (Bernstein
+-- degree elevation: P0, (2 P0 + P1)/3, ... for a line).
+local function raise(kind, c, d)
+  local out = {}
+  for j = 1, d do
+    local p0, p1 = c[j], c[d + j]
+    if kind == "line" then
+      out[j], out[d + j] = p0, p0 + (p1 - p0) / 3
+      out[2 * d + j], out[3 * d + j] = p1 + (p0 - p1) / 3, p1
+    else
+      local p2 = c[2 * d + j]
+      out[j], out[d + j] = p0, p0 + 2 * (p1 - p0) / 3
+      out[2 * d + j], out[3 * d + j] = p2 + 2 * (p1 - p2) / 3, p2
+    end
+  end
+  return out
+end
+
+-- A conic as cubics within the Hausdorff distance tol * its size (the
+-- longer leg): Floater's scheme (arclen.conic) where the C core has it;
+-- else (the Lua engine, 3D) halving the conic until each piece's cubic
+-- with the handles k = 4w/(3(1+w)) along its legs (which meets the
+-- conic's midpoint) stays within the distance at 33 samples, a
+-- distance at equal parameters bounding the Hausdorff one.
+local function conic_cubics(c, d, tol)
+  local size = 0
+  for j = 1, d do
+    size = math.max(size, abs(c[d + j] - c[j]), abs(c[2 * d + j] - c[d + j]))
+  end
+  local dist = tol * size
+  if d == 2 and arclen.engine == "c" and dist > 0 then
+    local ok, cubics = pcall(arclen.conic, {c[1], c[2]}, {c[3], c[4]}, {c[5], c[6]}, c[7],
+                             {tol = dist})
+    if ok and type(cubics) == "table" then return cubics end
+  end
+  local function approx(q)
+    local w, k, out = q[3 * d + 1], nil, {}
+    k = 4 * w / (3 * (1 + w))
+    for j = 1, d do
+      local p0, p1, p2 = q[j], q[d + j], q[2 * d + j]
+      out[j], out[d + j] = p0, p0 + k * (p1 - p0)
+      out[2 * d + j], out[3 * d + j] = p2 + k * (p1 - p2), p2
+    end
+    return out
+  end
+  -- the largest distance from the cubic's points to the conic, each
+  -- point's nearest conic point by Gauss-Newton steps from the same t
+  local function err(q, cub)
+    local worst = 0
+    for i = 1, 31 do
+      local t = i / 32
+      local b = {arclen.segment_point("cubic", cub, t)}
+      local u, e = t, 0
+      for _ = 1, 4 do
+        local a = {seg_point("conic", q, u)}
+        local v = {seg_derivative("conic", q, u)}
+        local g, vv = 0, 0
+        e = 0
+        for j = 1, d do
+          g = g + v[j] * (a[j] - b[j])
+          vv = vv + v[j] * v[j]
+          e = e + (a[j] - b[j]) ^ 2
+        end
+        if vv == 0 then break end
+        u = u - g / vv
+        if u < 0 then u = 0 elseif u > 1 then u = 1 end
+      end
+      local a = {seg_point("conic", q, u)}
+      e = 0
+      for j = 1, d do e = e + (a[j] - b[j]) ^ 2 end
+      if e > worst then worst = e end
+    end
+    return sqrt(worst)
+  end
+  for level = 0, 12 do
+    local m, out, ok = 2 ^ level, {}, true
+    for i = 1, m do
+      local q = level == 0 and c or arclen.segment_sub("conic", c, (i - 1) / m, i / m)
+      local cub = approx(q)
+      if level < 12 and err(q, cub) > dist / 2 then ok = false break end
+      out[i] = cub
+    end
+    if ok then return out end
+  end
+end
+
+-- Segment k of arclen.path's list: a cubic as before (8 or 12 numbers, or
+-- 4 points), or tagged with its kind: {kind = "line", x0, y0, x1, y1} or
+-- {"line", x0, y0, x1, y1}, the numbers flat or as points ({kind =
+-- "conic", {x0, y0}, {x1, y1}, {x2, y2}, w}; a conic's w may also be the
+-- field w).  Returns the kind, the flat numbers (checked), the dimension
+-- and the segment's name for messages.
+local function read_segment(c, k, fname)
+  if type(c) ~= "table" then
+    argerror(1, fname, format("segment %d must be a table, got %s", k, type(c)))
+  end
+  local kind, from = c.kind, 1
+  if kind == nil and type(c[1]) == "string" then kind, from = c[1], 2 end
+  if kind ~= nil and (type(kind) ~= "string" or not NPTS[kind]) then
+    argerror(1, fname, format("segment %d: unknown kind %s (line, quad, cubic or conic)", k,
+      type(kind) == "string" and "'" .. kind .. "'" or type(kind)))
+  end
+  local tagged = kind ~= nil
+  kind = kind or "cubic"
+  local what = tagged and format("segment %d (%s)", k, kind) or format("cubic %d", k)
+  local flat = {}
+  if type(c[from]) == "table" then                -- points {x, y[, z]}
+    local last = #c
+    local npts = last - from + 1
+    if kind == "conic" and type(c[last]) == "number" then npts = npts - 1 end
+    if npts ~= NPTS[kind] then
+      argerror(1, fname, format("%s must have %d points", what, NPTS[kind]))
+    end
+    for i = from, from + npts - 1 do
+      local q = c[i]
+      if type(q) ~= "table" or (#q ~= 2 and #q ~= 3) then
+        argerror(1, fname, format("%s: point %d must be {x, y} or {x, y, z}", what, i - from + 1))
+      end
+      for j = 1, #q do flat[#flat + 1] = q[j] end
+    end
+    if kind == "conic" then flat[#flat + 1] = c[from + npts] end
+  else
+    for i = from, #c do flat[#flat + 1] = c[i] end
+  end
+  if kind == "conic" and c.w ~= nil then
+    if #flat == 6 or #flat == 9 then flat[#flat + 1] = c.w
+    else argerror(1, fname, format("%s: w given twice", what)) end
+  end
+  local n2, n3 = count_of(kind, 2), count_of(kind, 3)
+  if #flat ~= n2 and #flat ~= n3 then
+    argerror(1, fname, format("%s must have %d (2D) or %d (3D) numbers, got %d", what, n2, n3,
+      #flat))
+  end
+  for i = 1, #flat do
+    if not isfinite(flat[i]) then
+      argerror(1, fname, format("%s: coordinate %d must be a finite number", what, i))
+    end
+  end
+  if kind == "conic" and not (flat[#flat] > 0) then
+    argerror(1, fname, format("%s: the weight w must be > 0", what))
+  end
+  return kind, flat, #flat == n3 and 3 or 2, what
+end
+
+-- The subpaths' segments as cubics only (paths whose method is not
+-- "gauss"): lines and quadratics raised exactly, conics within tol.
+local function cubics_only(subpaths, dim, tol)
+  for _, sp in ipairs(subpaths) do
+    if sp.kinds then
+      local segs = {}
+      for i, c in ipairs(sp) do
+        local kind = KIND_OF[sp.kinds[i]]
+        if kind == "cubic" then segs[#segs + 1] = c
+        elseif kind == "conic" then
+          for _, q in ipairs(conic_cubics(c, dim, tol)) do segs[#segs + 1] = q end
+        else segs[#segs + 1] = raise(kind, c, dim) end
+      end
+      for i = 1, math.max(#sp, #segs) do sp[i] = segs[i] end
+      sp.kinds = nil
+    end
+  end
+end
+
 -- A path on the C readers' result R = {packed = the cubics as a string of
 -- doubles, n = cubics, [j] = {x =, y =, closed =, n = its cubics}}
 -- (svgpath.lua): no table per cubic until a query needs them (segs_of).
+-- A packed path of mixed kinds made cubics only (methods other than gauss).
+local function flat_cubics_only(self, o)
+  local segs, subpaths = segs_of(self), {}
+  for j = 1, self.nsub do
+    local a, b = self.first[j], self.first[j + 1] - 1
+    local sp = {x = segs[a][1], y = segs[a][2], closed = self.cyclic, kinds = {}}
+    for k = a, b do
+      sp[#sp + 1] = segs[k]
+      sp.kinds[#sp] = self.kindstr:sub(k, k)
+    end
+    subpaths[j] = sp
+  end
+  if #subpaths == 0 then return self end
+  cubics_only(subpaths, self.dim, o.tol)
+  return build(subpaths, o, self.dim)
+end
+
 local function build_flat(R, o)
   local n, first, nsub, k = R.n, {}, 0, 1
   for j = 1, #R do
@@ -141,90 +376,65 @@ local function build_flat(R, o)
   end
   first[nsub + 1] = k
   local sp = R[1]
-  return setmetatable({n = n, dim = 2, tol = o.tol, method = o.method, packed = R.packed,
-    first = first, nsub = nsub, x0 = sp and sp.x, y0 = sp and sp.y,
+  local self = setmetatable({n = n, dim = 2, tol = o.tol, method = o.method, packed = R.packed,
+    kindstr = R.kinds, first = first, nsub = nsub, x0 = sp and sp.x, y0 = sp and sp.y,
     cyclic = #R == 1 and sp.closed and n > 0 or false}, Path)
+  if self.kindstr and o.method ~= "gauss" then return flat_cubics_only(self, o) end
+  return self
 end
 
-local new_array = arclen._array      -- a table with room for n items
-
-local unpack_cubics = arclen._cubics    -- packed cubics into tables, in C
-
--- The segments as tables of 8 numbers, made from the packed cubics on
--- first need (paths from build_flat); other paths have them from the start.
-local function segs_of(self)
-  local segs = self.segs
-  if segs then return segs end
-  segs = unpack_cubics(self.packed)
-  self.segs = segs
-  return segs
-end
-
--- arclen.path(cubics [, opts]): cubics joined end to start; a gap starts a
--- new subpath.  opts: tol, method, cyclic (the last segment ends where the
--- first starts, and distances wrap around).
+-- arclen.path(segments [, opts]): segments joined end to start; a gap
+-- starts a new subpath.  opts: tol, method, cyclic (the last segment ends
+-- where the first starts, and distances wrap around).
 local function from_cubics(_, cubics, opts)
   local fname = "arclen.path"
   local o, msg = read_opts(opts, {tol = true, method = true, cyclic = true})
   if not o then argerror(2, fname, msg) end
   if type(cubics) ~= "table" then
-    argerror(1, fname, "a list of cubics expected, got " .. type(cubics))
+    argerror(1, fname, "a list of segments expected, got " .. type(cubics))
   end
-  if #cubics == 0 then argerror(1, fname, "a path needs at least one cubic") end
-  local subpaths, sp, dim = {}, nil, nil
+  if #cubics == 0 then argerror(1, fname, "a path needs at least one segment") end
+  local subpaths, sp, dim, prev_kind = {}, nil, nil, nil
+  local any = false
   for k = 1, #cubics do
-    local c = cubics[k]
-    if type(c) ~= "table" then
-      argerror(1, fname, format("cubic %d must be a table, got %s", k, type(c)))
-    end
-    local flat = {}
-    if type(c[1]) == "table" then                -- 4 points {x, y[, z]}
-      if #c ~= 4 then argerror(1, fname, format("cubic %d must have 4 points", k)) end
-      for i = 1, 4 do
-        local p = c[i]
-        if type(p) ~= "table" or (#p ~= 2 and #p ~= 3) then
-          argerror(1, fname, format("cubic %d: point %d must be {x, y} or {x, y, z}", k, i))
-        end
-        for j = 1, #p do flat[#flat + 1] = p[j] end
-      end
-    else
-      for i = 1, #c do flat[i] = c[i] end
-    end
-    if #flat ~= 8 and #flat ~= 12 then
-      argerror(1, fname, format("cubic %d must have 8 (2D) or 12 (3D) numbers, got %d", k, #flat))
-    end
-    for i = 1, #flat do
-      if not isfinite(flat[i]) then
-        argerror(1, fname, format("cubic %d: coordinate %d must be a finite number", k, i))
-      end
-    end
-    local d = #flat == 12 and 3 or 2
+    local kind, flat, d, what = read_segment(cubics[k], k, fname)
     dim = dim or d
-    if d ~= dim then argerror(1, fname, format("cubic %d is %dD, the first is %dD", k, d, dim)) end
+    if d ~= dim then
+      argerror(1, fname, format("%s is %dD, the first is %dD", what, d, dim))
+    end
     local joined = sp ~= nil
     if sp then
-      local prev = sp[#sp]
+      local prev, off = sp[#sp], end_offset(prev_kind, d)
       for j = 1, d do
-        if flat[j] ~= prev[3 * d + j] then joined = false end
+        if flat[j] ~= prev[off + j] then joined = false end
       end
     end
     if not joined then
-      sp = {x = flat[1], y = flat[2], z = d == 3 and flat[3] or nil, closed = false}
+      sp = {x = flat[1], y = flat[2], z = d == 3 and flat[3] or nil, closed = false, kinds = {}}
       subpaths[#subpaths + 1] = sp
     end
     sp[#sp + 1] = flat
+    sp.kinds[#sp] = LETTER[kind]
+    if kind ~= "cubic" then any = true end
+    prev_kind = kind
   end
   if o.cyclic then
     if #subpaths ~= 1 then argerror(1, fname, "a cyclic path must not have gaps") end
     local first, last = subpaths[1][1], subpaths[1][#subpaths[1]]
+    local off = end_offset(prev_kind, dim)
     for j = 1, dim do
-      if first[j] ~= last[3 * dim + j] then
+      if first[j] ~= last[off + j] then
         argerror(1, fname, "a cyclic path must end where it starts")
       end
     end
     subpaths[1].closed = true
   end
-  return build(subpaths, o)
+  if not any then
+    for _, q in ipairs(subpaths) do q.kinds = nil end
+  elseif o.method ~= "gauss" then
+    cubics_only(subpaths, dim, o.tol)
+  end
+  return build(subpaths, o, dim)
 end
 
 -- Turn a parser's error {pos =, msg =} into "bad argument #1 to ...".
@@ -276,19 +486,28 @@ local function cumulative(self)
   local lopts = {tol = self.tol, method = self.method}
   local mp = is_metapost(self)
   if self.packed and not mp and self.n > 0 then  -- one batch call, no table a cubic
+    if self.kindstr then lopts.kinds = self.kindstr end
     local lens = arclen.lengths(self.packed, lopts)
-    for k = 1, self.n do
-      total = total + lens[k]
-      cum[k] = total
+    lopts.kinds = nil
+    if lens then          -- nil: a segment's length overflowed (below, one by one)
+      for k = 1, self.n do
+        total = total + lens[k]
+        cum[k] = total
+      end
+      self.cum = cum
+      return cum
     end
-    self.cum = cum
-    return cum
   end
   local segs = segs_of(self)
   for k = 1, self.n do
     local len, err
+    local kind = kind_of(self, k)
     if mp then len, err = arclen.metapost.arclength(segs[k])
-    else len, err = arclen.length(segs[k], lopts) end
+    elseif kind == "cubic" then len, err = arclen.length(segs[k], lopts)
+    else
+      -- nil: arithmetic overflow, a length beyond the doubles (as a cubic's inf)
+      len = arclen.segment_length(kind, segs[k], lopts) or huge
+    end
     if len == nil then return nil, err end
     total = total + len
     cum[k] = total
@@ -364,7 +583,9 @@ local function locate(self, s, at_end)
   local goal = s - cum[lo - 1]
   if goal <= 0 then return lo, 0 end
   if goal >= cum[lo] - cum[lo - 1] then return lo, 1 end
-  return lo, arclen.time(segs_of(self)[lo], goal, {tol = self.tol, method = self.method})
+  local kind, opts = kind_of(self, lo), {tol = self.tol, method = self.method}
+  if kind == "cubic" then return lo, arclen.time(segs_of(self)[lo], goal, opts) end
+  return lo, arclen.segment_time(kind, segs_of(self)[lo], goal, opts)
 end
 
 -- ---- many distances in one walk -------------------------------------------
@@ -388,7 +609,11 @@ local function locate_many(self, ds, at_end)
     for i = 1, #ds do ks[i], ts[i] = locate(self, ds[i], at_end) end
     return ks, ts
   end
-  walk_times(self.packed or self.segs, self.cum, ds, self.tol, at_end, ks, ts)
+  if self.kindstr then
+    walk_times(self.packed or self.segs, self.cum, ds, self.tol, at_end, ks, ts, self.kindstr)
+  else
+    walk_times(self.packed or self.segs, self.cum, ds, self.tol, at_end, ks, ts)
+  end
   return ks, ts
 end
 
@@ -438,12 +663,46 @@ function Path:time(s)
   return turns * self.n + (k - 1) + t
 end
 
+local function norm_of(v, d)
+  local m = 0
+  for i = 1, d do if abs(v[i]) > m then m = abs(v[i]) end end
+  if m == 0 then return 0 end
+  local s = 0
+  for i = 1, d do s = s + (v[i] / m) ^ 2 end
+  return m * sqrt(s)
+end
+
+-- The unit tangent of a line, quadratic or conic at t: where the
+-- derivative vanishes, a quadratic's second derivative (negated at t = 1,
+-- approached from the left), a conic's chord P2 - P0 (P1 on an end point:
+-- the curve leaves along the chord); a point (a line of length 0) none.
+local function other_direction(kind, c, d, t)
+  local v = {seg_derivative(kind, c, t)}
+  local len = norm_of(v, d)
+  if len == 0 then
+    for j = 1, d do
+      if kind == "quad" then
+        v[j] = c[2 * d + j] - 2 * c[d + j] + c[j]
+        if t == 1 then v[j] = -v[j] end
+      elseif kind == "conic" then
+        v[j] = c[2 * d + j] - c[j]
+      else
+        v[j] = 0
+      end
+    end
+    len = norm_of(v, d)
+  end
+  for j = 1, d do v[j] = len > 0 and v[j] / len or 0 end
+  return v
+end
+
 -- The derivative's direction at (k, t), unit length; a zero derivative
 -- (a cusp, or a control point on its end point) takes the limit from the
 -- next derivatives: z'' (its negative at t = 1, approached from the left),
 -- then z'''.  A segment that is a single point has no direction: zeros.
 local function direction(self, k, t)
-  local c, d = segs_of(self)[k], self.dim
+  local c, d, kind = segs_of(self)[k], self.dim, kind_of(self, k)
+  if kind ~= "cubic" then return other_direction(kind, c, d, t) end
   local v = {arclen.derivative(c, t)}
   local function norm(w)
     local s = 0
@@ -491,7 +750,7 @@ function Path:point(s)
   local L = usable(self, "point")
   if self.n == 0 then return start_point(self) end
   local k, t = locate(self, (reduce(self, s, L)))
-  return arclen.point(segs_of(self)[k], t)
+  return seg_point(kind_of(self, k), segs_of(self)[k], t)
 end
 
 -- p:tangent(s) -> the unit tangent tx, ty[, tz] at distance s (at a joint,
@@ -509,8 +768,8 @@ end
 -- own: it becomes the path's segment list) with gap marks pieces.gap[k]
 -- (nil when there are none).  Three tables a path: dash makes one a dash.
 local function from_pieces(self, pieces, x0, y0, z0)
-  local n, gap = #pieces, pieces.gap
-  pieces.gap = nil
+  local n, gap, kinds = #pieces, pieces.gap, pieces.kinds
+  pieces.gap, pieces.kinds = nil, nil
   local first, nsub
   if n == 0 then
     first, nsub = {1}, 0
@@ -528,7 +787,7 @@ local function from_pieces(self, pieces, x0, y0, z0)
   end
   return setmetatable({n = n, dim = self.dim, cyclic = false,
     tol = self.tol, method = self.method, segs = pieces, first = first, nsub = nsub,
-    x0 = x0, y0 = y0, z0 = z0}, Path)
+    kindstr = kinds and n > 0 and table.concat(kinds) or nil, x0 = x0, y0 = y0, z0 = z0}, Path)
 end
 
 -- The segments from (k0, t0) to (k1, t1) -- distances a <= b (in [0, L])
@@ -537,9 +796,10 @@ local function pieces_located(self, k0, t0, k1, t1)
   local out = {}                 -- out.gap made at the first gap
   local d, segs = self.dim, segs_of(self)
   if k1 < k0 or (k1 == k0 and t1 <= t0) then
-    local x, y, z = arclen.point(segs[k0], t0)
+    local x, y, z = seg_point(kind_of(self, k0), segs[k0], t0)
     return out, x, y, z
   end
+  local kinds = self.kindstr and {}
   local isgap = self.isgap
   if not isgap then
     isgap = {}
@@ -547,11 +807,12 @@ local function pieces_located(self, k0, t0, k1, t1)
     self.isgap = isgap
   end
   for k = k0, k1 do
-    local c = segs[k]
+    local c, kind = segs[k], kind_of(self, k)
     local ta, tb = k == k0 and t0 or 0, k == k1 and t1 or 1
-    if ta ~= 0 or tb ~= 1 then c = arclen.subcurve(c, ta, tb) end
+    if ta ~= 0 or tb ~= 1 then c = seg_sub(kind, c, ta, tb) end
     if tb > ta or (ta == 0 and tb == 1) then
       out[#out + 1] = c
+      if kinds then kinds[#out] = LETTER[kind] end
       if isgap[k] and k > k0 then
         out.gap = out.gap or {}
         out.gap[#out] = true
@@ -559,9 +820,10 @@ local function pieces_located(self, k0, t0, k1, t1)
     end
   end
   if #out == 0 then
-    local x, y, z = arclen.point(segs[k0], t0)
+    local x, y, z = seg_point(kind_of(self, k0), segs[k0], t0)
     return out, x, y, z
   end
+  out.kinds = kinds
   local c = out[1]
   return out, c[1], c[2], d == 3 and c[3] or nil
 end
@@ -602,7 +864,7 @@ end
 -- One sample at distance s in [0, L].
 local function sample(self, s)
   local k, t = locate(self, s)
-  local x, y, z = arclen.point(segs_of(self)[k], t)
+  local x, y, z = seg_point(kind_of(self, k), segs_of(self)[k], t)
   local v = direction(self, k, t)
   return {x = x, y = y, z = z, s = s, time = (k - 1) + t,
           tx = v[1], ty = v[2], tz = v[3]}
@@ -657,7 +919,11 @@ function Path:resample(spec)
     return out
   end
   if walks(self) then
-    walk_samples(self.packed or self.segs, self.cum, dists, self.tol, out)
+    if self.kindstr then
+      walk_samples(self.packed or self.segs, self.cum, dists, self.tol, out, nil, nil, self.kindstr)
+    else
+      walk_samples(self.packed or self.segs, self.cum, dists, self.tol, out)
+    end
     return out
   end
   for i, s in ipairs(dists) do out[i] = sample(self, s) end
@@ -705,8 +971,12 @@ local function fill_samples(self, ds, out, pts, tans, times)
       end
     end
   elseif walks(self) then
-    walk_samples(self.packed or self.segs, self.cum, ds, self.tol, pts or out,
-                 pts and (tans or false), pts and (times or false))
+    if pts then
+      walk_samples(self.packed or self.segs, self.cum, ds, self.tol, pts, tans or false,
+                   times or false, self.kindstr)
+    else
+      walk_samples(self.packed or self.segs, self.cum, ds, self.tol, out, nil, nil, self.kindstr)
+    end
   else
     for q = 1, #ds do
       local smp = sample(self, ds[q])
@@ -855,7 +1125,9 @@ function Path:dash(pattern, offset)
   return dashes
 end
 
--- p:segments() -> the number of segments; p:segment(k) -> a copy of cubic k.
+-- p:segments() -> the number of segments; p:segment(k) -> a copy of
+-- segment k's numbers and its kind name ("line", "quad", "cubic",
+-- "conic").
 function Path:segments()
   check_self(self, "segments")
   return self.n
@@ -868,14 +1140,63 @@ function Path:segment(k)
   end
   local c, out = segs_of(self)[k], {}
   for i = 1, #c do out[i] = c[i] end
-  return out
+  return out, kind_of(self, k)
 end
 
 -- The shortest of %.15g, %.16g, %.17g that reads back as x.
 local num = numtext.shortest
 
--- p:svg() -> SVG path data (absolute M and C, Z on a cyclic path) that
--- reads back to the same segments (2D paths).
+-- An elliptic conic (w < 1) as SVG's arc: the conic is c + U cos th + V
+-- sin th, th in [-al, al] (pure_segment.lua's derivation: U = D w/(1 -
+-- w^2), V = h/sqrt(1 - w^2)); the matrix [U V] = Rot(phi) diag(rx, +-ry)
+-- Rot(g) gives the semi-axes rx >= ry (its singular values, ry = |det|/rx
+-- so that a thin ellipse keeps its digits) and the x-axis rotation phi;
+-- the span 2 al < pi (large-arc 0); th runs the positive way when det > 0
+-- (sweep 1).  nil when the conic is degenerate (det 0, or P0 = P2).
+local function conic_arc(c)
+  local w = c[7]
+  local one = (1 - w) * (1 + w)
+  local hx, hy = (c[5] - c[1]) / 2, (c[6] - c[2]) / 2
+  local dx, dy = (c[3] - c[1]) - hx, (c[4] - c[2]) - hy
+  local ux, uy = dx * w / one, dy * w / one
+  local s = sqrt(one)
+  local vx, vy = hx / s, hy / s
+  local det = ux * vy - uy * vx
+  if not (det ~= 0) or (hx == 0 and hy == 0) then return nil end
+  local E, F = (ux + vy) / 2, (ux - vy) / 2
+  local G, H = (uy + vx) / 2, (uy - vx) / 2
+  local Q, R = sqrt(E * E + H * H), sqrt(F * F + G * G)
+  local rx = Q + R
+  local ry = abs(det) / rx
+  local atan2 = math.atan2 or math.atan       -- Lua 5.1's name, 5.4's
+  local phi = (atan2(G, F) + atan2(H, E)) / 2
+  local deg = phi * (180 / math.pi)
+  if not (rx > 0 and ry > 0 and rx < huge) then return nil end
+  if rx - ry <= 4 * 2.220446049250313e-16 * rx then   -- a circle to rounding: no axis
+    rx = sqrt(abs(det))
+    ry, deg = rx, 0
+  end
+  return rx, ry, deg, det > 0 and 1 or 0
+end
+
+-- Is the conic the straight segment P0 P2 (P1 on it, ends included)?
+-- Its points are then weighted means of 0, lambda, 1 along it (variation
+-- diminishing: the segment, once).
+local function straight_conic(c)
+  local ex, ey = c[5] - c[1], c[6] - c[2]
+  local px, py = c[3] - c[1], c[4] - c[2]
+  if ex * py - ey * px ~= 0 then return false end
+  local ee = ex * ex + ey * ey
+  local lam = ee > 0 and (px * ex + py * ey) / ee or -1
+  return lam >= 0 and lam <= 1
+end
+
+-- p:svg() -> SVG path data (absolute commands, Z on a cyclic path) that
+-- reads back to the same segments (2D paths): a line as L, a quadratic
+-- as Q, a cubic as C, an elliptic conic (w < 1) as A (exact: an SVG arc
+-- is the same ellipse, read back to rounding), a parabolic one (w = 1) as
+-- Q, a straight one as L; a hyperbolic one (w > 1) has no SVG command:
+-- cubics within tol (Hausdorff distance tol times its longer leg).
 function Path:svg()
   check_self(self, "svg")
   if self.dim ~= 2 then error("'svg': SVG path data is 2D; this path is 3D", 2) end
@@ -884,11 +1205,29 @@ function Path:svg()
   local isgap = {}
   for j = 1, self.nsub do isgap[self.first[j]] = true end
   local segs = segs_of(self)
-  for k = 1, self.n do
-    local c = segs[k]
-    if isgap[k] then out[#out + 1] = "M" .. num(c[1]) .. " " .. num(c[2]) end
+  local function cubic(c)
     out[#out + 1] = format("C%s %s %s %s %s %s", num(c[3]), num(c[4]), num(c[5]),
                            num(c[6]), num(c[7]), num(c[8]))
+  end
+  for k = 1, self.n do
+    local c, kind = segs[k], kind_of(self, k)
+    if isgap[k] then out[#out + 1] = "M" .. num(c[1]) .. " " .. num(c[2]) end
+    if kind == "cubic" then cubic(c)
+    elseif kind == "line" then out[#out + 1] = format("L%s %s", num(c[3]), num(c[4]))
+    elseif kind == "quad" or (kind == "conic" and c[7] == 1) then
+      out[#out + 1] = format("Q%s %s %s %s", num(c[3]), num(c[4]), num(c[5]), num(c[6]))
+    else
+      local rx, ry, deg, sweep
+      if c[7] < 1 then rx, ry, deg, sweep = conic_arc(c) end
+      if not rx and straight_conic(c) then
+        out[#out + 1] = format("L%s %s", num(c[5]), num(c[6]))
+      elseif rx then
+        out[#out + 1] = format("A%s %s %s 0 %d %s %s", num(rx), num(ry), num(deg), sweep,
+                               num(c[5]), num(c[6]))
+      else
+        for _, q in ipairs(conic_cubics(c, 2, self.tol)) do cubic(q) end
+      end
+    end
   end
   if self.cyclic then out[#out + 1] = "Z" end
   return table.concat(out, " ")
@@ -925,6 +1264,10 @@ function M._from_subpaths(R, tol, method)
   end
   if count ~= R.n or #pk ~= (type(pk) == "string" and 64 or 8) * R.n then
     argerror(1, fname, "the subpaths' counts do not match the packed cubics")
+  end
+  if R.kinds ~= nil and (type(R.kinds) ~= "string" or #R.kinds ~= R.n
+                         or R.kinds:find("[^LQCR]")) then
+    argerror(1, fname, "kinds must be a string of one letter (L, Q, C, R) per segment")
   end
   if not tol_ok(tol) then argerror(2, fname, "tol must be in " .. TOL_RANGE) end
   if type(method) ~= "string" or not method_known(method) then

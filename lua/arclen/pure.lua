@@ -2,9 +2,10 @@
 -- in plain Lua (5.1-5.4, LuaJIT), for where the C core cannot load (LuaTeX
 -- without --shell-escape, a platform without a binary).  Same names, same
 -- argument checks and messages, same guarantee (every distance within tol *
--- L): the default method on plane cubics (pure_gauss.lua), SVG path data
--- without arcs (pure_svgpath.lua).  3D curves, the other methods
--- (elliptic, metapost, ...), conics, elliptical arcs, the root solvers and
+-- L): the default method on plane cubics (pure_gauss.lua), lines,
+-- quadratics and conics in 2D and 3D (pure_segment.lua), SVG path data
+-- without arcs (pure_svgpath.lua).  3D cubics, the other methods
+-- (elliptic, metapost, ...), Floater's conics, elliptical arcs, the root solvers and
 -- the speed's critical points stay in the C core: asked for here, they
 -- raise an error that says so and how to get it.
 --
@@ -331,9 +332,14 @@ local function unpack_doubles(s, fname, arg)
   return out
 end
 
+local lengths_by_kind      -- (below) lengths and lengths3 with opts.kinds
+
 -- arclen.lengths(coords [, opts]) -> {L1, L2, ...}: 8 numbers a curve.
 function M.lengths(coords, opts)
   local fname = "lengths"
+  if type(opts) == "table" and opts.kinds ~= nil then
+    return lengths_by_kind(coords, opts, 2, fname)
+  end
   if type(coords) == "string" then coords = unpack_doubles(coords, fname, 1)
   elseif type(coords) ~= "table" then
     argerror(1, fname, format("table of coordinates expected (8 numbers per curve), got %s",
@@ -476,27 +482,366 @@ function M._queries(ds, L, wrap)
   return r, ascending
 end
 
--- The path's segments: a list of cubics, or packed cubics (a string, or
--- a flat table of 8 numbers a cubic); returns their count and cubic(k).
-local function segments_of(segs)
+-- ---- segments of four kinds (lines, quadratics, cubics, conics) ---------
+
+local S = require("arclen.pure_segment")
+
+-- The kind name at argument arg.
+local function check_kind(kind, arg, fname)
+  if type(kind) ~= "string" then
+    argerror(arg, fname, format("segment kind expected (line, quad, cubic or conic), got %s",
+      kind == nil and "no value" or type(kind)))
+  end
+  if S.KINDS[kind] == nil then
+    argerror(arg, fname, format("unknown segment kind '%s' (line, quad, cubic or conic)", kind))
+  end
+  return kind
+end
+
+-- The segment's numbers at argument arg, as floats, and its dimension:
+-- the kind's count in 2D or 3D, finite; a conic's w > 0.
+local function check_segment(kind, seg, arg, fname)
+  local n2, n3 = S.count(kind, 2), S.count(kind, 3)
+  if type(seg) ~= "table" then
+    argerror(arg, fname, format("segment expected (a table of %d or %d numbers), got %s", n2, n3,
+      seg == nil and "no value" or type(seg)))
+  end
+  local n = #seg
+  if n ~= n2 and n ~= n3 then
+    argerror(arg, fname, format("a %s has %d (2D) or %d (3D) numbers, got %d", kind, n2, n3, n))
+  end
+  local c = {}
+  for i = 1, n do
+    local v = seg[i]
+    if type(v) ~= "number" then
+      argerror(arg, fname, format("number %d must be a number, got %s", i, type(v)))
+    end
+    c[i] = v * 1.0
+  end
+  for i = 1, n do
+    if not isfinite(c[i]) then argerror(arg, fname, format("number %d must be finite", i)) end
+  end
+  if kind == "conic" and not (c[n] > 0) then
+    argerror(arg, fname, format("conic weight (number %d) must be positive", n))
+  end
+  return c, n == n2 and 2 or 3
+end
+
+local function needs_c_3d(kind, d, arg, fname)
+  if kind == "cubic" and d == 3 then argerror(arg, fname, "a 3D cubic " .. NEEDS_C) end
+end
+
+-- The options of the segment functions: as arclen.length's (tol, method,
+-- t0, t1, info; method applies to cubics).
+local function segment_opts(opts, arg, fname)
+  return check_opts(opts, arg, fname)
+end
+
+-- The info table of a segment's length or time (as arclen.length's).
+local function seg_info(evals)
+  return {evals = evals, pieces = 1, depth = 0, err = 0, calls = 1}
+end
+
+-- The length of a checked segment; from t0 to t1 (negative when t0 > t1)
+-- when given; the second result counts the evaluations.
+local function seg_length(kind, c, d, rtol, t0, t1)
+  t0, t1 = t0 or 0, t1 or 1
+  if t0 > t1 then
+    local len, e = seg_length(kind, c, d, rtol, t1, t0)
+    return -len, e
+  end
+  if kind == "cubic" then
+    local len, info = G.length(c, t0, t1, rtol, true)
+    return len, info and info.evals or 0
+  end
+  if t0 == 0 and t1 == 1 then return S.length(kind, c, d, rtol) end
+  return S.length_range(kind, c, d, rtol, t0, t1)
+end
+
+-- The times of ascending distances s (in [0, L]) on a checked segment.
+local function seg_times(kind, c, d, L, s, rtol)
+  if kind == "cubic" then return times_of(c, s, rtol) end
+  local ts = S.times(kind, c, d, L, s, rtol)
+  for q = 2, #ts do
+    if ts[q] < ts[q - 1] then ts[q] = ts[q - 1] end
+  end
+  return ts
+end
+
+-- The point and derivative of a cubic in d dimensions.
+local function cubic_point(c, d, t)
+  local s, out = 1 - t, {}
+  local b0, b1, b2, b3 = s * s * s, 3 * t * s * s, 3 * t * t * s, t * t * t
+  for j = 1, d do
+    out[j] = b0 * c[j] + b1 * c[d + j] + b2 * c[2 * d + j] + b3 * c[3 * d + j]
+  end
+  return out
+end
+local function cubic_derivative(c, d, t)
+  local s, out = 1 - t, {}
+  for j = 1, d do
+    local d0, d1, d2 = c[d + j] - c[j], c[2 * d + j] - c[d + j], c[3 * d + j] - c[2 * d + j]
+    out[j] = 3 * (s * s * d0 + 2 * t * s * d1 + t * t * d2)
+  end
+  return out
+end
+
+local function seg_point(kind, c, d, t)
+  if kind == "cubic" then return cubic_point(c, d, t) end
+  return S.point(kind, c, d, t)
+end
+
+local function seg_derivative(kind, c, d, t)
+  if kind == "cubic" then return cubic_derivative(c, d, t) end
+  return S.derivative(kind, c, d, t)
+end
+
+-- The unit tangent of a checked segment at t (a list of d numbers); where
+-- the derivative vanishes, the limit (unit_tangent's rules for a cubic).
+local function seg_tangent(kind, c, d, t)
+  if kind == "cubic" and d == 2 then
+    local x, y = unit_tangent(c, t)
+    return {x, y}
+  end
+  local v = seg_derivative(kind, c, d, t)
+  local len = S.norm(v, d)
+  if len == 0 then
+    if kind == "cubic" then
+      local u = 1 - t
+      for j = 1, d do
+        local p0, p1, p2, p3 = c[j], c[d + j], c[2 * d + j], c[3 * d + j]
+        v[j] = u * (p2 - 2 * p1 + p0) + t * (p3 - 2 * p2 + p1)
+        if t == 1 then v[j] = -v[j] end
+      end
+      len = S.norm(v, d)
+      if len == 0 then
+        for j = 1, d do v[j] = c[3 * d + j] - 3 * c[2 * d + j] + 3 * c[d + j] - c[j] end
+        len = S.norm(v, d)
+      end
+    else
+      v = S.fallback_direction(kind, c, d, t)
+      len = S.norm(v, d)
+    end
+  end
+  for j = 1, d do v[j] = len > 0 and v[j] / len or 0 end
+  return v
+end
+
+local function check_t_named(t, arg, fname, what)
+  if type(t) ~= "number" then
+    argerror(arg, fname, format("%s must be a number, got %s", what,
+      t == nil and "no value" or type(t)))
+  end
+  if not isfinite(t) then argerror(arg, fname, what .. " must be finite") end
+  if not (t >= 0 and t <= 1) then argerror(arg, fname, what .. " must be in [0, 1]") end
+  return t
+end
+
+local function unpack_d(v, d)
+  if d == 3 then return v[1], v[2], v[3] end
+  return v[1], v[2]
+end
+
+-- arclen.segment_length(kind, seg [, opts]) -> L
+function M.segment_length(kind, seg, opts)
+  local fname = "segment_length"
+  check_kind(kind, 1, fname)
+  local c, d = check_segment(kind, seg, 2, fname)
+  needs_c_3d(kind, d, 2, fname)
+  local rtol, t0, t1, want = segment_opts(opts, 3, fname)
+  if kind == "cubic" then
+    local len, info = G.length(c, t0, t1, rtol, want)
+    if want then return len, info end
+    return len
+  end
+  local len, evals = seg_length(kind, c, d, rtol, t0, t1)
+  if want then return len, seg_info(evals) end
+  return len
+end
+
+-- arclen.segment_time(kind, seg, s [, opts]) -> t, |s(t) - s| <= tol L
+function M.segment_time(kind, seg, s, opts)
+  local fname = "segment_time"
+  check_kind(kind, 1, fname)
+  local c, d = check_segment(kind, seg, 2, fname)
+  needs_c_3d(kind, d, 2, fname)
+  if type(s) ~= "number" or s ~= s then
+    argerror(3, fname, "length must be a number (not NaN)")
+  end
+  local rtol, t0, t1, want = segment_opts(opts, 4, fname)
+  if t0 ~= 0 or t1 ~= 1 then argerror(4, fname, "t0 and t1 do not apply to time") end
+  local L = seg_length(kind, c, d, rtol)
+  local t = 0
+  if s >= L then t = 1
+  elseif s > 0 then t = seg_times(kind, c, d, L, {s}, rtol)[1] end
+  if want then return t, seg_info(0) end
+  return t
+end
+
+-- arclen.segment_point(kind, seg, t) -> x, y [, z]
+function M.segment_point(kind, seg, t)
+  local fname = "segment_point"
+  check_kind(kind, 1, fname)
+  local c, d = check_segment(kind, seg, 2, fname)
+  return unpack_d(seg_point(kind, c, d, check_t(t, 3, fname)), d)
+end
+
+-- arclen.segment_derivative(kind, seg, t) -> dx, dy [, dz]
+function M.segment_derivative(kind, seg, t)
+  local fname = "segment_derivative"
+  check_kind(kind, 1, fname)
+  local c, d = check_segment(kind, seg, 2, fname)
+  return unpack_d(seg_derivative(kind, c, d, check_t(t, 3, fname)), d)
+end
+
+-- arclen.segment_sub(kind, seg, t0, t1) -> the piece from t0 to t1
+function M.segment_sub(kind, seg, t0, t1)
+  local fname = "segment_sub"
+  check_kind(kind, 1, fname)
+  local c, d = check_segment(kind, seg, 2, fname)
+  t0, t1 = check_t_named(t0, 3, fname, "t0"), check_t_named(t1, 4, fname, "t1")
+  if kind ~= "cubic" then return S.sub(kind, c, d, t0, t1) end
+  local out = {}
+  local function blossom(u1, u2, u3, i)
+    for j = 1, d do
+      local p0, p1, p2, p3 = c[j], c[d + j], c[2 * d + j], c[3 * d + j]
+      local q0, q1, q2 = p0 + u1 * (p1 - p0), p1 + u1 * (p2 - p1), p2 + u1 * (p3 - p2)
+      local r0, r1 = q0 + u2 * (q1 - q0), q1 + u2 * (q2 - q1)
+      out[(i - 1) * d + j] = r0 + u3 * (r1 - r0)
+    end
+  end
+  blossom(t0, t0, t0, 1)
+  blossom(t0, t0, t1, 2)
+  blossom(t0, t1, t1, 3)
+  blossom(t1, t1, t1, 4)
+  for j = 1, d do
+    if t0 == 0 then out[j] = c[j] elseif t0 == 1 then out[j] = c[3 * d + j] end
+    if t1 == 0 then out[3 * d + j] = c[j] elseif t1 == 1 then out[3 * d + j] = c[3 * d + j] end
+  end
+  return out
+end
+
+-- The kinds string at argument arg (n letters of L, Q, C, R), or nil.
+local function check_kinds(kinds, n, arg, fname)
+  if kinds == nil then return nil end
+  if type(kinds) ~= "string" then
+    argerror(arg, fname, "kinds must be a string of letters L, Q, C, R, got " .. type(kinds))
+  end
+  if n and #kinds ~= n then
+    argerror(arg, fname, format("kinds must have one letter per segment (%d), got %d", n, #kinds))
+  end
+  local bad = kinds:find("[^LQCR]")
+  if bad then
+    argerror(arg, fname, format("kinds: letter %d is not L, Q, C or R", bad))
+  end
+  return kinds
+end
+
+-- Records of stride 4d from packed doubles (a string or a flat table):
+-- record k as the checked numbers of kind kinds[k]; returns n, rec(k).
+local function records(packed, kinds, d, arg, fname, kinds_arg)
+  local v = packed
+  if type(packed) == "string" then v = unpack_doubles(packed, fname, arg)
+  elseif type(packed) ~= "table" then
+    argerror(arg, fname, format("packed segments expected (a string or a flat table), got %s",
+      packed == nil and "no value" or type(packed)))
+  end
+  local stride = 4 * d
+  if #v % stride ~= 0 then
+    argerror(arg, fname, format("packed segments: a multiple of %d numbers expected, got %d",
+      stride, #v))
+  end
+  local n = #v / stride
+  n = floor(n)
+  if kinds and #kinds ~= n then
+    argerror(kinds_arg or 2, fname, format("kinds must have one letter per segment (%d), got %d",
+      n, #kinds))
+  end
+  return n, function(k)
+    local kind = kinds and S.NAME[kinds:sub(k, k)] or "cubic"
+    local cnt, base, c = S.count(kind, d), stride * (k - 1), {}
+    for i = 1, cnt do
+      local x = v[base + i]
+      if type(x) ~= "number" or not isfinite(x) then
+        argerror(arg, fname, format("segment %d: coordinates and arguments must be finite numbers", k))
+      end
+      c[i] = x * 1.0
+    end
+    if kind == "conic" and not (c[cnt] > 0) then
+      argerror(arg, fname, format("segment %d: conic weight must be positive", k))
+    end
+    return c, kind
+  end
+end
+
+-- The lengths of packed records by kind (lengths and lengths3 with kinds).
+function lengths_by_kind(packed, opts, d, fname)
+  local o = {}
+  for key, v in pairs(opts) do if key ~= "kinds" then o[key] = v end end
+  local rtol, t0, t1, info = segment_opts(o, 2, fname)
+  if info then argerror(2, fname, "info does not apply to " .. fname) end
+  local kinds = check_kinds(opts.kinds, nil, 2, fname)
+  local n, rec = records(packed, kinds, d, 1, fname)
+  local out = {}
+  for k = 1, n do
+    local c, kind = rec(k)
+    if kind == "cubic" and d == 3 then argerror(1, fname, "a 3D cubic " .. NEEDS_C) end
+    out[k] = (seg_length(kind, c, d, rtol, t0, t1))
+  end
+  return out
+end
+
+-- arclen._segments(packed, kinds, dim) -> the records as tables
+function M._segments(packed, kinds, dim)
+  local fname = "_segments"
+  if dim ~= 2 and dim ~= 3 then argerror(3, fname, "dim must be 2 or 3") end
+  if kinds == nil and dim == 2 then return M._cubics(packed) end
+  check_kinds(kinds, nil, 2, fname)
+  local n, rec = records(packed, kinds, dim, 1, fname)
+  local out = {}
+  for k = 1, n do out[k] = (rec(k)) end
+  return out
+end
+
+-- The path's segments: a list of tables, or packed records (a string, or
+-- a flat table: 8 numbers a cubic; with kinds, records of stride 4d, d
+-- from the count); returns their count and seg(k) -> numbers, kind, d.
+local function segments_of(segs, kinds, arg)
+  check_kinds(kinds, nil, arg, "_walk")
   if type(segs) == "string" then segs = unpack_doubles(segs, "_walk", 1) end
   if type(segs) ~= "table" then
-    argerror(1, "_walk", "a list of cubics or packed cubics expected")
+    argerror(1, "_walk", "a list of segments or packed segments expected")
   end
   if type(segs[1]) ~= "number" then
-    return #segs, function(k) return segs[k] end
+    local n = #segs
+    check_kinds(kinds, n, arg, "_walk")
+    return n, function(k)
+      local kind = kinds and S.NAME[kinds:sub(k, k)] or "cubic"
+      local c, d = check_segment(kind, segs[k], 1, "_walk")
+      return c, kind, d
+    end
   end
-  if #segs % 8 ~= 0 then argerror(1, "_walk", "packed cubics: a multiple of 8 numbers expected") end
-  return floor(#segs / 8), function(k) return {unpack(segs, 8 * k - 7, 8 * k)} end
+  if not kinds then
+    if #segs % 8 ~= 0 then argerror(1, "_walk", "packed cubics: a multiple of 8 numbers expected") end
+    return floor(#segs / 8), function(k)
+      return (check_curve("_walk", {unpack(segs, 8 * k - 7, 8 * k)})), "cubic", 2
+    end
+  end
+  local d = (#kinds > 0 and #segs == 12 * #kinds) and 3 or 2
+  local n, rec = records(segs, kinds, d, 1, "_walk", arg)
+  return n, function(k)
+    local c, kind = rec(k)
+    return c, kind, d
+  end
 end
 
 -- The walk: for the ascending distances ds (in [0, cum[n]]) on the path of
--- segments with cumulative lengths cum[0..n], call emit(q, k, t) with the
--- segment k and time t of ds[q] -- a distance at a joint belongs to the
--- segment that starts there (at_end: that ends there) -- each run of
--- distances in one segment solved in one walk over its pieces.
-local function walk(segs, cum, ds, tol, at_end, emit)
-  local n, cubic = segments_of(segs)
+-- segments with cumulative lengths cum[0..n], call emit(q, k, t, c, kind,
+-- d) with the segment k and time t of ds[q] -- a distance at a joint
+-- belongs to the segment that starts there (at_end: that ends there) --
+-- each run of distances in one segment solved in one sweep.
+local function walk(segs, cum, ds, tol, at_end, emit, kinds, kinds_arg)
+  local n, segment = segments_of(segs, kinds, kinds_arg)
   check_table(cum, 2, "_walk")
   check_table(ds, 3, "_walk")
   check_tol(check_number(tol, 4, "_walk"), 4, "_walk")
@@ -519,7 +864,8 @@ local function walk(segs, cum, ds, tol, at_end, emit)
     local j = i
     if k == n then j = nd
     else while j < nd and not past(d[j + 1], k) do j = j + 1 end end
-    local c, shift = cubic(k), cum[k - 1]
+    local c, kind, dim = segment(k)
+    local shift = cum[k - 1]
     local seglen = cum[k] - shift
     local s, inner, first = {}, {}, nil
     for q = i, j do
@@ -530,44 +876,56 @@ local function walk(segs, cum, ds, tol, at_end, emit)
         inner[#inner + 1] = x
       end
     end
-    local ts = #inner > 0 and times_of(check_curve("_walk", c), inner, tol) or {}
+    local ts = {}
+    if #inner > 0 then
+      if kind == "cubic" then
+        if dim == 3 then argerror(1, "_walk", "a 3D cubic " .. NEEDS_C) end
+        ts = times_of(c, inner, tol)
+      else
+        ts = seg_times(kind, c, dim, seglen, inner, tol)
+      end
+    end
     for q = i, j do
       local x, t = s[q - i + 1], nil
       if x <= 0 then t = 0 elseif x >= seglen then t = 1 else t = ts[q - first + 1] end
-      emit(q, k, t, c)
+      emit(q, k, t, c, kind, dim)
     end
     i = j + 1
   end
 end
 
--- arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts)
-function M._walk_times(segs, cum, ds, tol, at_end, ks, ts)
+-- arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts [, kinds])
+function M._walk_times(segs, cum, ds, tol, at_end, ks, ts, kinds)
   check_table(ks, 6, "_walk_times")
   check_table(ts, 7, "_walk_times")
   walk(segs, cum, ds, tol, at_end, function(q, k, t)
     ks[q], ts[q] = k, t
-  end)
+  end, kinds, 8)
 end
 
--- arclen._walk_samples(segs, cum, ds, tol, out [, tans, times]): samples
--- {x =, y =, s =, time =, tx =, ty =} into out, or (tans a table or
--- false) flat arrays of points, unit tangents and path times.
-function M._walk_samples(segs, cum, ds, tol, out, tans, times)
+-- arclen._walk_samples(segs, cum, ds, tol, out [, tans, times [, kinds]]):
+-- samples {x =, y =, [z =,] s =, time =, tx =, ty = [, tz =]} into out, or
+-- (tans a table or false) flat arrays of points, unit tangents and path
+-- times.
+function M._walk_samples(segs, cum, ds, tol, out, tans, times, kinds)
   check_table(out, 5, "_walk_samples")
   local flat = tans ~= nil
   if type(tans) ~= "table" then tans = nil end      -- flat, no tangents
   if type(times) ~= "table" then times = nil end
-  walk(segs, cum, ds, tol, false, function(q, k, t, c)
-    local x, y = point_at(c, t)
-    local tx, ty = unit_tangent(c, t)
+  walk(segs, cum, ds, tol, false, function(q, k, t, c, kind, d)
+    local p = seg_point(kind, c, d, t)
+    local v = seg_tangent(kind, c, d, t)
     if flat then
-      out[2 * q - 1], out[2 * q] = x, y
-      if tans then tans[2 * q - 1], tans[2 * q] = tx, ty end
+      for j = 1, d do
+        out[d * (q - 1) + j] = p[j]
+        if tans then tans[d * (q - 1) + j] = v[j] end
+      end
       if times then times[q] = (k - 1) + t end
     else
-      out[q] = {x = x, y = y, s = ds[q], time = (k - 1) + t, tx = tx, ty = ty}
+      out[q] = {x = p[1], y = p[2], z = p[3], s = ds[q], time = (k - 1) + t,
+                tx = v[1], ty = v[2], tz = v[3]}
     end
-  end)
+  end, kinds, 8)
 end
 
 -- arclen.svg_pathdata(d, arc_tol [, T]): SVG path data without arcs
@@ -584,9 +942,17 @@ end
 
 for _, name in ipairs({"carlson", "conic", "conic_length", "conic_scheme", "critical",
     "cubic", "ellipse_arc", "ellipse_conics", "fit", "fullcircle", "gauss_legendre",
-    "lengths3", "quadratic", "quartic", "quartic_factor", "svg_arc", "svg_number",
+    "quadratic", "quartic", "quartic_factor", "svg_arc", "svg_number",
     "svg_numbers"}) do
   M[name] = c_only(name)
+end
+-- arclen.lengths3(packed, opts): 3D records; here only with kinds (no cubics).
+local lengths3_c = c_only("lengths3")
+function M.lengths3(packed, opts)
+  if type(opts) == "table" and opts.kinds ~= nil then
+    return lengths_by_kind(packed, opts, 3, "lengths3")
+  end
+  return lengths3_c()
 end
 M.metapost = {}
 for _, name in ipairs({"arclength", "arctime", "path_arclength", "path_arctime"}) do

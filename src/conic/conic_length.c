@@ -159,6 +159,36 @@ static double hyperbola_arc(double A, double B, double t0, double E0,
   return bracket - dterm;
 }
 
+/* a x c = ax cy - ay cx to an ulp or two (Kahan's difference of
+** products: the rounding of ay cx recovered by FMA), also for the nearly
+** parallel legs of a thin conic. */
+static double cross2(double ax, double ay, double cx, double cy) {
+  double p = ay * cx, e = arclen_fma(-ay, cx, p), f = arclen_fma(ax, cy, -p);
+  return f + e;
+}
+
+/* E = w + sqrt(w^2 - 1) (= e^acosh w) for w > 1 as a double-double:
+** w^2 - 1 exactly (TwoProduct, TwoSum), its square root corrected by one
+** Newton step on the residual. */
+static arclen_dd exp_acosh(double w) {
+  double ph = w * w, sh, r;
+  arclen_dd q = arclen_two_sum(ph, -1), E;
+  q.lo += arclen_fma(w, w, -ph);
+  sh = sqrt(q.hi);
+  r = arclen_fma(-sh, sh, q.hi) + q.lo;          /* w^2 - 1 - sh^2 */
+  E = arclen_two_sum(w, sh);
+  E.lo += r / (2 * sh);
+  return E;
+}
+
+/* E^2 u - v for a double-double E^2, to about an ulp of the result: the
+** product u E2.hi exactly (FMA), the difference by TwoSum. */
+static double e2u_minus_v(arclen_dd E2, double u, double v) {
+  double p = u * E2.hi, pe = arclen_fma(u, E2.hi, -p);
+  arclen_dd t = arclen_two_sum(p, -v);
+  return t.hi + (t.lo + pe + u * E2.lo);
+}
+
 /* Parabola (w = 1): speed 2|a + t e|, a = p1 - p0, e = p0 - 2 p1 + p2;
 ** L = q int_{u0}^{u1} 2 sqrt(u^2 + k^2) du with q = |e|, u = (a.e)/q^2 + t,
 ** k = |a x e|/q^2 (cross = |a x e| = |a x c| given from a and c: for a
@@ -198,6 +228,25 @@ static void umvm(double x1, double y1, double x2, double y2, double cx,
     double g = 1 / ((-onew) * (w + sqrt(-onew)));
     mv[0] = al * x1 + g * hx; mv[1] = al * y1 + g * hy;
     mv[2] = -al * cx - g * hx; mv[3] = -al * cy - g * hy;
+    /* A thin hyperbola (nearly parallel legs, |a| ~ E^2 |c| or |c| ~ E^2
+    ** |a|, E = w + sqrt(w^2 - 1)) makes one of the sums cancel to 1e-9 of
+    ** its terms (a sub-arc of w = 6.77 lost 1e-12 relative; found by
+    ** fuzz/fuzz_segment).  There, with h = (a + c)/2 and E^2 = 2 w E - 1:
+    ** U - V = (c - E^2 a)/den, U + V = (E^2 c - a)/den, den = 2 E (w^2 - 1),
+    ** E^2 in double-double and each product exact.  Elsewhere (near w = 1
+    ** in particular, where U and V are large and must agree with the U, V
+    ** formed from h above) the plain sums stay. */
+    if (hypot(mv[0], mv[1]) < 0x1p-10 * (fabs(al) * hypot(x1, y1) + g * hypot(hx, hy)) ||
+        hypot(mv[2], mv[3]) < 0x1p-10 * (fabs(al) * hypot(cx, cy) + g * hypot(hx, hy))) {
+      arclen_dd E = exp_acosh(w), E2;
+      double den = 2 * E.hi * (-onew);
+      E2.hi = E.hi * E.hi;
+      E2.lo = arclen_fma(E.hi, E.hi, -E2.hi) + 2 * E.hi * E.lo;
+      mv[0] = -e2u_minus_v(E2, x1, cx) / den;
+      mv[1] = -e2u_minus_v(E2, y1, cy) / den;
+      mv[2] = e2u_minus_v(E2, cx, x1) / den;
+      mv[3] = e2u_minus_v(E2, cy, y1) / den;
+    }
   } else {
     double dx = x1 - hx, dy = y1 - hy;
     mv[0] = dx * al - hx * s; mv[1] = dy * al - hy * s;
@@ -246,7 +295,7 @@ static double exact_length(const double v[6], double w, long *calls) {
   px2 = ldexp(v[4], -e); py2 = ldexp(v[5], -e);
   if (w == 1)
     return ldexp(parabola(px1, py1, cx - px1, cy - py1,
-                          fabs(px1 * cy - py1 * cx)), e);
+                          fabs(cross2(px1, py1, cx, cy))), e);
   {
     double onew = (1 - w) * (1 + w);          /* 1 - w^2, exact enough */
     double uv, pp, qq, A, B, cross, th0, mv[4];
@@ -260,7 +309,7 @@ static double exact_length(const double v[6], double w, long *calls) {
     /* U x V = (w / (1 - w^2)) |1 - w^2|^(-1/2) d x h and d x h = a x c / 2
     ** (a = p1 - p0, c = p2 - p1): the triangle's area, not a difference of
     ** the nearly parallel U, V of a short leg */
-    cross = fabs((px1 * cy - py1 * cx) / 2 * (w / onew) * sc);
+    cross = fabs(cross2(px1, py1, cx, cy) / 2 * (w / onew) * sc);
     umvm(px1, py1, px2, py2, cx, cy, w, onew, sc, mv);
     /* |U|^2 - |V|^2 as (U - V).(U + V) */
     qq = mv[0] * mv[2] + mv[1] * mv[3];

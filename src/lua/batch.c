@@ -7,7 +7,10 @@
 ** chunks into a C buffer and measured there, so a large set pays neither
 ** a Lua call nor a table per curve.
 ** opts as arclen.length's (tol, method, t0, t1, steps); info does not
-** apply.  Errors name the argument and the coordinate's index.
+** apply.  opts.kinds (a string of n letters L, Q, C, R) makes the records
+** (still 4 dim numbers each) segments of those kinds (lua/segment.c): each
+** measured by arclen_segment_length, runs of cubics by arclen_lengths as
+** before.  Errors name the argument and the coordinate's index.
 **
 ** Where the time goes (doc/benchmarks.md, "Many curves from Lua"): the
 ** public API reads a number in two calls (lua_rawgeti, lua_tonumber), so
@@ -74,6 +77,39 @@ static void read_packed(lua_State *L, const char *packed, long first,
             "coordinate %d must be finite", (int)(first + i + 1)));
 }
 
+/* The lengths of records first .. first + m - 1 (in buf) by their kinds:
+** runs of cubics in one arclen_lengths call, the others one by one.
+** Returns the code and sets *failed (index in buf) as arclen_lengths. */
+static int kinds_lengths(lua_State *L, const double *buf, long first,
+                         long m, int dim, const arclenL_opts *lo,
+                         double *out, long *failed) {
+  long i = 0, j, stride = 4 * dim;
+  while (i < m) {
+    int kind = arclen_segment_kind_of_letter((unsigned char)lo->kinds[first + i]);
+    if (kind == ARCLEN_SEG_CUBIC) {
+      long f;
+      int rc;
+      for (j = i + 1; j < m && lo->kinds[first + j] == 'C'; j++) {}
+      rc = arclen_lengths(buf + i * stride, j - i, dim, lo->method, &lo->o,
+                          out + i, &f);
+      if (rc != ARCLEN_OK) { *failed = i + f; return rc; }
+      i = j;
+    } else {
+      int rc = arclen_segment_check(kind, dim, buf + i * stride);
+      if (rc == ARCLEN_EINVAL)        /* finite already: a conic's weight */
+        luaL_argerror(L, 1, lua_pushfstring(L,
+            "segment %d: conic weight must be positive", (int)(first + i + 1)));
+      if (rc == ARCLEN_OK)
+        rc = arclen_segment_length(kind, dim, buf + i * stride, lo->method,
+                                   &lo->o, out + i, NULL);
+      if (rc != ARCLEN_OK) { *failed = i; return rc; }
+      i++;
+    }
+  }
+  *failed = -1;
+  return ARCLEN_OK;
+}
+
 static int lengths(lua_State *L, int dim, const char *fname) {
   double buf[CHUNK * 12], out[CHUNK];
   arclenL_opts lo;
@@ -93,7 +129,7 @@ static int lengths(lua_State *L, int dim, const char *fname) {
         "table of coordinates expected (%d numbers per curve), got %s",
         stride, luaL_typename(L, 1)));
   }
-  arclenL_checkopts(L, 2, &lo);
+  arclenL_checkopts_kinds(L, 2, &lo);
   if (lo.info)
     return luaL_argerror(L, 2, lua_pushfstring(L,
         "info does not apply to %s", fname));
@@ -104,6 +140,10 @@ static int lengths(lua_State *L, int dim, const char *fname) {
   if (len > 0x7fffffff)
     return luaL_argerror(L, 1, "too many coordinates");
   n = (long)(len / (size_t)stride);
+  if (lo.kinds && (long)lo.nkinds != n)
+    return luaL_argerror(L, 2, lua_pushfstring(L,
+        "kinds must have one letter per segment (%d), got %d", (int)n,
+        (int)lo.nkinds));
   luaL_checkstack(L, BLOCK + 4, "too many coordinates");
   lua_createtable(L, (int)n, 0);
   for (done = 0; done < n; done += CHUNK) {
@@ -111,19 +151,21 @@ static int lengths(lua_State *L, int dim, const char *fname) {
     int rc;
     if (packed) read_packed(L, packed, done * stride, m * stride, buf);
     else read_numbers(L, done * stride, m * stride, buf);
-    rc = arclen_lengths(buf, m, dim, lo.method, &lo.o, out, &failed);
+    if (lo.kinds) rc = kinds_lengths(L, buf, done, m, dim, &lo, out, &failed);
+    else rc = arclen_lengths(buf, m, dim, lo.method, &lo.o, out, &failed);
     if (rc == ARCLEN_EDIM)
       return luaL_argerror(L, 2, lua_pushfstring(L,
           "method '%s' does not support this dimension", lo.method->name));
     if (rc == ARCLEN_EOVERFLOW) {      /* MetaPost's own failure */
       lua_pushnil(L);
-      lua_pushfstring(L, "curve %d: %s", (int)(done + failed + 1),
+      lua_pushfstring(L, "%s %d: %s", lo.kinds ? "segment" : "curve",
+                      (int)(done + failed + 1),
                       arclen_strerror(rc));
       return 2;
     }
     if (rc != ARCLEN_OK)
-      return luaL_argerror(L, 1, lua_pushfstring(L, "curve %d: %s",
-          (int)(done + failed + 1), arclen_strerror(rc)));
+      return luaL_argerror(L, 1, lua_pushfstring(L, "%s %d: %s",
+          lo.kinds ? "segment" : "curve", (int)(done + failed + 1), arclen_strerror(rc)));
     for (i = 0; i < m; i++) {
       lua_pushnumber(L, out[i]);
       lua_rawseti(L, -2, (int)(done + i + 1));

@@ -32,8 +32,28 @@ typedef struct arclenL_opts {
   arclen_opts o;
   const arclen_method *method;
   int info;                 /* opts.info == true */
+  const char *kinds;        /* opts.kinds (with_kinds only), else NULL */
+  size_t nkinds;            /* its length */
 } arclenL_opts;
 void arclenL_checkopts(lua_State *L, int arg, arclenL_opts *lo);
+/* The same, also accepting kinds = a string of segment letters (L, Q, C,
+** R; each checked) for arclen.lengths. */
+void arclenL_checkopts_kinds(lua_State *L, int arg, arclenL_opts *lo);
+
+/* Segments of four kinds (lua/segment.c).  A kind argument: its name
+** ("line", "quad", "cubic", "conic"); returns ARCLEN_SEG_*. */
+int arclenL_checkkind(lua_State *L, int arg);
+/* A segment of kind: a table of its count of numbers (2D or 3D), finite,
+** a conic's weight > 0.  Fills seg (room for ARCLEN_SEG_MAXN) and returns
+** the dimension; raises naming arg. */
+int arclenL_checksegment(lua_State *L, int arg, int kind, double *seg);
+/* A kinds string at arg for n segments (nil or none: NULL, all cubics):
+** one letter L, Q, C or R per segment; raises naming arg. */
+const char *arclenL_optkinds(lua_State *L, int arg, long n);
+/* Record k (from 0) of packed segments (stride 4 dim doubles) into seg: its
+** kind's numbers, checked; raises naming arg and the segment. */
+void arclenL_packedsegment(lua_State *L, int arg, const char *packed,
+                           long k, int kind, int dim, double *seg);
 
 /* Push an info table {evals=, pieces=, depth=, err=, branch=, calls=}. */
 void arclenL_pushinfo(lua_State *L, const arclen_info *info);
@@ -57,6 +77,7 @@ void arclen_open_fit(lua_State *L);
 void arclen_open_batch(lua_State *L);
 void arclen_open_times(lua_State *L);
 void arclen_open_svg(lua_State *L);
+void arclen_open_segment(lua_State *L);
 /* new areas: one line each, above this line */
 
 #endif

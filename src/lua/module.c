@@ -134,11 +134,14 @@ const char *arclenL_optnext(lua_State *L, int arg) {
   return lua_tostring(L, -2);
 }
 
-void arclenL_checkopts(lua_State *L, int arg, arclenL_opts *lo) {
+static void check_opts(lua_State *L, int arg, arclenL_opts *lo,
+                       int with_kinds) {
   const char *key;
   arclen_opts_init(&lo->o);
   lo->method = arclen_find_method("gauss");
   lo->info = 0;
+  lo->kinds = NULL;
+  lo->nkinds = 0;
   arg = arg < 0 ? lua_gettop(L) + arg + 1 : arg;
   if (!arclenL_optbegin(L, arg)) return;
   while ((key = arclenL_optnext(L, arg)) != NULL) {
@@ -164,11 +167,28 @@ void arclenL_checkopts(lua_State *L, int arg, arclenL_opts *lo) {
       lo->o.steps = (long)v;
     } else if (strcmp(key, "info") == 0) {
       lo->info = lua_toboolean(L, -1);
+    } else if (with_kinds && strcmp(key, "kinds") == 0) {
+      size_t i;
+      if (lua_type(L, -1) != LUA_TSTRING)
+        luaL_argerror(L, arg, "kinds must be a string of letters L, Q, C, R");
+      lo->kinds = lua_tolstring(L, -1, &lo->nkinds);  /* held by opts */
+      for (i = 0; i < lo->nkinds; i++)
+        if (arclen_segment_kind_of_letter((unsigned char)lo->kinds[i]) < 0)
+          luaL_argerror(L, arg, lua_pushfstring(L,
+              "kinds: letter %d is not L, Q, C or R", (int)i + 1));
     } else {
       luaL_argerror(L, arg, lua_pushfstring(L, "unknown option '%s'", key));
     }
     lua_pop(L, 1);
   }
+}
+
+void arclenL_checkopts(lua_State *L, int arg, arclenL_opts *lo) {
+  check_opts(L, arg, lo, 0);
+}
+
+void arclenL_checkopts_kinds(lua_State *L, int arg, arclenL_opts *lo) {
+  check_opts(L, arg, lo, 1);
 }
 
 void arclenL_pushinfo(lua_State *L, const arclen_info *info) {
@@ -401,6 +421,7 @@ int luaopen_arclen_core(lua_State *L) {
   arclen_open_batch(L);
   arclen_open_times(L);
   arclen_open_svg(L);
+  arclen_open_segment(L);
   /* new areas: one line each, above this line */
   return 1;
 }

@@ -3,10 +3,12 @@
 **   arclen.times(c, distances [, opts]) -> ts [, points [, tangents]]
 ** and the path layer's walk (lua/arclen/path.lua), which hands each
 ** segment the run of sorted distances that falls in it:
-**   arclen._walk_samples(segs, cum, ds, tol, out [, tans, times])
-**   arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts)
+**   arclen._walk_samples(segs, cum, ds, tol, out [, tans, times [, kinds]])
+**   arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts [, kinds])
 **   arclen._queries(ds, L, wrap)  (a query list read, checked and reduced)
-** (segs: the list of cubics, or a 2D path's packed cubics, a string)
+** (segs: the list of cubics, or a 2D path's packed cubics, a string;
+** with kinds, a string of one letter L, Q, C, R per segment, the segments
+** of those kinds: tables of their numbers, or packed records of 8 doubles)
 ** The distances are read in chunks into C buffers (one set-up per chunk),
 ** so a long run pays neither a Lua call nor a table per distance.
 */
@@ -104,11 +106,11 @@ static int l_times(lua_State *L) {
   return out;
 }
 
-/* A segment's run of distances: its cubic, where it starts on the path
-** (shift), its length, the tolerance. */
+/* A segment's run of distances: its kind and numbers, where it starts on
+** the path (shift), its length, the tolerance. */
 typedef struct segment_run {
-  double c[12], shift, seglen, rtol;
-  int dim;
+  double c[ARCLEN_SEG_MAXN], shift, seglen, rtol;
+  int dim, kind;
 } segment_run;
 
 /* The times of the distances s[0 .. m - 1] (less the shift) in this
@@ -121,11 +123,16 @@ static void times_of(lua_State *L, const segment_run *r, const double *s,
   int rc;
   for (a = 0; a < m && s[a] <= 0; a++) t[a] = 0;
   for (b = m; b > a && s[b - 1] >= r->seglen; b--) t[b - 1] = 1;
-  rc = arclen_times(r->c, r->dim, s + a, b - a, r->rtol, t + a, NULL, NULL);
+  if (r->kind == ARCLEN_SEG_CUBIC)
+    rc = arclen_times(r->c, r->dim, s + a, b - a, r->rtol, t + a, NULL, NULL);
+  else
+    rc = arclen_segment_times(r->kind, r->dim, r->c, s + a, b - a, r->rtol,
+                              t + a, NULL, NULL);
   if (rc != ARCLEN_OK) arclenL_argcode(L, 2, rc);
   for (q = 0; q < m && (p || v); q++) {
-    if (p) arclen_point(r->c, r->dim, t[q], p + r->dim * q);
-    if (v) arclen_unit_tangent(r->c, r->dim, t[q], v + r->dim * q);
+    if (p) arclen_segment_point(r->kind, r->dim, r->c, t[q], p + r->dim * q);
+    if (v) arclen_segment_unit_tangent(r->kind, r->dim, r->c, t[q],
+                                       v + r->dim * q);
   }
 }
 
@@ -218,6 +225,7 @@ static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts)
   double *d, lo_cum, hi_cum;
   long n, nd, i, j, k, a, q;
   int packed;
+  const char *kinds;
   luaL_checktype(L, 2, LUA_TTABLE);
   luaL_checktype(L, 3, LUA_TTABLE);
   r.rtol = arclenL_checktol(L, 4, luaL_checknumber(L, 4));
@@ -233,6 +241,7 @@ static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts)
   }
   if (lua_rawlen(L, 3) > 0x7fffffff / 3) luaL_argerror(L, 3, "too many distances");
   nd = (long)lua_rawlen(L, 3);
+  kinds = arclenL_optkinds(L, 8, n);   /* nil: every segment a cubic */
   if (n == 0 || nd == 0) return;
   d = (double *)lua_newuserdata(L, sizeof(double) * (size_t)nd);
   for (i = 0; i < nd; i += CHUNK)      /* checked: numbers, ascending */
@@ -261,10 +270,16 @@ static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts)
     else while (j + 1 < nd && !past(hi_cum, d[j + 1], at_end)) j++;
     /* the run d[i .. j] in segment k */
     lo_cum = cum_at(L, 2, k - 1);
-    if (packed) r.dim = packed_cubic(L, k, r.c);
-    else {
+    r.kind = kinds ? arclen_segment_kind_of_letter((unsigned char)kinds[k - 1])
+                   : ARCLEN_SEG_CUBIC;
+    if (packed && !kinds) r.dim = packed_cubic(L, k, r.c);
+    else if (packed) {
+      r.dim = 2;
+      arclenL_packedsegment(L, 1, lua_tostring(L, 1), k - 1, r.kind, 2, r.c);
+    } else {
       lua_rawgeti(L, 1, (int)k);
-      r.dim = arclenL_checkcurve(L, lua_gettop(L), r.c);
+      r.dim = kinds ? arclenL_checksegment(L, lua_gettop(L), r.kind, r.c)
+                    : arclenL_checkcurve(L, lua_gettop(L), r.c);
       lua_pop(L, 1);
     }
     r.shift = lo_cum;
@@ -287,11 +302,12 @@ static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts)
   }
 }
 
-/* arclen._walk_samples(segs, cum, ds, tol, out [, tans, times]): the
+/* arclen._walk_samples(segs, cum, ds, tol, out [, tans, times [, kinds]]): the
 ** samples at ds (walk).  With tans absent or nil, out[q] = {x =, y =[, z
 ** =], s =, time = k - 1 + t, tx =, ty =[, tz =]} (segment k); with tans
 ** a table or false, flat arrays: out gets the points (dim numbers each),
-** tans the unit tangents, times the path times (each when a table). */
+** tans the unit tangents, times the path times (each when a table).
+** kinds: as walk's. */
 static int l_walk_samples(lua_State *L) {
   sample_sink o;
   luaL_checktype(L, 5, LUA_TTABLE);
@@ -300,19 +316,19 @@ static int l_walk_samples(lua_State *L) {
   o.flat = !lua_isnoneornil(L, 6);
   o.tans = o.flat && lua_istable(L, 6) ? 6 : 0;
   o.times = o.flat && lua_istable(L, 7) ? 7 : 0;
-  lua_settop(L, 7);
+  lua_settop(L, 8);
   walk(L, 0, &o, 0, 0);
   return 0;
 }
 
-/* arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts): the segment
-** ks[q] and time ts[q] of each ds[q] (walk), as path.lua's locate gives
-** them one by one. */
+/* arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts [, kinds]): the
+** segment ks[q] and time ts[q] of each ds[q] (walk), as path.lua's locate
+** gives them one by one. */
 static int l_walk_times(lua_State *L) {
   int at_end = lua_toboolean(L, 5);
   luaL_checktype(L, 6, LUA_TTABLE);
   luaL_checktype(L, 7, LUA_TTABLE);
-  lua_settop(L, 7);
+  lua_settop(L, 8);
   walk(L, at_end, NULL, 6, 7);
   return 0;
 }

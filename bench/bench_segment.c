@@ -1,0 +1,118 @@
+/*
+** bench_segment.c -- the segment kinds' lengths and times beside a cubic's
+** (issue 31: a line's or quadratic's length at least 5x cheaper than a
+** cubic's).  3000 random segments from the random curve set (points
+** uniform in [0, 10]^2): the cubic P0 P1 P2 P3, the quadratic P0 P1 P2, the
+** line P0 P3, the conic P0 P1 P2 with w = 0.7; each timed over REPS calls
+** of arclen_segment_length at rtol 1e-12 (and arclen_segment_time at L/2),
+** the kinds taken in turn on each block of segments, medians reported with
+** the ratio to the cubic and the median speed evaluations (info.evals: the
+** cubic's integrand, the quadratic's Gauss nodes where nearly straight; 0
+** for a closed form).  A last row measures each quadratic raised to the
+** cubic (P0, P0 + 2/3 (P1 - P0), P2 + 2/3 (P1 - P2), P2) by the default
+** method: what a path paid for it before the kinds.  Run: make bench (or
+** make -C bench bin/bench_segment).
+*/
+#include <stdio.h>
+
+#include "arclen.h"
+#include "bench_util.h"
+
+#define N 3000
+#define REPS 64
+#define BLOCK 50
+
+static double curves[8 * N];
+static double segs[ARCLEN_SEG_NKINDS][N][ARCLEN_SEG_MAXN];
+static double raised[N][8];          /* the quadratics as cubics */
+static double halves[ARCLEN_SEG_NKINDS][N];
+static volatile double sink;
+
+static double measure(int kind, int i, int want_time) {
+  arclen_opts o;
+  double v;
+  arclen_opts_init(&o);
+  if (kind == ARCLEN_SEG_NKINDS) {     /* a quadratic raised to a cubic */
+    arclen_segment_length(ARCLEN_SEG_CUBIC, 2, raised[i], NULL, &o, &v, NULL);
+    return v;
+  }
+  if (want_time)
+    arclen_segment_time(kind, 2, segs[kind][i], halves[kind][i], NULL, &o, &v, NULL);
+  else
+    arclen_segment_length(kind, 2, segs[kind][i], NULL, &o, &v, NULL);
+  return v;
+}
+
+int main(void) {
+  static double times[2][ARCLEN_SEG_NKINDS + 1][N], evals[2][ARCLEN_SEG_NKINDS][N];
+  static double rt[N];
+  static const int order[ARCLEN_SEG_NKINDS] = {
+    ARCLEN_SEG_CUBIC, ARCLEN_SEG_QUAD, ARCLEN_SEG_LINE, ARCLEN_SEG_CONIC};
+  double med[2][ARCLEN_SEG_NKINDS];
+  int i, k, b, r, wt;
+  bench_random_curves(curves, N, 20261121);
+  for (i = 0; i < N; i++) {
+    const double *c = curves + 8 * i;
+    for (k = 0; k < 8; k++) segs[ARCLEN_SEG_CUBIC][i][k] = c[k];
+    for (k = 0; k < 6; k++) segs[ARCLEN_SEG_QUAD][i][k] = c[k];
+    for (k = 0; k < 6; k++) segs[ARCLEN_SEG_CONIC][i][k] = c[k];
+    segs[ARCLEN_SEG_CONIC][i][6] = 0.7;
+    for (k = 0; k < 2; k++) {
+      raised[i][k] = c[k];
+      raised[i][2 + k] = c[k] + 2.0 / 3 * (c[2 + k] - c[k]);
+      raised[i][4 + k] = c[4 + k] + 2.0 / 3 * (c[2 + k] - c[4 + k]);
+      raised[i][6 + k] = c[4 + k];
+    }
+    segs[ARCLEN_SEG_LINE][i][0] = c[0]; segs[ARCLEN_SEG_LINE][i][1] = c[1];
+    segs[ARCLEN_SEG_LINE][i][2] = c[6]; segs[ARCLEN_SEG_LINE][i][3] = c[7];
+    for (k = 0; k < ARCLEN_SEG_NKINDS; k++) {       /* outside the clock */
+      arclen_info info;
+      arclen_opts o;
+      double L, t;
+      arclen_opts_init(&o);
+      arclen_segment_length(k, 2, segs[k][i], NULL, &o, &L, &info);
+      halves[k][i] = L / 2;
+      evals[0][k][i] = (double)info.evals;
+      arclen_segment_time(k, 2, segs[k][i], L / 2, NULL, &o, &t, &info);
+      evals[1][k][i] = (double)info.evals;
+    }
+  }
+  for (wt = 0; wt < 2; wt++)
+    for (b = 0; b < N; b += BLOCK)
+      for (k = 0; k < ARCLEN_SEG_NKINDS; k++)
+        for (i = b; i < b + BLOCK && i < N; i++) {
+          double t0 = bench_now();
+          for (r = 0; r < REPS; r++) sink = measure(order[k], i, wt);
+          times[wt][order[k]][i] = (bench_now() - t0) / REPS * 1e9;
+        }
+  for (wt = 0; wt < 2; wt++)
+    for (k = 0; k < ARCLEN_SEG_NKINDS; k++)
+      med[wt][k] = bench_median(times[wt][k], N);
+  for (b = 0; b < N; b += BLOCK)           /* the raised quadratics, alone */
+    for (i = b; i < b + BLOCK && i < N; i++) {
+      double t0 = bench_now();
+      for (r = 0; r < REPS; r++) sink = measure(ARCLEN_SEG_NKINDS, i, 0);
+      rt[i] = (bench_now() - t0) / REPS * 1e9;
+    }
+  printf("3000 random segments in [0,10]^2, rtol 1e-12, median ns per call "
+         "(%d calls each)\n", REPS);
+  printf("%-8s %10s %9s %7s %12s %9s %7s\n", "kind", "length ns", "/cubic",
+         "evals", "time(L/2) ns", "/cubic", "evals");
+  for (k = 0; k < ARCLEN_SEG_NKINDS; k++) {
+    int kind = order[k];
+    printf("%-8s %10.1f %9.2f %7.0f %12.1f %9.2f %7.0f\n",
+           arclen_segment_kind_name(kind), med[0][kind],
+           med[0][kind] / med[0][ARCLEN_SEG_CUBIC],
+           bench_median(evals[0][kind], N), med[1][kind],
+           med[1][kind] / med[1][ARCLEN_SEG_CUBIC],
+           bench_median(evals[1][kind], N));
+  }
+  printf("%-8s %10.1f %9.2f  (the quadratics raised to cubics)\n", "raised",
+         bench_median(rt, N), bench_median(rt, N) / med[0][ARCLEN_SEG_CUBIC]);
+  printf("cubic / line: %.1fx   cubic / quad: %.1fx   raised / quad: %.1fx "
+         "(goal: >= 5x)\n",
+         med[0][ARCLEN_SEG_CUBIC] / med[0][ARCLEN_SEG_LINE],
+         med[0][ARCLEN_SEG_CUBIC] / med[0][ARCLEN_SEG_QUAD],
+         bench_median(rt, N) / med[0][ARCLEN_SEG_QUAD]);
+  return 0;
+}

@@ -1,0 +1,683 @@
+-- arclen.pure_segment -- the segments other than cubics in plain Lua, for
+-- the Lua engine (arclen.pure): lines, quadratic Beziers and conics
+-- (rational quadratics with weights (1, w, 1), Floater's eq. 1), 2D and
+-- 3D: length, time at a length, point, derivative, sub-range.  The
+-- numbers are checked by the caller (pure.lua); here c is a list of floats
+-- in the contract's order (points, then w) and d the dimension.
+--
+-- Lengths: a line by a scaled hypot; a quadratic in closed form, every
+-- difference rewritten as a sum of positive terms; a conic as the affine
+-- image of a circular (w < 1) or hyperbolic (w > 1) arc, its speed in the
+-- angle integrated by Gauss-Legendre on pieces bounded by the speed's
+-- branch points (a circle's speed is
+-- constant there, so its length is exact at any tol); w = 1 is a
+-- quadratic.  Times: the inverse by safeguarded Newton steps on those
+-- lengths, within tol * L.
+local rules = require("arclen.pure_rules")
+
+local abs, sqrt, log, huge = math.abs, math.sqrt, math.log, math.huge
+local sin, cos, atan, exp, floor = math.sin, math.cos, math.atan, math.exp, math.floor
+
+local M = {}
+
+-- kind name -> {letter, points}; the letters of the packed kinds string.
+M.KINDS = {line = {letter = "L", npts = 2}, quad = {letter = "Q", npts = 3},
+           cubic = {letter = "C", npts = 4}, conic = {letter = "R", npts = 3, w = true}}
+M.NAME = {L = "line", Q = "quad", C = "cubic", R = "conic"}
+
+-- The count of numbers of a kind in d dimensions.
+function M.count(kind, d)
+  local k = M.KINDS[kind]
+  return k.npts * d + (k.w and 1 or 0)
+end
+
+-- ---- small exact-enough helpers ----------------------------------------
+
+local LN2 = log(2)
+
+-- log(1 + x) to a few ulps (Goldberg's trick: the rounding of 1 + x cancels).
+local function log1p(x)
+  local u = 1 + x
+  if u == 1 then return x end
+  return log(u) * x / (u - 1)
+end
+
+local function asinh(x)
+  local ax, r = abs(x), nil
+  if ax > 1e8 then r = log(ax) + LN2          -- 1/(4 x^2) below an ulp
+  else r = log1p(ax + ax * ax / (1 + sqrt(1 + ax * ax))) end
+  return x < 0 and -r or r
+end
+
+local function atanh(x) return 0.5 * log1p(2 * x / (1 - x)) end
+
+-- sinh and cosh (gone from Lua 5.4's math): small |x| by the series, so
+-- that sinh keeps its relative precision.
+local function sinh_cosh(x)
+  local ax = abs(x)
+  if ax < 0.5 then
+    local x2, term, sh = x * x, x, x
+    for k = 1, 12 do
+      term = term * x2 / ((2 * k) * (2 * k + 1))
+      sh = sh + term
+    end
+    return sh, sqrt(1 + sh * sh)
+  end
+  local e = exp(ax)
+  local sh, ch = (e - 1 / e) / 2, (e + 1 / e) / 2
+  return x < 0 and -sh or sh, ch
+end
+
+local function tanh(x)
+  local sh, ch = sinh_cosh(x)
+  return sh / ch
+end
+
+local function tan(x) return sin(x) / cos(x) end
+
+local atan2 = math.atan2 or math.atan          -- Lua 5.1's name, 5.4's
+
+-- |v| for a vector of d components, scaled so that no square over- or
+-- underflows.
+local function norm(v, d)
+  local m = 0
+  for i = 1, d do if abs(v[i]) > m then m = abs(v[i]) end end
+  if m == 0 or m == huge then return m end
+  local s = 0
+  for i = 1, d do
+    local q = v[i] / m
+    s = s + q * q
+  end
+  return m * sqrt(s)
+end
+M.norm = norm
+
+-- Point i (1-based) of c as a list of d numbers.
+local function pt(c, i, d)
+  local p = {}
+  for j = 1, d do p[j] = c[(i - 1) * d + j] end
+  return p
+end
+
+local function diff(p, q, d)
+  local r = {}
+  for j = 1, d do r[j] = p[j] - q[j] end
+  return r
+end
+
+-- ---- lines -----------------------------------------------------------
+
+local function line_length(c, d)
+  return norm(diff(pt(c, 2, d), pt(c, 1, d), d), d)
+end
+
+-- Gauss-Legendre on [a, b] with rule R (nodes symmetric about 0).
+local function gl(f, a, b, R)
+  local c, h = (a + b) / 2, (b - a) / 2
+  local s = 0
+  for i = 1, #R.x do
+    local x, wt = R.x[i], R.w[i]
+    if x == 0 then s = s + wt * f(c)
+    else s = s + wt * (f(c - h * x) + f(c + h * x)) end
+  end
+  return s * h
+end
+
+-- ---- quadratic Beziers -------------------------------------------------
+
+-- The quadratic's speed 2 |A + t B| (A = P1 - P0, B = P2 - 2 P1 + P0) as
+-- its coefficients a = B.B, b = A.B, c = A.A and K = |A x B|^2 = a c - b^2
+-- (from the legs P1 - P0, P2 - P1, so that it does not cancel), all scaled
+-- by 1/m^2 (m the largest leg component; the length is m times the
+-- scaled one).
+local function quad_setup(c, d)
+  local A, E, B = {}, {}, {}
+  local m = 0
+  for j = 1, d do
+    A[j] = c[d + j] - c[j]
+    E[j] = c[2 * d + j] - c[d + j]
+    if abs(A[j]) > m then m = abs(A[j]) end
+    if abs(E[j]) > m then m = abs(E[j]) end
+  end
+  local q = {m = m}
+  if m == 0 then return q end
+  for j = 1, d do
+    A[j] = A[j] / m
+    E[j] = E[j] / m
+    B[j] = E[j] - A[j]
+  end
+  local a, b, cc = 0, 0, 0
+  for j = 1, d do
+    a = a + B[j] * B[j]
+    b = b + A[j] * B[j]
+    cc = cc + A[j] * A[j]
+  end
+  local K
+  if d == 2 then
+    local x = A[1] * E[2] - A[2] * E[1]      -- A x B = A x E
+    K = x * x
+  else
+    local x = A[2] * E[3] - A[3] * E[2]
+    local y = A[3] * E[1] - A[1] * E[3]
+    local z = A[1] * E[2] - A[2] * E[1]
+    K = x * x + y * y + z * z
+  end
+  q.A, q.B, q.a, q.b, q.c, q.K, q.d = A, B, a, b, cc, K, d
+  return q
+end
+
+-- The speed |dP/dt| at t (in the curve's units).
+local function quad_speed(q, t)
+  if q.m == 0 then return 0 end
+  local v = {}
+  for j = 1, q.d do v[j] = 2 * (q.A[j] + t * q.B[j]) end
+  return q.m * norm(v, q.d)
+end
+
+-- The length of the quadratic between t0 <= t1:
+--   L = [U R + K asinh(U / sqrt K)]_{U0}^{U1} / a^(3/2),  U = a t + b,
+--   R = sqrt(U^2 + K),
+-- as the integral of 2 sqrt((U^2 + K) / a) dt.  Ends of one sign: both
+-- differences rewritten without cancellation (U1 - U0 = a (t1 - t0)):
+--   U1 R1 - U0 R0 = (U1 - U0)(U1 + U0)(U1^2 + U0^2 + K) / (U1 R1 + U0 R0)
+--   asinh(U1/k) - asinh(U0/k) = asinh((U1 - U0)(U1 + U0) / (U1 R0 + U0 R1))
+-- (the second by asinh x - asinh y = asinh(x sqrt(1+y^2) - y sqrt(1+x^2))).
+-- The two terms are each of the size of L but depend on K = |A x B|^2
+-- strongly where L does not: when the speed's branch points (-b +- i
+-- sqrt K)/a lie far from [t0, t1] (nearly straight, or a short piece),
+-- the formula would lose the digits K lost to its cancellation.  There
+-- the speed is analytic on the Bernstein ellipse rho >= 3 through them,
+-- and 20-point Gauss-Legendre is within 64/15 rho^-40/(rho^2-1) < 1e-19
+-- relative (Trefethen, ATAP Thm 19.3).  No turn at all (a below
+-- 1e-32 c): the chord.
+local GL20 = rules[20]
+local function quad_length(q, t0, t1)
+  if q.m == 0 or t1 <= t0 then return 0 end
+  local a, b, K = q.a, q.b, q.K
+  if a <= 1e-32 * q.c then
+    -- P(t1) - P(t0) = (t1 - t0)(2 A + (t1 + t0) B)
+    local v, s = {}, t1 + t0
+    for j = 1, q.d do v[j] = 2 * q.A[j] + s * q.B[j] end
+    return q.m * (t1 - t0) * norm(v, q.d)
+  end
+  local hw = (t1 - t0) / 2
+  local x = (-b / a - (t0 + hw)) / hw          -- the branch points in [-1, 1]'s frame
+  local y = sqrt(K) / a / hw
+  local sf = (sqrt((x - 1) ^ 2 + y * y) + sqrt((x + 1) ^ 2 + y * y)) / 2
+  if sf >= 1.67 then                             -- rho = sf + sqrt(sf^2 - 1) >= 3
+    return gl(function(t) return quad_speed(q, t) end, t0, t1, GL20)
+  end
+  local U0, U1, dU = a * t0 + b, a * t1 + b, a * (t1 - t0)
+  local br
+  if U0 < 0 and U1 > 0 then                    -- the vertex is inside: two sums
+    local R0, R1 = sqrt(U0 * U0 + K), sqrt(U1 * U1 + K)
+    br = U1 * R1 - U0 * R0
+    if K > 0 then
+      local k = sqrt(K)
+      br = br + K * (asinh(U1 / k) - asinh(U0 / k))
+    end
+  else
+    if U1 <= 0 then U0, U1 = -U1, -U0 end      -- reflect: 0 <= U0 < U1
+    local R0, R1 = sqrt(U0 * U0 + K), sqrt(U1 * U1 + K)
+    local sum = U1 + U0
+    br = dU * sum * (U1 * U1 + U0 * U0 + K) / (U1 * R1 + U0 * R0)
+    if K > 0 then br = br + K * asinh(dU * sum / (U1 * R0 + U0 * R1)) end
+  end
+  return q.m * br / (a * sqrt(a))
+end
+
+-- ---- conics -------------------------------------------------------------
+
+-- The conic (P0, P1, P2; w) as c + U cos th + V sin th, th in [-al, al],
+-- al = acos w (w < 1), or c + U cosh th + V sinh th, th in [-al, al], al =
+-- acosh w (w > 1), with m = (P0 + P2)/2, D = P1 - m, h = (P2 - P0)/2:
+--   U = D w / (1 - w^2),  V = h / sqrt|1 - w^2|
+-- (at th = 0 the curve's midpoint (m + w P1)/(1 + w), at the ends P0, P2).
+-- The rational parameter is the half-angle one: tan(th/2) = (2t - 1)
+-- tan(al/2) (tanh for w > 1).  The speed in th is |V cos th - U sin th|
+-- (|V cosh th + U sinh th|), smooth on [-al, al]: constant on a circle.
+local function conic_setup(c, d)
+  local w = c[3 * d + 1]
+  local k = {w = w, d = d}
+  if w == 1 then
+    k.quad = quad_setup(c, d)
+    return k
+  end
+  local U, V = {}, {}
+  local one = (1 - w) * (1 + w)              -- exact enough: 1 - w exact near 1
+  local hyp = w > 1
+  local s = 1 / sqrt(abs(one))
+  -- For w >> 1 the speed is |(V + U) e^th + (V - U) e^-th| / 2, and
+  -- V - U = a (P1 - P0) + g h (a = w/(w^2-1)) cancels to 1/(2 w^2) if
+  -- formed from U and V: g = 1/sqrt(w^2-1) - a = -1/((w^2-1)(w +
+  -- sqrt(w^2-1))) from the legs gives it (kp, km: V + U and V - U).
+  local kp, km = {}, {}
+  local g = hyp and -1 / ((-one) * (w + sqrt(-one))) or 0
+  for j = 1, d do
+    local p0, p1, p2 = c[j], c[d + j], c[2 * d + j]
+    local h = (p2 - p0) / 2
+    local D = (p1 - p0) - h                   -- P1 - m, from the legs
+    U[j] = D * w / one
+    V[j] = h * s
+    if hyp then
+      kp[j] = V[j] + U[j]
+      km[j] = (w / -one) * (p1 - p0) + g * h
+    end
+  end
+  k.kp, k.km = kp, km
+  local al
+  if hyp then al = log1p((w - 1) + sqrt(-one))           -- acosh w
+  else al = 2 * atan(sqrt((1 - w) / (1 + w))) end        -- acos w, accurate near 1
+  k.U, k.V, k.hyp, k.al = U, V, hyp, al
+  k.th = hyp and tanh(al / 2) or tan(al / 2)
+  if hyp then
+    -- 1 - tanh(al/2) = 2/(E + 1), E = e^al = w + sqrt(w^2 - 1): the
+    -- mapping of t near the ends without cancellation (th_of_t)
+    local E = w + sqrt(-one)
+    k.omt, k.th = 2 / (E + 1), ((w - 1) + sqrt(-one)) / (E + 1)
+    local _, ch = sinh_cosh(al / 2)
+    k.chh = ch
+  end
+  -- The speed's branch points.  With uu = |U|^2, vv = |V|^2, uv = U.V and
+  -- X = |U x V|^2 = uu vv - uv^2:
+  --   ellipse:   speed^2 = p + R cos(2 th - phi),  p = (vv + uu)/2,
+  --              R = |((vv - uu)/2, -uv)|: zero at 2 th - phi = pi +- i eta,
+  --              eta = acosh(p/R), p - R = X/(p + R);
+  --   hyperbola: speed^2 = a0 + R cosh(2 th + psi), a0 = (vv - uu)/2,
+  --              R = sqrt(b0^2 - c0^2) (b0 = (vv + uu)/2, c0 = uv,
+  --              tanh psi = c0/b0): zero at 2 th + psi = +- i eta, eta =
+  --              acos(-a0/R) = 2 asin(sqrt((R + a0)/(2R))), R + a0 = X/(R - a0).
+  -- Feet (real parts) and the half-height eta/2 of the branch points;
+  -- none on a circle (R = 0: the speed is constant).
+  local uu, vv, uv = 0, 0, 0
+  for j = 1, d do
+    uu, vv, uv = uu + U[j] * U[j], vv + V[j] * V[j], uv + U[j] * V[j]
+  end
+  local X
+  if d == 2 then X = (U[1] * V[2] - U[2] * V[1]) ^ 2
+  else
+    X = (U[2] * V[3] - U[3] * V[2]) ^ 2 + (U[3] * V[1] - U[1] * V[3]) ^ 2
+        + (U[1] * V[2] - U[2] * V[1]) ^ 2
+  end
+  k.feet = {}
+  if not hyp then
+    local p, R = (vv + uu) / 2, sqrt(((vv - uu) / 2) ^ 2 + uv * uv)
+    k.p, k.R = p, R
+    if R > 0 then
+      local x = X / (p + R) / R                 -- p/R - 1
+      local eta = log1p(x + sqrt(x * (x + 2)))  -- acosh(1 + x)
+      local phi = atan2(-uv, (vv - uu) / 2)
+      for j = -2, 2 do k.feet[#k.feet + 1] = (phi + math.pi) / 2 + j * math.pi end
+      k.eta2 = eta / 2
+    end
+  else
+    local a0, b0, c0 = (vv - uu) / 2, (vv + uu) / 2, uv
+    local R = sqrt((b0 - c0) * (b0 + c0))
+    k.a0, k.R = a0, R
+    if R > 0 then
+      local psi = atanh(c0 / b0)
+      local eta = 2 * math.asin(math.min(1, sqrt(X / (R - a0) / (2 * R))))
+      k.feet[1] = -psi / 2
+      k.eta2 = eta / 2
+      k.psi = psi
+    end
+  end
+  return k
+end
+
+local function conic_speed_th(k, th)
+  local v = {}
+  if k.hyp then
+    if abs(th) < 0.5 then
+      local sh, ch = sinh_cosh(th)
+      for j = 1, k.d do v[j] = k.V[j] * ch + k.U[j] * sh end
+    else
+      local e = exp(th)
+      local ie = 1 / e
+      for j = 1, k.d do v[j] = (k.kp[j] * e + k.km[j] * ie) / 2 end
+    end
+  else
+    local ct, st = cos(th), sin(th)
+    for j = 1, k.d do v[j] = k.V[j] * ct - k.U[j] * st end
+  end
+  return norm(v, k.d)
+end
+
+-- The angle of the rational parameter t and back.
+-- A hyperbola's ends move fast in t (the speed there is 2 w |P1 - P0|):
+-- th = 2 atanh((2t - 1) T) = log(((1 - T) + 2 t T) / ((1 - T) + 2 (1 - t) T))
+-- and t = (T + tanh(th/2)) / (2T) = sinh((al + th)/2) / (2 T cosh(al/2)
+-- cosh(th/2)) (tanh a + tanh b = sinh(a + b) / (cosh a cosh b)), 1 - t
+-- likewise with al - th, keep their digits near the ends.
+local function th_of_t(k, t)
+  if t == 0 then return -k.al end
+  if t == 1 then return k.al end
+  if k.hyp then
+    local T, o = k.th, k.omt
+    return log((o + 2 * t * T) / (o + 2 * (1 - t) * T))
+  end
+  return 2 * atan((2 * t - 1) * k.th)
+end
+
+local function t_of_th(k, th)
+  if th <= -k.al then return 0 end
+  if th >= k.al then return 1 end
+  local t
+  if k.hyp then
+    local _, ch = sinh_cosh(th / 2)
+    local den = 2 * k.th * k.chh * ch
+    if th <= 0 then t = sinh_cosh((k.al + th) / 2) / den
+    else t = 1 - sinh_cosh((k.al - th) / 2) / den end
+  else
+    t = (1 + tan(th / 2) / k.th) / 2
+  end
+  if t < 0 then return 0 elseif t > 1 then return 1 end
+  return t
+end
+
+
+local EPS = 2.220446049250313e-16
+
+-- The conic's length between angles a < b, within rtol/4 of budget
+-- (density times the width: the caller's share of tol L) by Gauss-Legendre
+-- on pieces whose order meets Trefethen's bound (ATAP Thm 19.3)
+--   |E| <= (64/15) hw M rho^(-2n) / (rho^2 - 1)
+-- with rho inside the Bernstein ellipse through the nearest branch point
+-- (conic_setup) and M >= speed on it; a piece no order up to 128 meets is
+-- cut at a branch point's foot inside it, else in half.
+local ORDERS = {8, 12, 16, 24, 32, 48, 64, 96, 128}
+local MAX_CONIC_PIECES = 2000
+
+-- max |speed| on the ellipse of parameter r about [c - hw, c + hw].
+local function conic_bound(k, c, hw, r)
+  local half_minor, half_major = hw * (r - 1 / r) / 2, hw * (r + 1 / r) / 2
+  if k.hyp then
+    local xr = math.max(abs(2 * (c - half_major) + k.psi), abs(2 * (c + half_major) + k.psi))
+    local _, ch = sinh_cosh(xr)
+    return sqrt(abs(k.a0) + k.R * ch)
+  end
+  local _, ch = sinh_cosh(2 * half_minor)
+  return sqrt(k.p + k.R * ch)
+end
+
+local function conic_length_th(k, a, b, rtol, density)
+  if b <= a then return 0, 0 end
+  if not k.eta2 then                             -- a circle (or a point): constant speed
+    return (b - a) * conic_speed_th(k, (a + b) / 2), 1
+  end
+  if not density then
+    -- a lower bound of the length over the width: the chord's,
+    --   C(b) - C(a) = 2 sin(hw) (-sin(m) U + cos(m) V)      (ellipse)
+    --              = 2 sinh(hw) (sinh(m) U + cosh(m) V)      (hyperbola)
+    -- (m, hw the middle and half-width: no cancellation); a closed conic
+    -- (P0 = P2) takes a quarter of the mean speed at 16 points
+    local m, h = (a + b) / 2, (b - a) / 2
+    local v, cu, cv = {}, nil, nil
+    if k.hyp then
+      local sh, ch = sinh_cosh(m)
+      local shh = sinh_cosh(h)
+      cu, cv = 2 * shh * sh, 2 * shh * ch
+    else
+      cu, cv = -2 * sin(h) * sin(m), 2 * sin(h) * cos(m)
+    end
+    for j = 1, k.d do v[j] = cu * k.U[j] + cv * k.V[j] end
+    density = norm(v, k.d) / (b - a)
+    if not (density > 0) then
+      density = 0
+      for i = 1, 16 do density = density + conic_speed_th(k, a + (i - 0.5) * (b - a) / 16) end
+      density = density / 64
+    end
+  end
+  local f = function(th) return conic_speed_th(k, th) end
+  local total, evals, pieces = 0, 0, 0
+  local stack = {{a, b}}
+  while #stack > 0 do
+    local top = table.remove(stack)
+    local x, y = top[1], top[2]
+    local c, hw = (x + y) / 2, (y - x) / 2
+    -- the nearest branch point's rho
+    local rho, foot = huge, nil
+    for _, ft in ipairs(k.feet) do
+      local ux, uy = (ft - c) / hw, k.eta2 / hw
+      local sf = (sqrt((ux - 1) ^ 2 + uy * uy) + sqrt((ux + 1) ^ 2 + uy * uy)) / 2
+      local r = sf + sqrt((sf - 1) * (sf + 1))
+      if r < rho then rho, foot = r, ft end
+    end
+    local target = 0.25 * rtol * density * (y - x)
+    local done = false
+    if rho > 1.05 then
+      local r = 1 + (rho - 1) * 0.9
+      local M = conic_bound(k, c, hw, r)
+      for _, n in ipairs(ORDERS) do
+        local bound = (64 / 15) * hw * M * r ^ (-2 * n) / (r * r - 1)
+        if bound <= target or bound <= 4 * EPS * M * hw then
+          total = total + gl(f, x, y, rules[n])
+          evals = evals + n
+          done = true
+          break
+        end
+      end
+    end
+    pieces = pieces + 1
+    if not done then
+      if pieces > MAX_CONIC_PIECES then
+        total = total + gl(f, x, y, rules[128])
+        evals = evals + 128
+      else
+        local cut = (foot and foot > x + 0.01 * (y - x) and foot < y - 0.01 * (y - x)) and foot or c
+        stack[#stack + 1] = {cut, y}
+        stack[#stack + 1] = {x, cut}
+      end
+    end
+  end
+  return total, evals
+end
+
+-- ---- the kinds' functions -----------------------------------------------
+
+-- A conic's length is measured to 1e-14 whatever tol (as the C core's
+-- exact one: its pieces' orders grow only with log(1/tol)); its times
+-- keep tol.
+local CONIC_RTOL = 1e-14
+
+-- The point at t.
+function M.point(kind, c, d, t)
+  local out = {}
+  if kind == "line" then
+    local s = 1 - t
+    for j = 1, d do out[j] = s * c[j] + t * c[d + j] end
+  elseif kind == "quad" then
+    local s = 1 - t
+    local b0, b1, b2 = s * s, 2 * t * s, t * t
+    for j = 1, d do out[j] = b0 * c[j] + b1 * c[d + j] + b2 * c[2 * d + j] end
+  else  -- conic: N(t)/D(t), exact at the ends
+    local w, s = c[3 * d + 1], 1 - t
+    if t == 0 then for j = 1, d do out[j] = c[j] end return out end
+    if t == 1 then for j = 1, d do out[j] = c[2 * d + j] end return out end
+    local b0, b1, b2 = s * s, 2 * w * t * s, t * t
+    local den = b0 + b1 + b2
+    for j = 1, d do out[j] = (b0 * c[j] + b1 * c[d + j] + b2 * c[2 * d + j]) / den end
+  end
+  return out
+end
+
+-- The derivative in t (the rational one for a conic:
+-- 2 [w (1-t)^2 (P1-P0) + t (1-t) (P2-P0) + w t^2 (P2-P1)] / D(t)^2).
+function M.derivative(kind, c, d, t)
+  local out = {}
+  if kind == "line" then
+    for j = 1, d do out[j] = c[d + j] - c[j] end
+  elseif kind == "quad" then
+    local s = 1 - t
+    for j = 1, d do out[j] = 2 * (s * (c[d + j] - c[j]) + t * (c[2 * d + j] - c[d + j])) end
+  else
+    local w, s = c[3 * d + 1], 1 - t
+    local den = s * s + 2 * w * t * s + t * t
+    for j = 1, d do
+      local p0, p1, p2 = c[j], c[d + j], c[2 * d + j]
+      out[j] = 2 * (w * s * s * (p1 - p0) + t * s * (p2 - p0) + w * t * t * (p2 - p1))
+               / (den * den)
+    end
+  end
+  return out
+end
+
+-- The direction where the derivative vanishes (a unit vector's limit):
+-- a quadratic's second derivative (its negative at t = 1, approached from
+-- the left); a conic's chord P2 - P0 (P1 on an end point); a line has none.
+function M.fallback_direction(kind, c, d, t)
+  local v = {}
+  if kind == "quad" then
+    for j = 1, d do
+      v[j] = c[2 * d + j] - 2 * c[d + j] + c[j]
+      if t == 1 then v[j] = -v[j] end
+    end
+  elseif kind == "conic" then
+    for j = 1, d do v[j] = c[2 * d + j] - c[j] end
+  else
+    for j = 1, d do v[j] = 0 end
+  end
+  return v
+end
+
+-- The length; the second result counts the speed evaluations.
+function M.length(kind, c, d, rtol)
+  if rtol > CONIC_RTOL then rtol = CONIC_RTOL end
+  if kind == "line" then return line_length(c, d), 1 end
+  if kind == "quad" then return quad_length(quad_setup(c, d), 0, 1), 1 end
+  local k = conic_setup(c, d)
+  if k.quad then return quad_length(k.quad, 0, 1), 1 end
+  return conic_length_th(k, -k.al, k.al, rtol)
+end
+
+-- The length from t0 to t1 (t0 < t1); the second result counts the
+-- evaluations.
+function M.length_range(kind, c, d, rtol, t0, t1)
+  if rtol > CONIC_RTOL then rtol = CONIC_RTOL end
+  if kind == "line" then return (t1 - t0) * line_length(c, d), 1 end
+  if kind == "quad" then return quad_length(quad_setup(c, d), t0, t1), 1 end
+  local k = conic_setup(c, d)
+  if k.quad then return quad_length(k.quad, t0, t1), 1 end
+  return conic_length_th(k, th_of_t(k, t0), th_of_t(k, t1), rtol)
+end
+
+-- The times of the ascending distances s[1..] (each in [0, L], L the
+-- segment's length as measured by M.length), each with |s(t) - s| <=
+-- tol L; returns the times and the count of evaluations.
+function M.times(kind, c, d, L, s, rtol)
+  local ts, evals = {}, 0
+  if kind == "line" then
+    for q = 1, #s do
+      local t = L > 0 and s[q] / L or 0
+      ts[q] = t < 0 and 0 or (t > 1 and 1 or t)
+    end
+    return ts, #s
+  end
+  local len, speed, lo0, hi0, to_t
+  local goal_tol = 0.5 * rtol * L
+  if kind == "quad" or (kind == "conic" and c[3 * d + 1] == 1) then
+    local q = quad_setup(c, d)
+    len = function(a, b) evals = evals + 1; return quad_length(q, a, b) end
+    speed = function(t) return quad_speed(q, t) end
+    lo0, hi0, to_t = 0, 1, function(t) return t end
+  else
+    local k = conic_setup(c, d)
+    local density = L / (2 * k.al)
+    len = function(a, b)
+      local v, e = conic_length_th(k, a, b, rtol, density)
+      evals = evals + e
+      return v
+    end
+    speed = function(th) return conic_speed_th(k, th) end
+    lo0, hi0 = -k.al, k.al
+    to_t = function(th) return t_of_th(k, th) end
+  end
+  -- a sweep: the anchor (x, at distance sa) only moves forward
+  local ax, sa = lo0, 0
+  for q = 1, #s do
+    local goal = s[q]
+    if goal <= 0 then ts[q] = 0
+    elseif goal >= L then ts[q] = 1
+    else
+      if goal < sa then ax, sa = lo0, 0 end       -- not ascending: start over
+      local lo, hi = ax, hi0
+      local v0 = speed(ax)
+      local x = v0 > 0 and ax + (goal - sa) / v0 or (ax + hi) / 2
+      if not (x > lo and x < hi) then x = (lo + hi) / 2 end
+      local found = nil
+      for _ = 1, 100 do
+        local v = sa + len(ax, x)
+        local f = v - goal
+        if abs(f) <= goal_tol then found = x break end
+        if f < 0 then
+          lo, ax, sa = x, x, v                     -- the anchor moves on
+        else
+          hi = x
+        end
+        local sp = speed(x)
+        local nx = sp > 0 and x - f / sp or nil
+        if not nx or not (nx > lo and nx < hi) then nx = (lo + hi) / 2 end
+        if nx == x or hi - lo <= 0 then found = x break end
+        x = nx
+      end
+      ts[q] = to_t(found or x)
+    end
+  end
+  return ts, evals
+end
+
+-- The piece from t0 to t1 (t0 > t1: reversed), of the same kind; the ends
+-- exact where t is 0 or 1.
+function M.sub(kind, c, d, t0, t1)
+  local out = {}
+  local function put(i, p) for j = 1, d do out[(i - 1) * d + j] = p[j] end end
+  if kind == "line" then
+    put(1, M.point(kind, c, d, t0))
+    put(2, M.point(kind, c, d, t1))
+    return out
+  end
+  if kind == "quad" then
+    -- blossom b(u, v) = (1-u)(1-v) P0 + ((1-u) v + u (1-v)) P1 + u v P2
+    local function blossom(u, v)
+      local p = {}
+      for j = 1, d do
+        local p0, p1, p2 = c[j], c[d + j], c[2 * d + j]
+        local a0, a1 = p0 + u * (p1 - p0), p1 + u * (p2 - p1)
+        p[j] = a0 + v * (a1 - a0)
+      end
+      return p
+    end
+    put(1, M.point(kind, c, d, t0))
+    put(2, blossom(t0, t1))
+    put(3, M.point(kind, c, d, t1))
+    return out
+  end
+  -- conic: the blossom of the homogeneous curve (P0, 1), (w P1, w), (P2, 1)
+  local w = c[3 * d + 1]
+  local function hblossom(u, v)
+    local p, wt = {}, 0
+    local a0w, a1w = 1 + u * (w - 1), w + u * (1 - w)
+    wt = a0w + v * (a1w - a0w)
+    for j = 1, d do
+      local h0, h1, h2 = c[j], w * c[d + j], c[2 * d + j]
+      local a0, a1 = h0 + u * (h1 - h0), h1 + u * (h2 - h1)
+      p[j] = a0 + v * (a1 - a0)
+    end
+    return p, wt
+  end
+  local q0, w0 = hblossom(t0, t0)
+  local q1, w1 = hblossom(t0, t1)
+  local q2, w2 = hblossom(t1, t1)
+  for j = 1, d do q0[j], q1[j], q2[j] = q0[j] / w0, q1[j] / w1, q2[j] / w2 end
+  put(1, t0 == 0 and pt(c, 1, d) or t0 == 1 and pt(c, 3, d) or q0)
+  put(2, q1)
+  put(3, t1 == 0 and pt(c, 1, d) or t1 == 1 and pt(c, 3, d) or q2)
+  out[3 * d + 1] = w1 / sqrt(w0 * w2)       -- weights (w0, w1, w2) -> (1, w', 1)
+  return out
+end
+
+-- The conic as its own angle parametrization, for the specs.
+M._conic_setup, M._th_of_t, M._t_of_th = conic_setup, th_of_t, t_of_th
+M._floor = floor
+
+return M

@@ -1,0 +1,318 @@
+-- segment_spec.lua -- segments of four kinds (issue 31): line, quad, cubic
+-- and conic (rational quadratic, weights 1, w, 1), 2D and 3D, through
+-- arclen.segment_length / _time / _point / _derivative / _sub, the kinds
+-- in arclen.lengths and the walks, and bad input naming its argument.
+-- References: spec/data/segments_lengths.tsv from tools/ref_segments.py
+-- (mpmath quad of the speed from the definitions, 40 digits).
+local arclen = require "arclen"
+local H = require "helpers"
+
+local EPS = 2 ^ -52
+local abs, max = math.abs, math.max
+local unpack = table.unpack or unpack
+local rows = H.tsv("segments_lengths.tsv")
+
+-- The bounds the C core's methods guarantee, relative to the length:
+-- line: each coordinate difference one rounding and hypot within an ulp
+-- (3D: two hypots), so 4 eps; quad: the legs one rounding each, then a
+-- closed form of sums of positive terms (a dozen roundings, none
+-- amplified: U1 - U0 is set exactly) or a Gauss rule whose truncation is
+-- below 1e-19 (quad.c), so 16 eps; conic: arclen_conic_length's own
+-- (conic_spec: 9.5e-16 on its references) plus the sub-arc's control points
+-- (one blossom each, a few roundings), so 4e-15.  The Lua engine promises
+-- the tolerance (1e-12 relative) only.
+local BOUND = {line = 4 * EPS, quad = 16 * EPS, conic = 4e-15}
+local function bound(kind)
+  return H.engine == "c" and BOUND[kind] or 1e-12
+end
+
+local function seg_of(row)
+  local s = {}
+  for x in row.seg:gmatch("%S+") do s[#s + 1] = assert(tonumber(x)) end
+  return s
+end
+
+-- the largest coordinate: what a sub-range's rounded control points are
+-- relative to
+local function size(s, kind, dim)
+  local n = kind == "conic" and 3 * dim or #s
+  local m = 0
+  for i = 1, n do m = max(m, abs(s[i])) end
+  return m
+end
+
+describe("segments of four kinds (issue 31)", function()
+  describe("lengths against 40-digit references", function()
+    for _, row in ipairs(rows) do
+      it(row.name .. ": length from 0 to 1/4, 1/2, 3/4, 1 within " ..
+         (H.engine == "c" and "the closed form's bound" or "tol"), function()
+        local s = seg_of(row)
+        for _, p in ipairs({{0.25, "L25"}, {0.5, "L50"}, {0.75, "L75"}, {1, "L"}}) do
+          local want = tonumber(row[p[2]])
+          local got = arclen.segment_length(row.kind, s, {t1 = p[1]})
+          local err = H.relerr(got, want)
+          assert(err <= bound(row.kind), ("%s t1=%g: %.3g relative (bound %.3g)")
+            :format(row.name, p[1], err, bound(row.kind)))
+        end
+        -- the whole length, also with the tolerance at its loosest: a
+        -- closed form or an exact length does not depend on it
+        local L = tonumber(row.L)
+        assert(H.relerr(arclen.segment_length(row.kind, s, {tol = 0.1}), L) <= bound(row.kind))
+      end)
+      it(row.name .. ": the piece [0.2, 0.7], by t0/t1 and by segment_sub", function()
+        local s = seg_of(row)
+        local want = tonumber(row.L2070)
+        local dim = tonumber(row.dim)
+        local got = arclen.segment_length(row.kind, s, {t0 = 0.2, t1 = 0.7})
+        -- a conic's piece is measured on its own control points, rounded
+        -- at the coordinates' scale: 4 eps |P| over the piece's length more
+        local b = bound(row.kind)
+        if row.kind == "conic" then b = b + 4 * EPS * size(s, row.kind, dim) / want end
+        local e = H.relerr(got, want)
+        assert(e <= b, ("%s t0/t1: %.3g (bound %.3g)"):format(row.name, e, b))
+        local back = arclen.segment_length(row.kind, s, {t0 = 0.7, t1 = 0.2})
+        assert.are.equal(-got, back)
+        -- segment_sub's numbers are rounded: the length moves by their
+        -- rounding (eps times the coordinates) over the length
+        local sub = arclen.segment_sub(row.kind, s, 0.2, 0.7)
+        assert.are.equal(#s, #sub)
+        local tolsub = bound(row.kind) + 16 * EPS * size(s, row.kind, dim) / want
+        local err = H.relerr(arclen.segment_length(row.kind, sub), want)
+        assert(err <= tolsub, ("%s sub: %.3g (bound %.3g)"):format(row.name, err, tolsub))
+      end)
+    end
+  end)
+
+  describe("time at a length", function()
+    for _, row in ipairs(rows) do
+      it(row.name .. ": |s(t) - s| <= tol L at s = L/3, 2L/3", function()
+        local s, L = seg_of(row), tonumber(row.L)
+        for _, tol in ipairs({1e-6, 1e-10, 1e-14}) do
+          for _, q in ipairs({{1 / 3, "T33", "V33"}, {2 / 3, "T67", "V67"}}) do
+            local T, V = tonumber(row[q[2]]), tonumber(row[q[3]])
+            local t = arclen.segment_time(row.kind, s, q[1] * L, {tol = tol})
+            assert(t >= 0 and t <= 1)
+            -- the length between t and the true T is about |t - T| V (the
+            -- speed is smooth there); the reference's own rounding adds eps
+            local miss = abs(t - T) * V
+            assert(miss <= 1.01 * tol * L + 4 * EPS * L,
+                   ("%s tol %g s=%s: %.3g L"):format(row.name, tol, q[2], miss / L))
+          end
+        end
+        assert.are.equal(0, arclen.segment_time(row.kind, s, -1))
+        assert.are.equal(1, arclen.segment_time(row.kind, s, 2 * L + 1))
+      end)
+    end
+  end)
+
+  describe("point, derivative, sub", function()
+    it("the speed at the reference times is |segment_derivative|", function()
+      local function speed(kind, s, t)
+        local d = {arclen.segment_derivative(kind, s, t)}
+        local m, v = 0, 0
+        for i = 1, #d do m = max(m, abs(d[i])) end
+        for i = 1, #d do v = v + (d[i] / m) ^ 2 end   -- no overflow at 1e300
+        return m * math.sqrt(v)
+      end
+      for _, row in ipairs(rows) do
+        local s = seg_of(row)
+        for _, q in ipairs({{"T33", "V33"}, {"T67", "V67"}}) do
+          -- T is rounded to a double: where the speed changes fast (w =
+          -- 38272 turns its corner within 1e-4 of t) its neighbours' speeds
+          -- bracket the reference
+          local T, want = tonumber(row[q[1]]), tonumber(row[q[2]])
+          local a, b = speed(row.kind, s, T * (1 - EPS)), speed(row.kind, s, math.min(1, T * (1 + EPS)))
+          local lo, hi = math.min(a, b) * (1 - 1e-13), math.max(a, b) * (1 + 1e-13)
+          assert(H.relerr(speed(row.kind, s, T), want) <= 1e-13 or (want >= lo and want <= hi),
+                 row.name)
+        end
+      end
+    end)
+    it("ends are the segment's first and last points exactly", function()
+      for _, row in ipairs(rows) do
+        local s, dim = seg_of(row), tonumber(row.dim)
+        local n = ({line = 2, quad = 3, conic = 3})[row.kind]
+        local p0 = {arclen.segment_point(row.kind, s, 0)}
+        local p1 = {arclen.segment_point(row.kind, s, 1)}
+        for k = 1, dim do
+          assert.are.equal(s[k], p0[k])
+          assert.are.equal(s[(n - 1) * dim + k], p1[k])
+        end
+      end
+    end)
+    it("a sub-range starts and ends at the points of t0 and t1; t0 > t1 reverses", function()
+      for _, row in ipairs(rows) do
+        local s, dim = seg_of(row), tonumber(row.dim)
+        local n = ({line = 2, quad = 3, conic = 3})[row.kind]
+        local sub = arclen.segment_sub(row.kind, s, 0.7, 0.2)
+        local a = {arclen.segment_point(row.kind, s, 0.7)}
+        local b = {arclen.segment_point(row.kind, s, 0.2)}
+        local scale = size(s, row.kind, dim)
+        for k = 1, dim do
+          assert(abs(sub[k] - a[k]) <= 8 * EPS * scale, row.name)
+          assert(abs(sub[(n - 1) * dim + k] - b[k]) <= 8 * EPS * scale, row.name)
+        end
+        if row.kind == "conic" then assert(sub[#sub] > 0) end
+      end
+    end)
+    it("a quarter circle's point at 1/2 is on the circle at 45 degrees", function()
+      local r = math.sqrt(0.5)
+      local x, y = arclen.segment_point("conic", {1, 0, 1, 1, 0, 1, r}, 0.5)
+      assert(abs(x - r) <= 2 * EPS and abs(y - r) <= 2 * EPS)
+    end)
+    it("a circle of four conics measures 2 pi whatever the tolerance", function()
+      local r = math.sqrt(0.5)
+      local q = {{1, 0, 1, 1, 0, 1}, {0, 1, -1, 1, -1, 0}, {-1, 0, -1, -1, 0, -1},
+                 {0, -1, 1, -1, 1, 0}}
+      for _, tol in ipairs({1e-15, 1e-6, 0.1}) do
+        local sum = 0
+        for _, p in ipairs(q) do
+          p[7] = r
+          sum = sum + arclen.segment_length("conic", p, {tol = tol})
+        end
+        -- r = sqrt(1/2) rounded: w is cos(pi/4) to 2^-53 relative, and the
+        -- length's derivative in w is small (the arc stays near the circle)
+        assert(H.relerr(sum, 2 * math.pi) <= (H.engine == "c" and 4e-15 or 1e-12))
+      end
+    end)
+  end)
+
+  describe("cubics go to arclen.length / arclen.time", function()
+    local c = {0, 0, 1, 2, 3, 2, 4, 0}
+    it("the same numbers, method and options included", function()
+      assert.are.equal(arclen.length(c), arclen.segment_length("cubic", c))
+      assert.are.equal(arclen.length(c, {tol = 1e-6, t0 = 0.1, t1 = 0.6}),
+                       arclen.segment_length("cubic", c, {tol = 1e-6, t0 = 0.1, t1 = 0.6}))
+      assert.are.equal(arclen.time(c, 2), arclen.segment_time("cubic", c, 2))
+      local x, y = arclen.point(c, 0.3)
+      local u, v = arclen.segment_point("cubic", c, 0.3)
+      assert.are.equal(x, u); assert.are.equal(y, v)
+    end)
+    H.c_only(it, "method 'elliptic'")("method applies to cubics", function()
+      assert.are.equal(arclen.length(c, {method = "elliptic"}),
+                       arclen.segment_length("cubic", c, {method = "elliptic"}))
+    end)
+  end)
+
+  describe("kinds in lengths, _segments and the walks", function()
+    local r = math.sqrt(0.5)
+    local segs = {{0, 0, 3, 4}, {3, 4, 4, 6, 6, 4}, {6, 4, 7, 5, 8, 4, 9, 3},
+                  {9, 3, 9, 4, 8, 4, r}}
+    local kinds, names = "LQCR", {"line", "quad", "cubic", "conic"}
+    local function pack()
+      local parts = {}
+      for _, s in ipairs(segs) do
+        local rec = {}
+        for i = 1, 8 do rec[i] = s[i] or 0 end
+        parts[#parts + 1] = string.pack("<dddddddd", unpack(rec))
+      end
+      return table.concat(parts)
+    end
+    local packed = string.pack and pack() or nil
+    it("lengths(packed, {kinds =}) is each segment_length", function()
+      if not packed then return end          -- Lua 5.1: no string.pack
+      local L = arclen.lengths(packed, {kinds = kinds})
+      for i, s in ipairs(segs) do
+        assert.are.equal(arclen.segment_length(names[i], s), L[i])
+      end
+      local back = arclen._segments(packed, kinds, 2)
+      for i, s in ipairs(segs) do assert.are.same(s, back[i]) end
+    end)
+    it("packed records walk by kind too; lengths3 reads 3D records by kind", function()
+      if not packed then return end
+      local L = arclen.lengths(packed, {kinds = kinds})
+      local cum, acc = {[0] = 0}, 0
+      for i = 1, #L do acc = acc + L[i]; cum[i] = acc end
+      local ds = {0, acc / 3, acc / 2, acc}
+      local ks, ts, ks2, ts2 = {}, {}, {}, {}
+      arclen._walk_times(packed, cum, ds, 1e-12, false, ks, ts, kinds)
+      arclen._walk_times(segs, cum, ds, 1e-12, false, ks2, ts2, kinds)
+      assert.are.same(ks2, ks)
+      assert.are.same(ts2, ts)
+      local rec3 = {}
+      local s3 = {{0, 0, 0, 1, 2, 2}, {0, 0, 0, 1, 0, 1, 0, 1, 1}, {1, 0, 0, 1, 1, 0, 0, 1, 0, r}}
+      for _, s in ipairs(s3) do
+        for i = 1, 12 do rec3[#rec3 + 1] = s[i] or 0 end
+      end
+      local L3 = arclen.lengths3(rec3, {kinds = "LQR"})
+      assert.are.equal(3, L3[1])
+      assert.are.equal(arclen.segment_length("quad", s3[2]), L3[2])
+      assert(H.relerr(L3[3], math.pi / 2) <= (H.engine == "c" and 4e-15 or 1e-12))
+    end)
+    it("the walks dispatch by kind", function()
+      local cum, acc = {[0] = 0}, 0
+      for i, s in ipairs(segs) do
+        acc = acc + arclen.segment_length(names[i], s)
+        cum[i] = acc
+      end
+      local ds = {}
+      for i = 0, 40 do ds[#ds + 1] = acc * i / 40 end
+      local ks, ts = {}, {}
+      arclen._walk_times(segs, cum, ds, 1e-12, false, ks, ts, kinds)
+      for q, d in ipairs(ds) do
+        local k, t = ks[q], ts[q]
+        local got = cum[k - 1] + arclen.segment_length(names[k], segs[k], {t1 = t})
+        assert(abs(got - d) <= 2e-12 * acc, ("distance %g: %g"):format(d, got))
+      end
+      local out = {}
+      arclen._walk_samples(segs, cum, ds, 1e-12, out, nil, nil, kinds)
+      for q = 1, #ds do
+        local k = math.floor(out[q].time) + 1
+        if k > #segs then k = #segs end
+        local x, y = arclen.segment_point(names[k], segs[k], out[q].time - (k - 1))
+        assert(abs(out[q].x - x) <= 1e-12 and abs(out[q].y - y) <= 1e-12)
+      end
+    end)
+  end)
+
+  describe("bad input names its argument", function()
+    local function err(f, ...) return H.error_of(f, ...) or "no error" end
+    local cases = {
+      {"unknown kind", {"spline", {0, 0, 1, 1}}, "#1 .*unknown segment kind 'spline'"},
+      {"kind not a string", {3, {0, 0, 1, 1}}, "#1 .*segment kind expected"},
+      {"not a table", {"line", 5}, "#2 .*segment expected"},
+      {"wrong count", {"quad", {0, 0, 1, 1, 2}}, "#2 .*a quad has 6 %(2D%) or 9 %(3D%) numbers, got 5"},
+      {"a cubic's count", {"cubic", {0, 0, 1, 1}}, "#2 .*a cubic has 8 %(2D%) or 12 %(3D%) numbers, got 4"},
+      {"NaN", {"line", {0, 0 / 0, 1, 1}}, "#2 .*number 2 must be finite"},
+      {"infinity", {"conic", {0, 0, 1, 1, 2, math.huge, 0.5}}, "#2 .*number 6 must be finite"},
+      {"a string number", {"line", {0, "x", 1, 1}}, "#2 .*number 2 must be a number"},
+      {"w = 0", {"conic", {0, 0, 1, 1, 2, 0, 0}}, "#2 .*weight .*must be positive"},
+      {"w < 0", {"conic", {0, 0, 1, 1, 2, 0, -1}}, "#2 .*weight .*must be positive"},
+      {"w infinite", {"conic", {0, 0, 1, 1, 2, 0, math.huge}}, "#2 .*must be finite"},
+      {"bad tol", {"quad", {0, 0, 1, 1, 2, 0}, {tol = 2}}, "#3 .*tol"},
+      {"bad option", {"quad", {0, 0, 1, 1, 2, 0}, {bogus = 1}}, "#3 .*unknown option"},
+    }
+    for _, c in ipairs(cases) do
+      it("segment_length: " .. c[1], function()
+        local msg = err(arclen.segment_length, unpack(c[2]))
+        -- (Lua 5.1 and LuaJIT name the function '?' under pcall)
+        assert(msg:find("bad argument") and msg:find(c[3]), msg)
+      end)
+    end
+    it("segment_time, _point, _derivative, _sub: s, t, t0, t1", function()
+      local q = {0, 0, 1, 1, 2, 0}
+      assert.truthy(err(arclen.segment_time, "quad", q, 0 / 0):find("#3 .*length must be a number"))
+      assert.truthy(err(arclen.segment_time, "quad", q, "x"):find("#3"))
+      assert.truthy(err(arclen.segment_point, "quad", q, 1.5):find("#3 .*t must be in %[0, 1%]"))
+      assert.truthy(err(arclen.segment_derivative, "quad", q, 0 / 0):find("#3 .*t must be"))
+      assert.truthy(err(arclen.segment_sub, "quad", q, 0, 2):find("#4 .*t1 must be in"))
+      assert.truthy(err(arclen.segment_sub, "line", {0, 0, 1}, 0, 1):find("#2 .*a line has 4"))
+    end)
+    it("lengths' kinds: the count and the letters", function()
+      local p = {0, 0, 1, 1, 0, 0, 0, 0}
+      assert.truthy(err(arclen.lengths, p, {kinds = "LL"}):find("#2 .*one letter per segment %(1%), got 2"))
+      assert.truthy(err(arclen.lengths, p, {kinds = "X"}):find("#2 .*letter 1 is not L, Q, C or R"))
+      assert.truthy(err(arclen.lengths, p, {kinds = 7}):find("#2 .*kinds must be a string"))
+      local w = {0, 0, 1, 1, 2, 0, -1, 0}
+      assert.truthy(err(arclen.lengths, w, {kinds = "R"}):find("#1 .*segment 1: conic weight must be positive"))
+      assert.are.equal(math.sqrt(2), arclen.lengths(p, {kinds = "L"})[1])
+    end)
+    it("the walks' kinds: one letter per segment", function()
+      local segs = {{0, 0, 1, 0}}
+      local msg = err(arclen._walk_times, segs, {[0] = 0, 1}, {0.5}, 1e-12, false, {}, {}, "LQ")
+      assert.truthy(msg:find("#8 .*one letter per segment"), msg)
+      msg = err(arclen._walk_times, segs, {[0] = 0, 1}, {0.5}, 1e-12, false, {}, {}, "Z")
+      assert.truthy(msg:find("#8 .*letter 1 is not"), msg)
+    end)
+  end)
+end)

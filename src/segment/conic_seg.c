@@ -1,0 +1,286 @@
+/*
+** conic_seg.c -- the conic segment: the rational quadratic Bezier P0 P1 P2
+** with weights (1, w, 1), w > 0 (Floater's eq. 1), in 2D and 3D.  The piece
+** over [t0, t1] is again such a conic (the homogeneous blossom, weights
+** renormalized to (1, w', 1)), so every partial length is the exact one of
+** conic/conic_length.c.  A 3D arc lies in the plane of its points and is
+** measured on its isometric image in 2D, built from |a|, a.c and |a x c|
+** alone; a flat triangle (collinear points) is a segment run along a line,
+** possibly turning back, measured as the variation of its coordinate.
+*/
+#include <float.h>
+#include <math.h>
+
+#include "arclen.h"
+#include "segment/segment.h"
+
+static double dot(const double *u, const double *v, int dim) {
+  double s = u[0] * v[0] + u[1] * v[1];
+  return dim == 3 ? s + u[2] * v[2] : s;
+}
+
+/* out (dim numbers) into the bounding box of the three points: a point
+** of the conic (and of its blossom) is a convex combination of them
+** (weights > 0), so only rounding can leave the box -- and beyond DBL_MAX
+** it would (points at +-1.797e308). */
+static void into_hull(const double *p, int dim, double *out) {
+  int k;
+  for (k = 0; k < dim; k++) {
+    double lo = fmin(p[k], fmin(p[dim + k], p[2 * dim + k]));
+    double hi = fmax(p[k], fmax(p[dim + k], p[2 * dim + k]));
+    out[k] = fmin(fmax(out[k], lo), hi);
+  }
+}
+
+/* The homogeneous blossom's weight W(u, v) and the point of B(u, v),
+** formed relative to P0 (so far-away points keep the legs' digits). */
+static double blossom(const double *p, int dim, double u, double v,
+                      double *out) {
+  double w = p[3 * dim];
+  double b0 = (1 - u) * (1 - v), b1 = ((1 - u) * v + u * (1 - v)) * w;
+  double b2 = u * v, W = b0 + b1 + b2;
+  int k;
+  /* the weights divided first: b1 (P1 - P0) alone may overflow (w = 1e5
+  ** beside points at 1e304) where b1/W (P1 - P0) does not */
+  for (k = 0; k < dim; k++) {
+    double l1 = p[dim + k] - p[k], l2 = p[2 * dim + k] - p[k], x;
+    if (isfinite(l1) && isfinite(l2)) {
+      out[k] = p[k] + ((b1 / W) * l1 + (b2 / W) * l2);
+    } else {            /* points on both sides of +-DBL_MAX/2: half legs */
+      x = (b1 / W) * (p[dim + k] / 2 - p[k] / 2) + (b2 / W) * (p[2 * dim + k] / 2 - p[k] / 2);
+      out[k] = (p[k] + x) + x;
+    }
+  }
+  into_hull(p, dim, out);
+  return W;
+}
+
+void arclen_rquad_sub(const double *p, int dim, double t0, double t1,
+                      double *out) {
+  double W0 = blossom(p, dim, t0, t0, out);
+  double W1 = blossom(p, dim, t0, t1, out + dim);
+  double W2 = blossom(p, dim, t1, t1, out + 2 * dim);
+  int k;
+  /* the ends exactly where the curve's ends are */
+  if (t0 == 0 || t0 == 1)
+    for (k = 0; k < dim; k++) out[k] = p[t0 == 0 ? k : 2 * dim + k];
+  if (t1 == 0 || t1 == 1)
+    for (k = 0; k < dim; k++) out[2 * dim + k] = p[t1 == 0 ? k : 2 * dim + k];
+  /* weights (W0, W1, W2) -> (1, W1/sqrt(W0 W2), 1): the same curve
+  ** (Farin, "NURBS", the standard form); square roots apart so that no
+  ** product overflows */
+  out[3 * dim] = W1 / (sqrt(W0) * sqrt(W2));
+}
+
+void arclen_rquad_point(const double *p, int dim, double t, double *out) {
+  double w = p[3 * dim], s = 1 - t;
+  double b0 = s * s, b1 = 2 * s * t * w, b2 = t * t, D = b0 + b1 + b2;
+  int k;
+  for (k = 0; k < dim; k++)
+    if (!isfinite(p[2 * dim + k] - p[k]) || !isfinite(p[dim + k] - p[k]) ||
+        !isfinite(p[dim + k] - p[2 * dim + k])) {
+      blossom(p, dim, t, t, out);      /* legs beyond DBL_MAX: halved there */
+      if (t == 1)
+        for (k = 0; k < dim; k++) out[k] = p[2 * dim + k];
+      return;
+    }
+  for (k = 0; k < dim; k++) {
+    /* relative to the nearer end: P0 at t = 0 and P2 at t = 1 exactly */
+    if (t <= 0.5)
+      out[k] = p[k] + ((b1 / D) * (p[dim + k] - p[k]) + (b2 / D) * (p[2 * dim + k] - p[k]));
+    else
+      out[k] = p[2 * dim + k]
+               + ((b0 / D) * (p[k] - p[2 * dim + k]) + (b1 / D) * (p[dim + k] - p[2 * dim + k]));
+  }
+  into_hull(p, dim, out);
+}
+
+/* C'(t) = 2 [w (1-t)^2 (P1 - P0) + t (1-t) (P2 - P0) + w t^2 (P2 - P1)] / D^2,
+** D = (1-t)^2 + 2 w t (1-t) + t^2 (the quotient rule; the t^3 terms
+** cancel). */
+void arclen_rquad_derivative(const double *p, int dim, double t,
+                             double *out) {
+  double w = p[3 * dim], s = 1 - t, D = s * s + 2 * w * t * s + t * t;
+  int k;
+  for (k = 0; k < dim; k++)
+    out[k] = 2 * (w * s * s * (p[dim + k] - p[k])
+                  + t * s * (p[2 * dim + k] - p[k])
+                  + w * t * t * (p[2 * dim + k] - p[dim + k])) / (D * D);
+}
+
+/* X(t) for the 1D conic (0, x1, x2; w). */
+static double coord(double x1, double x2, double w, double t) {
+  double s = 1 - t;
+  if (t <= 0.5) return (2 * w * t * s * x1 + t * t * x2) / (s * s + 2 * w * t * s + t * t);
+  return x2 + (s * s * (-x2) + 2 * w * t * s * (x1 - x2)) / (s * s + 2 * w * t * s + t * t);
+}
+
+/* The legs a = P1 - P0, c = P2 - P1, k = P2 - P0 (one rounding each; their
+** halves where a difference overflows) scaled by 2^-e into [1/2, 1) at
+** most, so that no square over- or underflows; returns e (0 and zero legs
+** for a point). */
+static int scaled_legs(const double *p, int dim, double leg[3][3]) {
+  static const int to[3] = {1, 2, 2}, from[3] = {0, 1, 0};
+  double mx = 0;
+  int i, k, e, half = 0;
+  for (i = 0; i < 3; i++)
+    for (k = 0; k < dim; k++) {
+      leg[i][k] = p[to[i] * dim + k] - p[from[i] * dim + k];
+      if (!isfinite(leg[i][k])) half = 1;
+    }
+  for (i = 0; i < 3; i++)
+    for (k = 0; k < dim; k++) {
+      if (half) leg[i][k] = p[to[i] * dim + k] / 2 - p[from[i] * dim + k] / 2;
+      if (fabs(leg[i][k]) > mx) mx = fabs(leg[i][k]);
+    }
+  if (mx == 0) return 0;
+  frexp(mx, &e);
+  for (i = 0; i < 3; i++)
+    for (k = 0; k < dim; k++) leg[i][k] = ldexp(leg[i][k], -e);
+  return e + half;
+}
+
+/* The length of a conic whose points lie on a line, from its scaled legs:
+** the total variation of its coordinate along the line's direction (the
+** longest leg's), split where X' = 0, i.e. at the roots of w x1 + (x2 - 2
+** w x1) t + (w - 1) x2 t^2 (the numerator of C' above) in (0, 1). */
+static double collinear_length(double leg[3][3], int dim, double w) {
+  double len[3], e[3] = {0, 0, 0}, x1, x2, re[2], im[2], ts[4], L = 0;
+  int i, k, best = 0, n, m = 0;
+  for (i = 0; i < 3; i++) {
+    len[i] = arclen_seg_norm(leg[i], dim);
+    if (len[i] > len[best]) best = i;
+  }
+  if (!(len[best] > 0)) return 0;           /* a point */
+  for (k = 0; k < dim; k++) e[k] = leg[best][k] / len[best];
+  x1 = dot(leg[0], e, dim);
+  x2 = dot(leg[2], e, dim);
+  ts[m++] = 0;
+  n = arclen_quadratic((w - 1) * x2, x2 - 2 * w * x1, w * x1, re, im);
+  for (i = 0; i < n; i++)
+    if (im[i] == 0 && re[i] > 0 && re[i] < 1) ts[m++] = re[i];
+  if (m == 3 && ts[2] < ts[1]) { double r = ts[1]; ts[1] = ts[2]; ts[2] = r; }
+  ts[m++] = 1;
+  for (i = 0; i + 1 < m; i++)
+    L += fabs(coord(x1, x2, w, ts[i + 1]) - coord(x1, x2, w, ts[i]));
+  return L;
+}
+
+/* The whole arc's length. */
+static int whole_length(const double *p, int dim, double *len,
+                        arclen_info *info) {
+  double leg[3][3], q[6], w = p[3 * dim], L;
+  int e = scaled_legs(p, dim, leg), flat, rc;
+  if (dim == 3) {
+    /* the isometric image in the plane, P1 at the origin: P0 -> (-|a|, 0),
+    ** P2 -> |c| (cos, sin) of the angle between a and c, so both legs keep
+    ** one rounding.  The angle from a and c each scaled by its own power
+    ** of two: a leg 2^-1000 of the other would make the products of a
+    ** common scale subnormal, and its direction a guess */
+    double a[3], c[3], as[3], cs[3], x[3], la, lc, lx, ma = 0, mc = 0;
+    int k, ea = 0, ec = 0, half = 0;
+    for (k = 0; k < 3; k++) {
+      a[k] = p[3 + k] - p[k];
+      c[k] = p[6 + k] - p[3 + k];
+      if (!isfinite(a[k]) || !isfinite(c[k])) half = 1;
+    }
+    /* a leg's norm is up to sqrt 3 times its largest part: quarters of
+    ** the points where a part nears DBL_MAX (exact but for subnormals,
+    ** nothing beside such legs) */
+    for (k = 0; k < 3; k++)
+      if (fabs(a[k]) > 0x1p1020 || fabs(c[k]) > 0x1p1020) half = 1;
+    for (k = 0; k < 3; k++) {
+      if (half) { a[k] = p[3 + k] / 4 - p[k] / 4; c[k] = p[6 + k] / 4 - p[3 + k] / 4; }
+      ma = fmax(ma, fabs(a[k]));
+      mc = fmax(mc, fabs(c[k]));
+    }
+    if (ma > 0) frexp(ma, &ea);
+    if (mc > 0) frexp(mc, &ec);
+    for (k = 0; k < 3; k++) { as[k] = ldexp(a[k], -ea); cs[k] = ldexp(c[k], -ec); }
+    x[0] = as[1] * cs[2] - as[2] * cs[1];
+    x[1] = as[2] * cs[0] - as[0] * cs[2];
+    x[2] = as[0] * cs[1] - as[1] * cs[0];
+    la = arclen_seg_norm(as, 3);
+    lc = arclen_seg_norm(cs, 3);
+    lx = arclen_seg_norm(x, 3);
+    /* a flat triangle: the same test as arclen_conic_degenerate's */
+    flat = !(la > 0) || !(lc > 0) || !(lx / la / lc > 16 * DBL_EPSILON);
+    if (!flat) {
+      q[0] = -ldexp(la, ea); q[1] = 0; q[2] = 0; q[3] = 0;
+      q[4] = ldexp(dot(as, cs, 3) / la, ec);
+      q[5] = ldexp(lx / la, ec);
+      rc = arclen_conic_length(q, w, &L, info);
+      /* EDOMAIN: the image is flat after all (a leg at the bottom of the
+      ** double range, 5e-324 beside 100, rounds its direction away) */
+      if (rc != ARCLEN_EDOMAIN) {
+        if (rc == ARCLEN_OK && half) L *= 4;
+        *len = rc == ARCLEN_OK ? L : NAN;
+        if (rc == ARCLEN_OK && !isfinite(L)) return ARCLEN_EOVERFLOW;
+        return rc;
+      }
+      flat = 1;
+    }
+  } else {
+    /* a leg's norm is up to sqrt 2 times its largest part: beyond 2^1020
+    ** the conic at a quarter (exact but for subnormals), or its legs'
+    ** norms overflow (and the flatness test with them) */
+    int k, big = 0;
+    for (k = 0; k < 4; k++)
+      if (!(fabs(p[k + 2] - p[k]) <= 0x1p1020)) big = 1;
+    for (k = 0; k < 6; k++) q[k] = big ? p[k] / 4 : p[k];
+    flat = arclen_conic_degenerate(q);
+    if (!flat) {
+      rc = arclen_conic_length(q, w, &L, info);
+      if (rc == ARCLEN_OK && big) {
+        L *= 4;
+        if (!isfinite(L)) rc = ARCLEN_EOVERFLOW;
+      }
+      *len = rc == ARCLEN_OK ? L : NAN;
+      return rc;
+    }
+  }
+  /* flat: the points on a line */
+  if (info) info->branch = "collinear";
+  L = ldexp(collinear_length(leg, dim, w), e);
+  *len = L;
+  return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
+}
+
+int arclen_rquad_length(const double *p, int dim, double t0, double t1,
+                        double *len, arclen_info *info) {
+  double q[10], sub[10], lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
+  int rc, k, half = 0;
+  *len = 0;
+  if (lo == hi) return ARCLEN_OK;
+  if (lo == 0 && hi == 1) {
+    rc = whole_length(p, dim, len, info);
+  } else {
+    /* the piece of the conic moved to P0 = 0 (the legs, one rounding each;
+    ** halved where they overflow): its control points are then rounded
+    ** relative to the arc's size, not to its distance from the origin */
+    for (k = 0; k < dim; k++) {
+      q[k] = 0;
+      q[dim + k] = p[dim + k] - p[k];
+      q[2 * dim + k] = p[2 * dim + k] - p[k];
+      if (!isfinite(q[dim + k]) || !isfinite(q[2 * dim + k])) half = 1;
+    }
+    for (k = 0; k < 2 * dim && !half; k++)
+      if (fabs(q[dim + k]) > 0x1p1000) half = 1;
+    /* legs near DBL_MAX: the piece measured at 1/16 (exact), so that its
+    ** polygon's sums stay finite, then scaled back */
+    if (half)
+      for (k = 0; k < dim; k++) {
+        q[dim + k] = p[dim + k] / 16 - p[k] / 16;
+        q[2 * dim + k] = p[2 * dim + k] / 16 - p[k] / 16;
+      }
+    q[3 * dim] = p[3 * dim];
+    arclen_rquad_sub(q, dim, lo, hi, sub);
+    rc = whole_length(sub, dim, len, info);
+    if (rc == ARCLEN_OK && half) {
+      *len *= 16;
+      if (!isfinite(*len)) rc = ARCLEN_EOVERFLOW;
+    }
+  }
+  if (rc == ARCLEN_OK && t1 < t0) *len = -*len;
+  return rc;
+}

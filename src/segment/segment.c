@@ -1,0 +1,316 @@
+/*
+** segment.c -- segments of four kinds (line, quad, cubic, conic) behind one
+** call each: names and letters, checks, and the dispatch by kind of length,
+** time, many times, point, derivative, tangent and sub-range.  Cubics go
+** to the method asked for (the default method unless told), the other
+** kinds to line.c, quad.c and conic_seg.c, their times to invert.c.
+*/
+#include <math.h>
+#include <string.h>
+
+#include "arclen.h"
+#include "segment/segment.h"
+
+static const char *const names[ARCLEN_SEG_NKINDS] = {
+  "line", "quad", "cubic", "conic"
+};
+static const char letters[ARCLEN_SEG_NKINDS] = {'L', 'Q', 'C', 'R'};
+
+int arclen_segment_kind(const char *name) {
+  int k;
+  for (k = 0; name != NULL && k < ARCLEN_SEG_NKINDS; k++)
+    if (strcmp(name, names[k]) == 0) return k;
+  return -1;
+}
+
+int arclen_segment_kind_of_letter(int letter) {
+  int k;
+  for (k = 0; k < ARCLEN_SEG_NKINDS; k++)
+    if (letter == letters[k]) return k;
+  return -1;
+}
+
+const char *arclen_segment_kind_name(int kind) {
+  return kind >= 0 && kind < ARCLEN_SEG_NKINDS ? names[kind] : NULL;
+}
+
+int arclen_segment_letter(int kind) {
+  return kind >= 0 && kind < ARCLEN_SEG_NKINDS ? letters[kind] : 0;
+}
+
+int arclen_segment_count(int kind, int dim) {
+  if (dim != 2 && dim != 3) return 0;
+  switch (kind) {
+  case ARCLEN_SEG_LINE: return 2 * dim;
+  case ARCLEN_SEG_QUAD: return 3 * dim;
+  case ARCLEN_SEG_CUBIC: return 4 * dim;
+  case ARCLEN_SEG_CONIC: return 3 * dim + 1;
+  default: return 0;
+  }
+}
+
+int arclen_segment_check(int kind, int dim, const double *seg) {
+  int i, n;
+  if (kind < 0 || kind >= ARCLEN_SEG_NKINDS) return ARCLEN_EDOMAIN;
+  if (dim != 2 && dim != 3) return ARCLEN_EDIM;
+  n = arclen_segment_count(kind, dim);
+  {
+    /* x - x is 0 for a finite x, NaN for inf and NaN: one test in all */
+    double z = 0;
+    for (i = 0; i < n; i++) z += seg[i] - seg[i];
+    if (z != 0) return ARCLEN_EINVAL;
+  }
+  if (kind == ARCLEN_SEG_CONIC && !(seg[3 * dim] > 0)) return ARCLEN_EINVAL;
+  return ARCLEN_OK;
+}
+
+/* The options' shared checks for the kinds that are not cubics. */
+static int check_opts(const arclen_opts *o) {
+  if (!(o->rtol >= ARCLEN_RTOL_MIN && o->rtol <= ARCLEN_RTOL_MAX))
+    return ARCLEN_ETOL;
+  if (!(o->t0 >= 0 && o->t0 <= 1 && o->t1 >= 0 && o->t1 <= 1))
+    return ARCLEN_ERANGE;
+  return ARCLEN_OK;
+}
+
+/* The length over [t0, t1] of a segment that is not a cubic. */
+static int plain_length(int kind, int dim, const double *seg, double t0,
+                        double t1, double *len, arclen_info *info) {
+  int gauss = 0, rc;
+  switch (kind) {
+  case ARCLEN_SEG_LINE:
+    rc = arclen_line_length(seg, dim, t0, t1, len);
+    if (info) info->branch = "line";
+    return rc;
+  case ARCLEN_SEG_QUAD:
+    rc = arclen_quad_length(seg, dim, t0, t1, len, &gauss);
+    if (info) {
+      info->branch = gauss ? "quad-gauss" : "quad";
+      info->evals += gauss ? 10 : 0;
+    }
+    return rc;
+  default:
+    return arclen_rquad_length(seg, dim, t0, t1, len, info);
+  }
+}
+
+int arclen_segment_length(int kind, int dim, const double *seg,
+                          const arclen_method *m, const arclen_opts *o,
+                          double *len, arclen_info *info) {
+  arclen_opts def;
+  int rc;
+  *len = NAN;
+  if (info) arclen_info_init(info);
+  if (o == NULL) { arclen_opts_init(&def); o = &def; }
+  rc = arclen_segment_check(kind, dim, seg);
+  if (rc != ARCLEN_OK) return rc;
+  if (kind == ARCLEN_SEG_CUBIC)
+    return m ? m->length(seg, dim, o, len, info)
+             : arclen_length_gauss(seg, dim, o, len, info);
+  rc = check_opts(o);
+  if (rc != ARCLEN_OK) return rc;
+  rc = plain_length(kind, dim, seg, o->t0, o->t1, len, info);
+  if (rc != ARCLEN_OK) *len = NAN;
+  return rc;
+}
+
+/* What invert.c needs of a segment. */
+typedef struct seg_ctx { int kind, dim; const double *seg; } seg_ctx;
+
+static int len_to(const void *ctx, double t, double *len) {
+  const seg_ctx *c = (const seg_ctx *)ctx;
+  return plain_length(c->kind, c->dim, c->seg, 0, t, len, NULL);
+}
+
+/* The speed for Newton's step: the kind's derivative itself (plain_time
+** has brought the points within 2^+-500 already, so nothing overflows). */
+static double speed_at(const void *ctx, double t) {
+  const seg_ctx *c = (const seg_ctx *)ctx;
+  double d[3];
+  if (c->kind == ARCLEN_SEG_QUAD) arclen_quad_derivative(c->seg, c->dim, t, d);
+  else arclen_rquad_derivative(c->seg, c->dim, t, d);
+  return arclen_seg_norm(d, c->dim);
+}
+
+/* The time at s on a segment that is not a cubic, whose length is total. */
+static int plain_time(int kind, int dim, const double *seg, double total,
+                      double s, double rtol, double *t, long *evals) {
+  seg_ctx c;
+  double scaled[ARCLEN_SEG_MAXN], mx = 0;
+  int i, n = arclen_segment_count(kind, dim) - (kind == ARCLEN_SEG_CONIC);
+  if (kind == ARCLEN_SEG_LINE) {     /* t uniform: s(t) = t L */
+    *t = !(s > 0) ? 0 : !(s < total) ? 1 : s / total;
+    if (evals) *evals = 0;
+    return ARCLEN_OK;
+  }
+  c.kind = kind; c.dim = dim; c.seg = seg;
+  for (i = 0; i < n; i++) mx = fmax(mx, fabs(seg[i]));
+  if (mx > 0 && (mx < 0x1p-500 || mx > 0x1p500)) {
+    /* far from 1 (subnormal lengths come in steps of 2^-1074): the same
+    ** curve scaled by a power of two, exactly but for parts below 2^-1022
+    ** of the largest */
+    int e;
+    frexp(mx, &e);
+    for (i = 0; i < n; i++) scaled[i] = ldexp(seg[i], -e);
+    if (kind == ARCLEN_SEG_CONIC) scaled[n] = seg[n];
+    c.seg = scaled;
+    total = ldexp(total, -e);
+    s = ldexp(s, -e);
+  }
+  return arclen_seg_invert(len_to, speed_at, &c, total, s, rtol * total, t,
+                           evals);
+}
+
+int arclen_segment_time(int kind, int dim, const double *seg, double s,
+                        const arclen_method *m, const arclen_opts *o,
+                        double *t, arclen_info *info) {
+  arclen_opts def;
+  double total;
+  long evals = 0;
+  int rc;
+  *t = NAN;
+  if (info) arclen_info_init(info);
+  if (o == NULL) { arclen_opts_init(&def); o = &def; }
+  rc = arclen_segment_check(kind, dim, seg);
+  if (rc != ARCLEN_OK) return rc;
+  if (isnan(s)) return ARCLEN_EINVAL;
+  if (kind == ARCLEN_SEG_CUBIC) {
+    if (m == NULL) return arclen_time_gauss(seg, dim, s, o, t, info);
+    if (m->time == NULL) return ARCLEN_EDOMAIN;
+    return m->time(seg, dim, s, o, t, info);
+  }
+  rc = check_opts(o);
+  if (rc != ARCLEN_OK) return rc;
+  if (o->t0 != 0 || o->t1 != 1) return ARCLEN_ERANGE;
+  rc = plain_length(kind, dim, seg, 0, 1, &total, info);
+  if (rc == ARCLEN_OK)
+    rc = plain_time(kind, dim, seg, total, s, o->rtol, t, &evals);
+  if (info) info->pieces = evals;
+  if (rc != ARCLEN_OK) *t = NAN;
+  return rc;
+}
+
+int arclen_segment_times(int kind, int dim, const double *seg,
+                         const double *s, long n, double rtol, double *t,
+                         double *pts, double *tan) {
+  double total, prev = -HUGE_VAL;
+  long i;
+  int rc = arclen_segment_check(kind, dim, seg);
+  if (rc != ARCLEN_OK) return rc;
+  if (kind == ARCLEN_SEG_CUBIC)
+    return arclen_times(seg, dim, s, n, rtol, t, pts, tan);
+  if (n < 0) return ARCLEN_EDOMAIN;
+  if (!(rtol >= ARCLEN_RTOL_MIN && rtol <= ARCLEN_RTOL_MAX)) return ARCLEN_ETOL;
+  for (i = 0; i < n; i++) {
+    if (isnan(s[i])) {
+      for (i = 0; i < n; i++) t[i] = NAN;
+      return ARCLEN_EINVAL;
+    }
+    if (s[i] < prev) return ARCLEN_EDOMAIN;
+    prev = s[i];
+  }
+  rc = plain_length(kind, dim, seg, 0, 1, &total, NULL);
+  if (rc != ARCLEN_OK) return rc;
+  for (i = 0; i < n; i++) {
+    rc = plain_time(kind, dim, seg, total, s[i], rtol, t + i, NULL);
+    if (rc != ARCLEN_OK) return rc;
+    /* each found on its own: keep them ascending as s is */
+    if (i > 0 && t[i] < t[i - 1]) t[i] = t[i - 1];
+    if (pts) arclen_segment_point(kind, dim, seg, t[i], pts + dim * i);
+    if (tan) arclen_segment_unit_tangent(kind, dim, seg, t[i], tan + dim * i);
+  }
+  return ARCLEN_OK;
+}
+
+void arclen_segment_point(int kind, int dim, const double *seg, double t,
+                          double *p) {
+  switch (kind) {
+  case ARCLEN_SEG_LINE: arclen_line_point(seg, dim, t, p); break;
+  case ARCLEN_SEG_QUAD: arclen_quad_point(seg, dim, t, p); break;
+  case ARCLEN_SEG_CUBIC: arclen_point(seg, dim, t, p); break;
+  default: arclen_rquad_point(seg, dim, t, p); break;
+  }
+}
+
+/* seg's points scaled by 2^-e into copy when they lie beyond 2^+-500
+** (e = 0 and a plain copy otherwise): differences of points near DBL_MAX
+** then neither overflow nor meet inf - inf.  Returns e. */
+static int scaled_copy(int kind, int dim, const double *seg, double *copy) {
+  int i, e = 0, n = arclen_segment_count(kind, dim);
+  int np = kind == ARCLEN_SEG_CONIC ? n - 1 : n;
+  double mx = 0;
+  for (i = 0; i < np; i++) mx = fmax(mx, fabs(seg[i]));
+  if (mx > 0x1p500 || (mx > 0 && mx < 0x1p-500)) frexp(mx, &e);
+  for (i = 0; i < n; i++) copy[i] = i < np ? ldexp(seg[i], -e) : seg[i];
+  return e;
+}
+
+void arclen_segment_derivative(int kind, int dim, const double *seg,
+                               double t, double *d) {
+  double c[ARCLEN_SEG_MAXN];
+  int k, e;
+  if (kind == ARCLEN_SEG_CUBIC) { arclen_derivative(seg, dim, t, d); return; }
+  e = scaled_copy(kind, dim, seg, c);
+  switch (kind) {
+  case ARCLEN_SEG_LINE: arclen_line_derivative(c, dim, d); break;
+  case ARCLEN_SEG_QUAD: arclen_quad_derivative(c, dim, t, d); break;
+  default: arclen_rquad_derivative(c, dim, t, d); break;
+  }
+  for (k = 0; e != 0 && k < dim; k++) d[k] = ldexp(d[k], e);
+}
+
+/* v / |v| into v, or 0 (v zero); returns the norm. */
+static double normalize(double *v, int dim) {
+  double n = arclen_seg_norm(v, dim);
+  int k;
+  for (k = 0; k < dim; k++) v[k] = n > 0 ? v[k] / n : 0;
+  return n;
+}
+
+void arclen_segment_unit_tangent(int kind, int dim, const double *seg0,
+                                 double t, double *v) {
+  double seg[ARCLEN_SEG_MAXN];
+  int k;
+  if (kind == ARCLEN_SEG_CUBIC) { arclen_unit_tangent(seg0, dim, t, v); return; }
+  scaled_copy(kind, dim, seg0, seg);     /* a direction: the scale is free */
+  arclen_segment_derivative(kind, dim, seg, t, v);
+  if (normalize(v, dim) > 0 || kind == ARCLEN_SEG_LINE) return;
+  if (kind == ARCLEN_SEG_QUAD) {
+    /* v(t) = 0 at t: the direction on leaving is b (arriving at t = 1,
+    ** the motion is along -b), b = P2 - 2 P1 + P0 */
+    for (k = 0; k < dim; k++) {
+      v[k] = seg[2 * dim + k] - 2 * seg[dim + k] + seg[k];
+      if (t == 1) v[k] = -v[k];
+    }
+    normalize(v, dim);
+    return;
+  }
+  {
+    /* the conic's numerator n(t) = w (1-t)^2 a + t (1-t) k + w t^2 c
+    ** vanishes: its derivative's direction (negated at t = 1), then its
+    ** second derivative's */
+    double w = seg[3 * dim], s = 1 - t;
+    for (k = 0; k < dim; k++) {
+      double a = seg[dim + k] - seg[k], c = seg[2 * dim + k] - seg[dim + k];
+      double kk = seg[2 * dim + k] - seg[k];
+      v[k] = -2 * w * s * a + (1 - 2 * t) * kk + 2 * w * t * c;
+      if (t == 1) v[k] = -v[k];
+    }
+    if (normalize(v, dim) > 0) return;
+    for (k = 0; k < dim; k++) {
+      double a = seg[dim + k] - seg[k], c = seg[2 * dim + k] - seg[dim + k];
+      v[k] = w * a - (seg[2 * dim + k] - seg[k]) + w * c;
+    }
+    normalize(v, dim);
+  }
+}
+
+void arclen_segment_sub(int kind, int dim, const double *seg, double t0,
+                        double t1, double *out) {
+  switch (kind) {
+  case ARCLEN_SEG_LINE: arclen_line_sub(seg, dim, t0, t1, out); break;
+  case ARCLEN_SEG_QUAD: arclen_quad_sub(seg, dim, t0, t1, out); break;
+  case ARCLEN_SEG_CUBIC: arclen_subcurve(seg, dim, t0, t1, out); break;
+  default: arclen_rquad_sub(seg, dim, t0, t1, out); break;
+  }
+}

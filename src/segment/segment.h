@@ -1,0 +1,50 @@
+/*
+** segment.h -- what the files of segment/ share: each kind's length over
+** [t0, t1], point and derivative, and the safeguarded inverse they all use.
+** Not part of the public API (arclen.h has the dispatch by kind).
+*/
+#ifndef ARCLEN_SEGMENT_H
+#define ARCLEN_SEGMENT_H
+
+/* Euclidean norm of v[0 .. dim-1] without overflow or underflow. */
+double arclen_seg_norm(const double *v, int dim);
+
+/* line.c: P0 P1 (2 dim numbers). */
+int arclen_line_length(const double *p, int dim, double t0, double t1,
+                       double *len);
+void arclen_line_point(const double *p, int dim, double t, double *out);
+void arclen_line_derivative(const double *p, int dim, double *out);
+void arclen_line_sub(const double *p, int dim, double t0, double t1,
+                     double *out);
+
+/* quad.c: P0 P1 P2 (3 dim numbers).  *gauss (may be NULL) is set to 1
+** when the short Gauss rule was used instead of the closed form. */
+int arclen_quad_length(const double *p, int dim, double t0, double t1,
+                       double *len, int *gauss);
+void arclen_quad_point(const double *p, int dim, double t, double *out);
+void arclen_quad_derivative(const double *p, int dim, double t,
+                            double *out);
+void arclen_quad_sub(const double *p, int dim, double t0, double t1,
+                     double *out);
+
+/* conic_seg.c: P0 P1 P2 w (3 dim + 1 numbers). */
+int arclen_rquad_length(const double *p, int dim, double t0, double t1,
+                        double *len, arclen_info *info);
+void arclen_rquad_point(const double *p, int dim, double t, double *out);
+void arclen_rquad_derivative(const double *p, int dim, double t,
+                             double *out);
+void arclen_rquad_sub(const double *p, int dim, double t0, double t1,
+                      double *out);
+
+/* invert.c: the t in [0, 1] with |len(0, t) - s| <= tol, for len(0, t)
+** increasing with derivative speed(t) >= 0: Newton's method kept inside
+** a shrinking bracket, bisection when a step leaves it (capped).  total
+** is len(0, 1).  Returns 0 or the length function's error code; *evals
+** (may be NULL) counts length evaluations. */
+typedef int (*arclen_seg_lenfn)(const void *ctx, double t, double *len);
+typedef double (*arclen_seg_speedfn)(const void *ctx, double t);
+int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
+                      const void *ctx, double total, double s, double tol,
+                      double *t, long *evals);
+
+#endif
