@@ -551,6 +551,7 @@ static void job_pathdata(sink *s) {
       arclen_pathdata pd;
       int rc;
       arclen_pathdata_init(&pd);
+      pd.arcs = ARCLEN_PD_ARCS_CUBICS;   /* measured below as cubics */
       rc = arclen_pathdata_parse(&pd, D[i], strlen(D[i]), t == 1 ? 1e-4 : 1e-12,
                                  t == 2 ? T : NULL);
       put_l(s, rc);
@@ -678,6 +679,7 @@ static void job_svgdoc(sink *s) {
       o.stroked = v;
       o.max_depth = SVGDOC_MAX_DEPTH;
       o.uses = 1;
+      o.arcs = ARCLEN_PD_ARCS_CUBICS;     /* measured below as cubics */
       put_s(s, docs[i].name);
       D = svgdoc_new(&o);
       if (D == NULL) {
@@ -745,6 +747,7 @@ static int build_shared(void) {
   arclen_fit_opts_init(&o);
   o.tol = 1e-9;
   arclen_pathdata_init(&shared_pd);
+  shared_pd.arcs = ARCLEN_PD_ARCS_CUBICS;     /* measured as cubics */
   if (arclen_fit_build(CURVES2[0], 2, &o, &shared_fit, shared_spans,
                        ARCLEN_FIT_MAXSPANS) != 0 ||
       arclen_pathdata_parse(&shared_pd, d, strlen(d), 1e-12, NULL) != ARCLEN_PD_OK)
@@ -757,6 +760,7 @@ static int build_shared(void) {
     so.hidden = so.stroked = 0;
     so.max_depth = SVGDOC_MAX_DEPTH;
     so.uses = 1;
+    so.arcs = ARCLEN_PD_ARCS_CUBICS;
     shared_doc = svgdoc_new(&so);
     if (shared_doc == NULL || svgdoc_feed(shared_doc, DOCS[0], strlen(DOCS[0])) != 0 ||
         svgdoc_finish(shared_doc) != 0)

@@ -3,7 +3,8 @@
 ** module arclen.svgdoc, a shared object of its own because it links
 ** libexpat, which arclen.core does without.  arclen.svg is its user.
 **   svgdoc.new(opts) -> reader    opts: arc_tol, unit_px (0: user units),
-**                                 hidden, stroked, max_depth, uses
+**                                 hidden, stroked, max_depth, uses, arcs
+**                                 ("conics", the default, or "cubics")
 **   reader:feed(s)                the next bytes of the document
 **   reader:finish(name) -> {elements =, warnings =, skipped =, kept =,
 **                           width =, height =, viewbox =}
@@ -13,6 +14,8 @@
 ** arclen.core.svg_pathdata returns them).  Warnings come formatted as
 ** "NAME:LINE:COL: message".
 */
+#include <string.h>
+
 #include "lua/binding.h"
 #include "svgdoc/svgdoc.h"
 
@@ -69,6 +72,16 @@ static int l_new(lua_State *L) {
   o.hidden = opt_boolean(L, "hidden");
   o.stroked = opt_boolean(L, "stroked");
   o.uses = opt_boolean(L, "uses");
+  lua_getfield(L, 1, "arcs");
+  o.arcs = ARCLEN_PD_ARCS_CONICS;
+  if (!lua_isnil(L, -1)) {
+    const char *a = lua_tostring(L, -1);
+    if (lua_type(L, -1) != LUA_TSTRING ||
+        (strcmp(a, "conics") != 0 && strcmp(a, "cubics") != 0))
+      luaL_argerror(L, 1, "arcs must be \"conics\" or \"cubics\"");
+    if (strcmp(a, "cubics") == 0) o.arcs = ARCLEN_PD_ARCS_CUBICS;
+  }
+  lua_pop(L, 1);
   D = (svgdoc **)lua_newuserdata(L, sizeof *D);
   *D = NULL;
   luaL_getmetatable(L, READER);

@@ -259,8 +259,8 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
   /* kept before the parse, so that svgdoc_free frees its cubics */
   D->all = grow(D, D->all, &D->all_room, D->nall, sizeof *D->all);
   D->all[D->nall++] = e;
-  if (arclen_pathdata_parse(&e->pd, d, strlen(d), D->o.arc_tol,
-                            identity ? NULL : C) != ARCLEN_PD_OK) {
+  if (svgdoc_shape_parse(D, &e->pd, tag, d, identity ? NULL : C) !=
+      ARCLEN_PD_OK) {
     const char *m = shape_size_message(D, &e->pd, tag, atts);
     if (m == NULL) {
       m = pathdata_message(D, &e->pd, d);

@@ -4,7 +4,10 @@
 ** rx and ry), circle and ellipse (10.3, 10.4: four arcs from (cx + rx, cy)
 ** in the positive angle direction), line (10.5), polyline and polygon
 ** (10.6, 10.7).  Numbers are written with 17 significant digits, so the
-** path data reads back to the same doubles.
+** path data reads back to the same doubles; its arcs are quarters of
+** axis-aligned ellipses from corner to corner, so the reader makes each
+** the exact conic through its box's corner (ARCLEN_PD_ARCS_QUARTERS):
+** the shape's points rounded once are the only rounding.
 */
 #include <string.h>
 
@@ -160,4 +163,12 @@ const char *svgdoc_shape_data(svgdoc *D, unsigned long line,
     return points_data(D, line, col, atts, 1);
   }
   return svgdoc_strdup(D, b->s, b->len);
+}
+
+int svgdoc_shape_parse(svgdoc *D, arclen_pathdata *pd, const char *tag,
+                       const char *d, const double *T) {
+  if (D->o.arcs == ARCLEN_PD_ARCS_CUBICS) pd->arcs = ARCLEN_PD_ARCS_CUBICS;
+  else if (strcmp(tag, "path") == 0) pd->arcs = ARCLEN_PD_ARCS_CONICS;
+  else pd->arcs = ARCLEN_PD_ARCS_QUARTERS;     /* this file's own data */
+  return arclen_pathdata_parse(pd, d, strlen(d), D->o.arc_tol, T);
 }
