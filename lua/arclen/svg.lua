@@ -21,6 +21,7 @@
 -- doc/svg.md lists the semantic choices made where the specification leaves
 -- room.
 local path = require("arclen.path")
+local svgpath = require("arclen.svgpath")
 local core = require("arclen.engine")
 
 -- The reader is an optional part (it links libexpat; the core does not):
@@ -100,7 +101,7 @@ end
 -- Read the document from next_chunk() (nil at the end): the C reader's
 -- results, each drawn element with its arclen.path.
 local function run(o, name, next_chunk, uses)
-  local r = svgdoc.new({arc_tol = o.arc_tol or o.tol, hidden = o.hidden,
+  local r = svgdoc.new({arc_tol = o.arc_tol or o.tol, hidden = o.hidden, arcs = o.arcs,
     stroked = o.stroked, max_depth = o.max_depth or MAX_DEPTH, uses = uses,
     unit_px = o.units ~= "user" and UNITS[o.units] or 0})
   for _ = 1, huge do
@@ -124,7 +125,7 @@ local function run(o, name, next_chunk, uses)
 end
 
 -- The options of read and parse: tol, arc_tol, method, units, hidden,
--- stroked, measure, max_depth.
+-- stroked, measure, max_depth, arcs.
 local function argerror4(n, fname, msg) argerror(n, fname, msg, 5) end
 
 local function read_opts(opts, fname)
@@ -143,6 +144,8 @@ local function read_opts(opts, fname)
       if v ~= "user" and not UNITS[v] then
         argerror4(2, fname, format("unknown units '%s' (user, px, mm, cm, in, pt, pc)", tostring(v)))
       end
+    elseif k == "arcs" then
+      if v ~= "conics" and v ~= "cubics" then argerror4(2, fname, 'arcs must be "conics" or "cubics"') end
     elseif k == "hidden" or k == "stroked" or k == "measure" then
       if type(v) ~= "boolean" then argerror4(2, fname, k .. " must be a boolean") end
     elseif k == "max_depth" then
@@ -236,40 +239,12 @@ end
 
 -- ---- stat: what vpype stat prints ----------------------------------------
 
--- The extremes of one coordinate of a cubic (p0..p3) on [0, 1].
-local function cubic_range(p0, p1, p2, p3)
-  local lo, hi = math.min(p0, p3), math.max(p0, p3)
-  -- B'(t)/3 = a t^2 + b t + c
-  local a = -p0 + 3 * p1 - 3 * p2 + p3
-  local b = 2 * (p0 - 2 * p1 + p2)
-  local c = p1 - p0
-  local function at(t)
-    if t > 0 and t < 1 then
-      local u = 1 - t
-      local v = u * u * u * p0 + 3 * u * u * t * p1 + 3 * u * t * t * p2 + t * t * t * p3
-      if v < lo then lo = v end
-      if v > hi then hi = v end
-    end
-  end
-  if abs(a) < 1e-300 then
-    if b ~= 0 then at(-c / b) end
-  else
-    local disc = b * b - 4 * a * c
-    if disc >= 0 then
-      local q = -0.5 * (b + (b >= 0 and 1 or -1) * sqrt(disc))
-      at(q / a)
-      if q ~= 0 then at(c / q) end
-    end
-  end
-  return lo, hi
-end
-
 -- svg.stat(doc) -> {layers = {{name, length, travel, paths, elements,
 -- segments, bbox = {x0, y0, x1, y1}}...}, total = {same fields}}.  paths
 -- counts subpaths (vpype reads each subpath as a line), elements the drawn
--- elements, segments the cubics.  Pen-up travel: from each subpath's end
--- to the next subpath's start in the layer, in document order (vpype's
--- pen-up length).  bbox: the exact bounding box of the curves.
+-- elements, segments the segments as drawn (a circle: four conics).
+-- Pen-up travel: from each subpath's end to the next subpath's start in
+-- the layer, in document order (vpype's pen-up length).  bbox: the exact bounding box of the curves.
 function M.stat(doc)
   if type(doc) ~= "table" or type(doc.elements) ~= "table" then
     argerror(1, "arclen.svg.stat", "a document (from arclen.svg.read or parse) expected")
@@ -295,18 +270,16 @@ function M.stat(doc)
     L.paths = L.paths + p.nsub
     L.segments = L.segments + p.n
     for j = 1, p.nsub do
-      local first, last = p:segment(p.first[j]), p:segment(p.first[j + 1] - 1)
+      local first = p:segment(p.first[j])
+      local last, lastkind = p:segment(p.first[j + 1] - 1)
       if L.endx then
         local dx, dy = first[1] - L.endx, first[2] - L.endy
         L.travel = L.travel + sqrt(dx * dx + dy * dy)
       end
-      L.endx, L.endy = last[7], last[8]
+      L.endx, L.endy = svgpath.segment_end(last, lastkind)
     end
     for k = 1, p.n do
-      local c = p:segment(k)
-      local x0, x1 = cubic_range(c[1], c[3], c[5], c[7])
-      local y0, y1 = cubic_range(c[2], c[4], c[6], c[8])
-      box_add(L.box, x0, y0, x1, y1)
+      box_add(L.box, svgpath.segment_box(p:segment(k)))
     end
   end
   local total = {name = "total", length = 0, travel = 0, paths = 0, elements = 0, segments = 0, box = {}}
