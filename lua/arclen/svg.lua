@@ -73,8 +73,8 @@ end
 local function largest_coordinate(p)
   local top = 0
   for k = 1, p.n do
-    local c = p:segment(k)
-    for j = 1, 8 do
+    local c, kind = p:segment(k)
+    for j = 1, #c - (kind == "conic" and 1 or 0) do   -- a conic's weight is no coordinate
       local v = abs(c[j])
       if v > top and v ~= huge then top = v end
     end
