@@ -52,6 +52,8 @@ options:
                   viewBox mapped onto width/height, 96 px per inch), mm, cm, in, pt, pc
   --stroked       SVG documents: only shapes with a stroke (for plotters)
   --hidden        SVG documents: also display:none and visibility:hidden shapes
+  --arcs A        SVG documents: conics (default: segments as drawn, arcs exact)
+                  or cubics (cubics only, arcs within the tolerance)
   --json          print results as JSON
   -h, --help      this text
 
@@ -82,7 +84,7 @@ local function fail(msg, status)
 end
 
 local VALUED = {["--method"] = true, ["--tol"] = true, ["--step"] = true, ["--n"] = true,
-                ["--units"] = true}
+                ["--units"] = true, ["--arcs"] = true}
 local FLAGS = {["--json"] = "json", ["--stroked"] = "stroked", ["--hidden"] = "hidden"}
 
 -- Split argv into options and positional arguments.
@@ -209,6 +211,12 @@ local function svg_opts(opts)
   end
   if opts.stroked then o.stroked = true end
   if opts.hidden then o.hidden = true end
+  if opts.arcs then
+    if opts.arcs ~= "conics" and opts.arcs ~= "cubics" then
+      fail(format("--arcs: '%s' is neither conics nor cubics", opts.arcs), 2)
+    end
+    o.arcs = opts.arcs
+  end
   return o
 end
 
