@@ -1,9 +1,9 @@
 /*
 ** fuzz_svgdoc.c -- the SVG document reader (svgdoc/, over expat) on
 ** fuzzed documents.  The first byte picks the options (hidden, stroked,
-** units, whether <use> subtrees are kept, a small nesting cap), the second
-** where the document is cut in two for streaming; the rest is the
-** document.  Invariants: an error has a message; a document read has
+** units, whether <use> subtrees are kept, a small nesting cap, arcs as
+** conics or cubics), the second where the document is cut in two for
+** streaming; the rest is the document.  Invariants: an error has a message; a document read has
 ** finite CTMs, subpaths that tile their cubics, at most the caps of
 ** elements and warnings; and the same document fed in one piece gives the
 ** same outcome: the same message at the same place, or the same elements
@@ -90,6 +90,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   o.unit_px = UNITS[(data[0] >> 3) & 3];
   o.uses = (data[0] >> 5) & 1;
   o.max_depth = (data[0] >> 6) == 3 ? 8 : SVGDOC_MAX_DEPTH;
+  o.arcs = (data[0] >> 7) ? ARCLEN_PD_ARCS_CUBICS : ARCLEN_PD_ARCS_CONICS;
   cut = n ? data[1] * n / 256 : 0;
   A = read_doc(&o, s, n, cut, &ra);
   if (ra != 0 && svgdoc_error(A, &line, &col) == NULL)
