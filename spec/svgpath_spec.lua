@@ -438,6 +438,89 @@ describe("svg path data: lengths against mpmath (spec/data/paths.tsv)", function
   end
 end)
 
+describe("the basic shapes' records (arclen.svgdoc)", function()
+  local has_doc, svgdoc = pcall(require, "arclen.svgdoc")
+  local function elements(body, arcs)
+    local r = svgdoc.new({arcs = arcs})
+    r:feed('<svg xmlns="http://www.w3.org/2000/svg">' .. body .. "</svg>")
+    return r:finish("shapes.svg").elements
+  end
+  local W = math.sqrt(0.5)
+  -- the quarters of the ellipse (cx, cy, rx, ry) from (cx + rx, cy) the
+  -- positive way: each point a correctly rounded sum of the attributes
+  -- (IEEE addition: the exact value rounded once), w = sqrt(1/2) rounded
+  local function quarters(cx, cy, rx, ry)
+    local E, N, Wx, S = cx + rx, cy + ry, cx - rx, cy - ry
+    return {{E, cy, E, N, cx, N, W}, {cx, N, Wx, N, Wx, cy, W},
+            {Wx, cy, Wx, S, cx, S, W}, {cx, S, E, S, E, cy, W}}
+  end
+  local M = {2, 0.5, -0.3, 1.2, 5, -7}
+  local function mapped(q)
+    local out = {}
+    for i = 1, 5, 2 do
+      out[i] = M[1] * q[i] + M[3] * q[i + 1] + M[5]
+      out[i + 1] = M[2] * q[i] + M[4] * q[i + 1] + M[6]
+    end
+    out[7] = q[7]
+    return out
+  end
+
+  it("circle and ellipse: four quarter conics through their boxes' corners, exact", function()
+    if not has_doc then return print("  (arclen.svgdoc not built)") end
+    local E = elements('<circle cx="0.1" cy="-0.7" r="0.2"/><ellipse cx="1" cy="2" rx="7" ry="2"/>'
+      .. '<ellipse rx="1e6" ry="1e-6" cy="0.3"/>')
+    local want = {quarters(0.1, -0.7, 0.2, 0.2), quarters(1, 2, 7, 2), quarters(0, 0.3, 1e6, 1e-6)}
+    for k, e in ipairs(E) do
+      assert.are.equal("RRRR", e.subpaths.kinds)
+      assert.is_true(e.subpaths[1].closed)
+      local r = records(e.subpaths)
+      for j = 1, 4 do same(r[j], "R", want[k][j]) end
+    end
+    -- on the circle: |p - c| = r at every t, to rounding
+    local worst = 0
+    for _, q in ipairs(records(E[1].subpaths)) do
+      for i = 0, 16 do
+        local x, y = conic_point(q, i / 16)
+        worst = math.max(worst, math.abs(math.sqrt((x - 0.1) ^ 2 + (y + 0.7) ^ 2) - 0.2))
+      end
+    end
+    assert.is_true(worst <= 4 * EPS, worst)
+  end)
+
+  it("rect with rounded corners: lines and quarter conics; line, polyline, polygon: lines", function()
+    if not has_doc then return print("  (arclen.svgdoc not built)") end
+    local E = elements('<rect x="1" y="2" width="10" height="6" rx="2" ry="1"/><rect width="3" height="4"/>'
+      .. '<line x1="1" y1="2" x2="7" y2="-3"/><polyline points="0,0 1,1 2,0"/><polygon points="0 0 4 0 4 3"/>')
+    assert.are.equal("LRLRLRLR", E[1].subpaths.kinds)
+    local r = records(E[1].subpaths)
+    same(r[1], "L", {3, 2, 9, 2})
+    same(r[2], "R", {9, 2, 11, 2, 11, 3, W})
+    same(r[4], "R", {11, 7, 11, 8, 9, 8, W})
+    same(r[8], "R", {1, 3, 1, 2, 3, 2, W})
+    assert.are.equal("LLLL", E[2].subpaths.kinds)
+    same(records(E[3].subpaths)[1], "L", {1, 2, 7, -3})
+    assert.are.equal("LL", E[4].subpaths.kinds)
+    assert.are.equal("LLL", E[5].subpaths.kinds)
+  end)
+
+  it("under a transform: the mapped records, and lengths against mpmath", function()
+    if not has_doc then return print("  (arclen.svgdoc not built)") end
+    local E = elements('<g transform="matrix(2 0.5 -0.3 1.2 5 -7)"><ellipse cx="1" cy="2" rx="7" ry="2"/>'
+      .. '<rect x="1" y="2" width="10" height="6" rx="2" ry="1"/><circle cx="0.1" cy="-0.7" r="0.2"/></g>')
+    local r = records(E[1].subpaths)
+    for j, q in ipairs(quarters(1, 2, 7, 2)) do same(r[j], "R", mapped(q)) end
+    -- the images' perimeters (mpmath, 40 digits: 4 a E(1 - b^2/a^2) of the
+    -- image's semi-axes, the singular values of M diag(rx, ry), plus the
+    -- rect's mapped sides); the conics' lengths are exact (Carlson)
+    local REF = {59.990719654954277182771412567845954, 52.7176577364810619171985217609811}
+    for k, want in ipairs(REF) do
+      local got = 0
+      for _, q in ipairs(records(E[k].subpaths)) do got = got + record_length(q, 1e-15) end
+      assert.is_true(math.abs(got - want) <= 4e-15 * want, ("%d: %.17g vs %.17g"):format(k, got, want))
+    end
+  end)
+end)
+
 describe("svg path data: errors give the position in the string", function()
   local function E(d) return H.error_of(path.svg, d) end
   local cases = {
