@@ -3,11 +3,12 @@
 ** fuzzed documents.  The first byte picks the options (hidden, stroked,
 ** units, whether <use> subtrees are kept, a small nesting cap, arcs as
 ** conics or cubics), the second where the document is cut in two for
-** streaming; the rest is the document.  Invariants: an error has a message; a document read has
-** finite CTMs, subpaths that tile their cubics, at most the caps of
-** elements and warnings; and the same document fed in one piece gives the
-** same outcome: the same message at the same place, or the same elements
-** with the same cubics, bit for bit (streaming changes nothing).
+** streaming; the rest is the document.  Invariants: an error has a
+** message; a document read has finite CTMs, subpaths that tile their
+** segments, at most the caps of elements and warnings; and the same
+** document fed in one piece gives the same outcome: the same message at
+** the same place, or the same elements with the same records, bit for bit
+** (streaming changes nothing).
 */
 #include <string.h>
 

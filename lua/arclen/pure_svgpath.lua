@@ -17,7 +17,7 @@
 local M = {}
 
 local format, byte, sub, find = string.format, string.byte, string.sub, string.find
-local huge, abs, sqrt, cos, sin, floor = math.huge, math.abs, math.sqrt, math.cos, math.sin, math.floor
+local huge, abs, sqrt, cos, sin = math.huge, math.abs, math.sqrt, math.cos, math.sin
 local ceil, fmod, max = math.ceil, math.fmod, math.max
 local PI = math.pi
 local EPS = 2.220446049250313e-16           -- DBL_EPSILON
