@@ -7,10 +7,11 @@
 ** stream (the elements handed over per feed, each checked and folded into
 ** a digest, then given back) in two pieces, and collected in one piece.
 ** Invariants: an error has a message; every element has a finite CTM,
-** subpaths that tile its cubics, a tag and its d; at most the caps of
+** subpaths that tile its segments, a tag and its d; at most the caps of
 ** elements and warnings; and both readings give the same outcome: the same
 ** message at the same place, or the same elements in the same order with
-** the same cubics, bit for bit (streaming and chunks change nothing).
+** the same records, bit for bit (streaming and chunks change nothing).
+** The second byte's lowest bit also chooses arcs as conics or cubics.
 */
 #include <string.h>
 
@@ -20,7 +21,7 @@
 static const double UNITS[4] = {0, 1, 96 / 25.4, 96.0 / 72};
 
 /* What the elements handed over come to: their count and an FNV-1a hash
-** of each one's place and cubics, in order. */
+** of each one's place, records and kinds, in order. */
 typedef struct digest {
   size_t count;
   unsigned long long h;
@@ -56,6 +57,7 @@ static void take(const svgdoc *D, digest *g) {
     fold(g, e->tag, strlen(e->tag));
     if (e->use) fold(g, e->use, strlen(e->use));
     if (e->pd.ncubics) fold(g, e->pd.cubics, 8 * e->pd.ncubics * sizeof(double));
+    if (e->pd.kinds) fold(g, e->pd.kinds, e->pd.ncubics);
   }
 }
 
@@ -125,6 +127,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   o.max_depth = (data[0] >> 6) == 3 ? 8 : SVGDOC_MAX_DEPTH;
   scan = (data[0] >> 6) == 2;
   o.max_held = 0;                        /* the default cap */
+  o.arcs = (data[1] & 1) ? ARCLEN_PD_ARCS_CUBICS : ARCLEN_PD_ARCS_CONICS;
   cut = n ? data[1] * n / 256 : 0;
   o.stream = 1;
   A = read_doc(&o, s, n, cut, scan, &ra, &ga);

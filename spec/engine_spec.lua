@@ -80,7 +80,7 @@ describe("the Lua engine's interface", function()
     assert.matches("arclen.metapost.path_arctime needs the C core", E(pure.metapost.path_arctime, {c}, 1))
     assert.matches("arclen.svg_arc needs the C core", E(pure.svg_arc))
     assert.matches("arclen.lengths3 needs the C core", E(pure.lengths3, {}))
-    local _, msg = pure.svg_pathdata("M0 0 A 5 5 0 0 1 10 0", 1e-12)
+    local _, msg = pure.svg_pathdata("M0 0 A 5 5 0 0 1 10 0", 1e-12, nil, "cubics")
     assert.matches("arcs need the C core", msg)
     -- a path names it when it measures
     assert.matches("needs the C core", E(pure.length, c, {method = "metapost"}))

@@ -73,8 +73,6 @@ describe("arclen.svg: bad documents, each a clear error naming the file and plac
      "^bad%.svg:1:" .. COL .. ": <ellipse>: the radii are out of range %(rx='1' ry='1e308'%)"},
     {"a rect whose corners are beyond the doubles", H .. '<rect width="1e308" height="1e308" rx="1e307"/></svg>',
      "^bad%.svg:1:" .. COL .. ": <rect>: the size is out of range %(width='1e308' height='1e308' rx='1e307'%)"},
-    {"an arc of path data beyond the doubles: its size, not a tolerance", H .. '<path d="M0 0 A1e308 1e308 0 0 1 1e308 1e308"/></svg>',
-     "^bad%.svg:1:" .. COL .. ": <path>: d: elliptical arc: the arc's size is out of range"},
     {"skewX(90)", H .. '<path transform="skewX(90)" d="M0 0 L0 1"/></svg>',
      "^bad%.svg:1:" .. COL .. ": transform='skewX%(90%)': skewX%(90%) is undefined %(a skew angle must not be 90 degrees modulo 180%) at character 1$"},
     {"skewY(-90) after another function", H .. '<g transform="translate(1) skewY(-90)"/></svg>',
@@ -97,10 +95,20 @@ describe("arclen.svg: bad documents, each a clear error naming the file and plac
     assert.matches("^bad%.svg:1:" .. COL .. ": <path>: singular transform, not drawn$", doc.warnings[1])
   end)
 
+  it("an arc of path data beyond the doubles: as cubics its size, not a tolerance; as a conic exact", function()
+    local text = H .. '<path d="M0 0 A1e308 1e308 0 0 1 1e308 1e308"/></svg>'
+    assert.matches("^bad%.svg:1:" .. COL .. ": <path>: d: elliptical arc: the arc's size is out of range",
+      err_of(text, nil, {arcs = "cubics"}))
+    local e, doc = err_of(text)
+    assert.is_nil(e)
+    -- a quarter of the circle of radius 1e308: pi/2 1e308 (mpmath)
+    assert.is_true(math.abs(doc.total - 1.57079632679489661923132169164e308) <= 1e-12 * 1.6e308, doc.total)
+  end)
+
   it("no internal words in the errors of the measuring (tol, coordinate n, bad argument)", function()
     for _, t in ipairs{'<path d="M0 0 L1e308 0 L-1e308 0"/>', '<circle r="1e308"/>',
                        '<path d="M0 0 A1e308 1e308 0 0 1 1e308 1e308"/>'} do
-      local e = err_of(H .. t .. "</svg>")
+      local e = err_of(H .. t .. "</svg>", nil, {arcs = "cubics"})
       assert.is_string(e)
       assert.is_nil(e:find("tol must", 1, true), e)
       assert.is_nil(e:find("coordinate %d"), e)
@@ -259,8 +267,16 @@ describe("arclen.svgdoc (the reader arclen.svg drives) #svgdoc", function()
     local res = r:finish("x.svg")
     assert.are.equal(1, #res.elements)
     local c = require("arclen.core")._cubics(res.elements[1].subpaths.packed)[1]  -- the line
+    assert.are.same({0, 0, 3, 4, 0, 0, 0, 0}, c)
+    assert.are.equal("L", res.elements[1].subpaths.kinds)
+    r = svgdoc.new({arcs = "cubics"})                  -- today's cubics
+    r:feed('<svg xmlns="http://www.w3.org/2000/svg"><path d="M0 0 L3 4"/></svg>')
+    res = r:finish("x.svg")
+    c = require("arclen.core")._cubics(res.elements[1].subpaths.packed)[1]
     assert.are.same({0, 0, 3, 4}, {c[1], c[2], c[7], c[8]})
     assert.is_true(math.abs(c[3] - 1) < 1e-15 and math.abs(c[6] - 8 / 3) < 1e-15)
+    assert.is_nil(res.elements[1].subpaths.kinds)
+    assert.matches('#1 .*arcs must be "conics" or "cubics"', select(2, pcall(svgdoc.new, {arcs = "lines"})))
     assert.matches("finished", select(2, pcall(r.feed, r, "more")))
     assert.matches("finished", select(2, pcall(r.finish, r, "x.svg")))
   end)

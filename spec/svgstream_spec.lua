@@ -36,8 +36,9 @@ local function signature(e)
     tostring(e.stroked), ("%.17g"):format(e.length or -1), e.d, table.concat(e.ctm, ",")}
   local p = e.path
   for k = 1, p.n do
-    local c = p:segment(k)
-    for j = 1, 8 do t[#t + 1] = ("%.17g"):format(c[j]) end
+    local c, kind = p:segment(k)
+    t[#t + 1] = tostring(kind)
+    for j = 1, #c do t[#t + 1] = ("%.17g"):format(c[j]) end
   end
   return table.concat(t, " ")
 end

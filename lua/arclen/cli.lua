@@ -54,6 +54,8 @@ options:
   --hidden        SVG documents: also display:none and visibility:hidden shapes
   --quiet         no progress line (length and stat show one on a terminal
                   when a document takes more than a second)
+  --arcs A        SVG documents: conics (default: segments as drawn, arcs exact)
+                  or cubics (cubics only, arcs within the tolerance)
   --json          print results as JSON
   -h, --help      this text
 
@@ -86,7 +88,7 @@ local function fail(msg, status)
 end
 
 local VALUED = {["--method"] = true, ["--tol"] = true, ["--step"] = true, ["--n"] = true,
-                ["--units"] = true}
+                ["--units"] = true, ["--arcs"] = true}
 local FLAGS = {["--json"] = "json", ["--stroked"] = "stroked", ["--hidden"] = "hidden",
                ["--quiet"] = "quiet"}
 
@@ -214,6 +216,12 @@ local function svg_opts(opts)
   end
   if opts.stroked then o.stroked = true end
   if opts.hidden then o.hidden = true end
+  if opts.arcs then
+    if opts.arcs ~= "conics" and opts.arcs ~= "cubics" then
+      fail(format("--arcs: '%s' is neither conics nor cubics", opts.arcs), 2)
+    end
+    o.arcs = opts.arcs
+  end
   return o
 end
 

@@ -93,6 +93,8 @@ local function read_opts(opts, allowed)
       if not method_known(v) then return nil, format("unknown method '%s'", v) end
     elseif k == "cyclic" then
       if type(v) ~= "boolean" then return nil, "cyclic must be a boolean" end
+    elseif k == "arcs" then
+      if v ~= "conics" and v ~= "cubics" then return nil, 'arcs must be "conics" or "cubics"' end
     elseif k == "transform" then
       if type(v) ~= "table" or #v ~= 6 then
         return nil, "transform must be {a, b, c, d, e, f} (SVG's matrix(a b c d e f))"
@@ -452,8 +454,10 @@ end
 -- (arcs become cubics within a Hausdorff distance of arc_tol * max(rx, ry,
 -- chord / 2); default: tol), transform ({a, b, c, d, e, f}: the path's
 -- points mapped by SVG's matrix(a b c d e f); arcs keep their tolerance
--- after the mapping, relative to the size of the arc's image).
-local SVG_OPTS = {tol = true, method = true, arc_tol = true, transform = true}
+-- after the mapping, relative to the size of the arc's image), arcs
+-- ("conics", the default: lines, quadratics, cubics and arcs as conics,
+-- exactly; "cubics": cubics only, arcs within arc_tol; svgpath.lua).
+local SVG_OPTS = {tol = true, method = true, arc_tol = true, transform = true, arcs = true}
 local function from_svg(d, opts)
   local fname = "arclen.path.svg"
   if type(d) ~= "string" then
@@ -461,7 +465,8 @@ local function from_svg(d, opts)
   end
   local o, msg = read_opts(opts, SVG_OPTS)
   if not o then argerror(2, fname, msg) end
-  return build_flat(parse_with(fname, svgpath.parse, d, o.arc_tol or o.tol, o.transform), o)
+  return build_flat(parse_with(fname, svgpath.parse, d, o.arc_tol or o.tol, o.transform,
+    o.arcs), o)
 end
 
 -- arclen.path.mplib(knots [, opts]): an mplib path (a list of knots, or

@@ -27,6 +27,7 @@
 -- doc/svg.md lists the semantic choices made where the specification leaves
 -- room.
 local path = require("arclen.path")
+local svgpath = require("arclen.svgpath")
 local core = require("arclen.engine")
 
 -- The reader is an optional part (it links libexpat; the core does not):
@@ -79,8 +80,8 @@ end
 local function largest_coordinate(p)
   local top = 0
   for k = 1, p.n do
-    local c = p:segment(k)
-    for j = 1, 8 do
+    local c, kind = p:segment(k)
+    for j = 1, #c - (kind == "conic" and 1 or 0) do   -- a conic's weight is no coordinate
       local v = abs(c[j])
       if v > top and v ~= huge then top = v end
     end
@@ -110,7 +111,7 @@ end
 -- when o.measure) and given to on_element as soon as the reader hands it
 -- over.  Returns the document without its elements.
 local function stream(o, name, next_chunk, uses, scan, on_element, size)
-  local r = svgdoc.new({arc_tol = o.arc_tol or o.tol, hidden = o.hidden,
+  local r = svgdoc.new({arc_tol = o.arc_tol or o.tol, hidden = o.hidden, arcs = o.arcs,
     stroked = o.stroked, max_depth = o.max_depth or MAX_DEPTH, uses = uses,
     unit_px = o.units ~= "user" and UNITS[o.units] or 0, stream = true})
   if scan then
@@ -164,7 +165,8 @@ local function stream(o, name, next_chunk, uses, scan, on_element, size)
 end
 
 -- The options of read, parse and each: tol, arc_tol, method, units,
--- hidden, stroked, measure, max_depth, max_elements, progress; each's name.
+-- hidden, stroked, measure, max_depth, arcs, max_elements, progress; each's
+-- name.
 -- n: the options' argument position.
 local function read_opts(opts, fname, cap, n)
   n = n or 2
@@ -184,6 +186,8 @@ local function read_opts(opts, fname, cap, n)
       if v ~= "user" and not UNITS[v] then
         argerror4(2, fname, format("unknown units '%s' (user, px, mm, cm, in, pt, pc)", tostring(v)))
       end
+    elseif k == "arcs" then
+      if v ~= "conics" and v ~= "cubics" then argerror4(2, fname, 'arcs must be "conics" or "cubics"') end
     elseif k == "hidden" or k == "stroked" or k == "measure" then
       if type(v) ~= "boolean" then argerror4(2, fname, k .. " must be a boolean") end
     elseif k == "max_depth" then
@@ -329,34 +333,6 @@ end
 
 -- ---- stat: what vpype stat prints ----------------------------------------
 
--- The extremes of one coordinate of a cubic (p0..p3) on [0, 1].
-local function cubic_range(p0, p1, p2, p3)
-  local lo, hi = math.min(p0, p3), math.max(p0, p3)
-  -- B'(t)/3 = a t^2 + b t + c
-  local a = -p0 + 3 * p1 - 3 * p2 + p3
-  local b = 2 * (p0 - 2 * p1 + p2)
-  local c = p1 - p0
-  local function at(t)
-    if t > 0 and t < 1 then
-      local u = 1 - t
-      local v = u * u * u * p0 + 3 * u * u * t * p1 + 3 * u * t * t * p2 + t * t * t * p3
-      if v < lo then lo = v end
-      if v > hi then hi = v end
-    end
-  end
-  if abs(a) < 1e-300 then
-    if b ~= 0 then at(-c / b) end
-  else
-    local disc = b * b - 4 * a * c
-    if disc >= 0 then
-      local q = -0.5 * (b + (b >= 0 and 1 or -1) * sqrt(disc))
-      at(q / a)
-      if q ~= 0 then at(c / q) end
-    end
-  end
-  return lo, hi
-end
-
 local function box_add(b, x0, y0, x1, y1)
   if b[1] == nil then b[1], b[2], b[3], b[4] = x0, y0, x1, y1 return end
   if x0 < b[1] then b[1] = x0 end
@@ -388,18 +364,16 @@ function Stats:add(e)
   L.paths = L.paths + p.nsub
   L.segments = L.segments + p.n
   for j = 1, p.nsub do
-    local first, last = p:segment(p.first[j]), p:segment(p.first[j + 1] - 1)
+    local first = p:segment(p.first[j])
+    local last, lastkind = p:segment(p.first[j + 1] - 1)
     if L.endx then
       local dx, dy = first[1] - L.endx, first[2] - L.endy
       L.travel = L.travel + sqrt(dx * dx + dy * dy)
     end
-    L.endx, L.endy = last[7], last[8]
+    L.endx, L.endy = svgpath.segment_end(last, lastkind)
   end
   for k = 1, p.n do
-    local c = p:segment(k)
-    local x0, x1 = cubic_range(c[1], c[3], c[5], c[7])
-    local y0, y1 = cubic_range(c[2], c[4], c[6], c[8])
-    box_add(L.box, x0, y0, x1, y1)
+    box_add(L.box, svgpath.segment_box(p:segment(k)))
   end
 end
 
@@ -425,9 +399,9 @@ end
 -- svg.stat(doc) -> {layers = {{name, length, travel, paths, elements,
 -- segments, bbox = {x0, y0, x1, y1}}...}, total = {same fields}}.  paths
 -- counts subpaths (vpype reads each subpath as a line), elements the drawn
--- elements, segments the cubics.  Pen-up travel: from each subpath's end
--- to the next subpath's start in the layer, in document order (vpype's
--- pen-up length).  bbox: the exact bounding box of the curves.
+-- elements, segments the segments as drawn (a circle: four conics).
+-- Pen-up travel: from each subpath's end to the next subpath's start in
+-- the layer, in document order (vpype's pen-up length).  bbox: the exact bounding box of the curves.
 function M.stat(doc)
   if type(doc) ~= "table" or type(doc.elements) ~= "table" then
     argerror(1, "arclen.svg.stat", "a document (from arclen.svg.read or parse) expected")

@@ -551,6 +551,7 @@ static void job_pathdata(sink *s) {
       arclen_pathdata pd;
       int rc;
       arclen_pathdata_init(&pd);
+      pd.arcs = ARCLEN_PD_ARCS_CUBICS;   /* measured below as cubics */
       rc = arclen_pathdata_parse(&pd, D[i], strlen(D[i]), t == 1 ? 1e-4 : 1e-12,
                                  t == 2 ? T : NULL);
       put_l(s, rc);
@@ -680,6 +681,7 @@ static void job_svgdoc(sink *s) {
       o.uses = 1;
       o.stream = 0;                    /* collected: put_doc reads them all */
       o.max_held = 0;
+      o.arcs = ARCLEN_PD_ARCS_CUBICS;     /* measured below as cubics */
       put_s(s, docs[i].name);
       D = svgdoc_new(&o);
       if (D == NULL) {
@@ -747,6 +749,7 @@ static int build_shared(void) {
   arclen_fit_opts_init(&o);
   o.tol = 1e-9;
   arclen_pathdata_init(&shared_pd);
+  shared_pd.arcs = ARCLEN_PD_ARCS_CUBICS;     /* measured as cubics */
   if (arclen_fit_build(CURVES2[0], 2, &o, &shared_fit, shared_spans,
                        ARCLEN_FIT_MAXSPANS) != 0 ||
       arclen_pathdata_parse(&shared_pd, d, strlen(d), 1e-12, NULL) != ARCLEN_PD_OK)
@@ -761,6 +764,7 @@ static int build_shared(void) {
     so.uses = 1;
     so.stream = 0;
     so.max_held = 0;
+    so.arcs = ARCLEN_PD_ARCS_CUBICS;
     shared_doc = svgdoc_new(&so);
     if (shared_doc == NULL || svgdoc_feed(shared_doc, DOCS[0], strlen(DOCS[0])) != 0 ||
         svgdoc_finish(shared_doc) != 0)

@@ -1,12 +1,14 @@
 /*
-** subpaths.c -- cubics read from path data (svg/pathdata.h) as the Lua
-** layer takes them: {packed = the cubics as a string of doubles (x0, y0,
-** x1, y1, x2, y2, x3, y3 each, all subpaths in order, native order), n =
-** the number of cubics, [j] = {x = x0, y = y0, closed = bool, n = its
-** cubics}} -- one string for the whole path, which the collector never
-** looks into, not a table per cubic (arclen.path builds a path on it and
-** measures it with arclen.lengths).  Shared by arclen.core's svg_pathdata
-** and arclen.svgdoc.
+** subpaths.c -- segments read from path data (svg/pathdata.h) as the Lua
+** layer takes them: {packed = the records as a string of doubles (8 each:
+** the kind's numbers, then zeros; all subpaths in order, native order), n
+** = the number of segments, kinds = a string of their letters (L Q C R;
+** nil when all are cubics, the format of arclen.lengths' opts.kinds), [j]
+** = {x = x0, y = y0, closed = bool, n = its segments}} -- one string for
+** the whole path, which the collector never looks into, not a table per
+** segment (arclen.path builds a path on it and measures it with
+** arclen.lengths).  Shared by arclen.core's svg_pathdata and
+** arclen.svgdoc.
 */
 #include <string.h>
 
@@ -15,12 +17,17 @@
 
 void arclenL_pushsubpaths(lua_State *L, const arclen_pathdata *pd) {
   size_t k;
-  lua_createtable(L, (int)pd->nsubpaths, 2);
+  lua_createtable(L, (int)pd->nsubpaths, 3);
   lua_pushlstring(L, (const char *)pd->cubics,
-                  8 * sizeof(double) * pd->ncubics);
+                  ARCLEN_PD_STRIDE * sizeof(double) * pd->ncubics);
   lua_setfield(L, -2, "packed");
   lua_pushinteger(L, (lua_Integer)pd->ncubics);
   lua_setfield(L, -2, "n");
+  for (k = 0; k < pd->ncubics && pd->kinds[k] == ARCLEN_PD_CUBIC; k++) {}
+  if (k < pd->ncubics) {                    /* not all cubics */
+    lua_pushlstring(L, (const char *)pd->kinds, pd->ncubics);
+    lua_setfield(L, -2, "kinds");
+  }
   for (k = 0; k < pd->nsubpaths; k++) {
     const arclen_subpath *s = &pd->subpaths[k];
     lua_createtable(L, 0, 4);

@@ -1,21 +1,26 @@
 /*
 ** svg.c -- the Lua binding of the svg area: path data (svg/pathdata.c)
 ** and the numbers of SVG's attributes (svg/decimal.c).
-**   arclen.svg_pathdata(d, arc_tol [, T]) -> subpaths
+**   arclen.svg_pathdata(d, arc_tol [, T [, arcs]]) -> subpaths
 **                                         or nil, message [, position]
+**     arcs "conics" (nil too): the kinds as written (L H V Z lines, Q T
+**     quadratics, C S cubics, A conics, exactly); "cubics": cubics only,
+**     arcs within arc_tol times their size (pathdata.h)
 **   arclen.svg_number(s, i) -> value, next position; or nil
 **   arclen.svg_numbers(s, cap) -> list [, position of the first bad byte];
 **                                 nil when more than cap numbers
 ** Positions are 1-based, as string.find's.
-** subpaths is {packed = the cubics as a string of doubles, n = cubics,
-** [j] = {x = x0, y = y0, closed = bool, n = its cubics}} (lua/subpaths.c;
-** arclen.path builds a path on it).
+** subpaths is {packed = the records as a string of doubles, n = segments,
+** kinds = their letters (nil: all cubics), [j] = {x = x0, y = y0, closed =
+** bool, n = its segments}} (lua/subpaths.c; arclen.path builds a path on
+** it).
 **   arclen._cubics(packed) -> {cubic, ...}: the packed cubics as tables
 ** Bad data is a result, not an error: the message and the 1-based byte
 ** position (none for the transform's overflow), which arclen.svgpath
 ** raises for arclen.path to turn into a "bad argument" message.
 */
 #include <math.h>
+#include <string.h>
 
 #include "lua/binding.h"
 #include "svg/decimal.h"
@@ -57,14 +62,30 @@ static const double *check_transform(lua_State *L, int arg, double *T) {
   return T;
 }
 
-/* arclen.svg_pathdata(d, arc_tol [, T]) -> subpaths */
+/* The arcs option at arg: nil or "conics", or "cubics". */
+static int check_arcs(lua_State *L, int arg) {
+  static const char *const names[] = {"conics", "cubics", NULL};
+  static const int modes[] = {ARCLEN_PD_ARCS_CONICS, ARCLEN_PD_ARCS_CUBICS};
+  int k;
+  if (lua_isnoneornil(L, arg)) return ARCLEN_PD_ARCS_CONICS;
+  if (lua_type(L, arg) == LUA_TSTRING) {
+    const char *s = lua_tostring(L, arg);
+    for (k = 0; names[k] != NULL; k++)
+      if (strcmp(s, names[k]) == 0) return modes[k];
+  }
+  return luaL_argerror(L, arg, "arcs must be \"conics\" or \"cubics\"");
+}
+
+/* arclen.svg_pathdata(d, arc_tol [, T [, arcs]]) -> subpaths */
 static int l_svg_pathdata(lua_State *L) {
   size_t n;
   const char *d = luaL_checklstring(L, 1, &n);
   double arc_tol = luaL_checknumber(L, 2), Tbuf[6];
   const double *T = check_transform(L, 3, Tbuf);
+  int arcs = check_arcs(L, 4);
   arclen_pathdata *pd = (arclen_pathdata *)lua_newuserdata(L, sizeof *pd);
   arclen_pathdata_init(pd);
+  pd->arcs = arcs;
   luaL_getmetatable(L, BOX);
   lua_setmetatable(L, -2);
   if (arclen_pathdata_parse(pd, d, n, arc_tol, T) != ARCLEN_PD_OK)

@@ -10,6 +10,8 @@
 **   reader:feed(s) -> elements    the next bytes of the document; with
 **                                 stream, the elements they completed (a
 **                                 list, or nil when none)
+**                                 arcs ("conics", the default, or
+**                                 "cubics")
 **   reader:finish(name) -> {elements =, warnings =, skipped =, kept =,
 **                           width =, height =, viewbox =}  (with stream,
 **                           elements are the ones completed at the end)
@@ -21,6 +23,8 @@
 ** arclen.core.svg_pathdata returns them).  Warnings come formatted as
 ** "NAME:LINE:COL: message".
 */
+#include <string.h>
+
 #include "lua/binding.h"
 #include "svgdoc/svgdoc.h"
 
@@ -92,6 +96,16 @@ static int l_new(lua_State *L) {
   held = opt_number(L, "max_held", SVGDOC_MAX_HELD);
   luaL_argcheck(L, held >= 1 && held <= SVGDOC_MAX_HELD, 1, "max_held out of range");
   o.max_held = (size_t)held;
+  lua_getfield(L, 1, "arcs");
+  o.arcs = ARCLEN_PD_ARCS_CONICS;
+  if (!lua_isnil(L, -1)) {
+    const char *a = lua_tostring(L, -1);
+    if (lua_type(L, -1) != LUA_TSTRING ||
+        (strcmp(a, "conics") != 0 && strcmp(a, "cubics") != 0))
+      luaL_argerror(L, 1, "arcs must be \"conics\" or \"cubics\"");
+    if (strcmp(a, "cubics") == 0) o.arcs = ARCLEN_PD_ARCS_CUBICS;
+  }
+  lua_pop(L, 1);
   D = (svgdoc **)lua_newuserdata(L, sizeof *D);
   *D = NULL;
   luaL_getmetatable(L, READER);

@@ -1,15 +1,19 @@
 /*
-** pathdata.c -- SVG path data into cubic Bezier segments.
+** pathdata.c -- SVG path data into segments of four kinds (lines,
+** quadratics, cubics, conics) or into cubics only (pathdata.h).
 **
 ** The grammar of SVG 1.1 section 8.3.9 as SVG 2 section 9.3.9 reads it:
 ** commands M L H V C S Q T A Z (lower case: relative), repeated argument
 ** lists (after M they are linetos), numbers separated by whitespace and at
 ** most one comma or by their own signs and dots, arc flags as the single
 ** bytes 0 and 1.  Every loop advances through the data, so the data's
-** length bounds the work (arcs: at most 4 << ARCLEN_CONIC_MAXLEVEL cubics).
+** length bounds the work (arcs: at most 4 conics, or 4 << ARCLEN_CONIC_MAXLEVEL
+** cubics).
 */
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "arclen.h"
 #include "curve/numeric.h"
@@ -19,18 +23,26 @@
 /* Degrees to radians as Lua's math.rad computes it (one multiplication). */
 #define RADIANS_PER_DEGREE (ARCLEN_PI / 180.0)
 
-void arclen_pathdata_init(arclen_pathdata *pd) {
+static void empty(arclen_pathdata *pd) {
   pd->cubics = NULL;
+  pd->kinds = NULL;
   pd->ncubics = pd->cubics_room = 0;
   pd->subpaths = NULL;
   pd->nsubpaths = pd->subpaths_room = 0;
   pd->err.kind = ARCLEN_PD_OK;
 }
 
+void arclen_pathdata_init(arclen_pathdata *pd) {
+  empty(pd);
+  pd->arcs = ARCLEN_PD_ARCS_CONICS;
+}
+
+/* The memory goes; the mode stays for the next parse. */
 void arclen_pathdata_free(arclen_pathdata *pd) {
   free(pd->cubics);
+  free(pd->kinds);
   free(pd->subpaths);
-  arclen_pathdata_init(pd);
+  empty(pd);
 }
 
 /* ---- the grammar's pieces ------------------------------------------------ */
@@ -85,6 +97,7 @@ typedef struct reader {
   double arc_tol;
   const double *T;
   long sp;                  /* the open subpath, -1 when none */
+  int overflow;             /* a mapped point beyond the doubles */
 } reader;
 
 static int fail(reader *r, int kind, size_t i) {
@@ -156,22 +169,28 @@ static int arguments(reader *r, size_t *i, char cmd, double *a) {
 
 /* ---- the result ---------------------------------------------------------- */
 
-/* Room for k more cubics; returns the first of them, NULL without memory. */
+/* Room for k more records; returns the first of them, NULL without
+** memory.  Their kinds are cubics until the caller says otherwise. */
 static double *reserve(reader *r, size_t k) {
   arclen_pathdata *pd = r->pd;
   if (pd->ncubics + k > pd->cubics_room) {
     size_t room = pd->cubics_room ? pd->cubics_room : 16;
     double *p;
+    unsigned char *q;
     while (room < pd->ncubics + k) room *= 2;
-    p = (double *)realloc(pd->cubics, room * 8 * sizeof(double));
+    p = (double *)realloc(pd->cubics, room * ARCLEN_PD_STRIDE * sizeof(double));
     if (p == NULL) return NULL;
     pd->cubics = p;
+    q = (unsigned char *)realloc(pd->kinds, room);
+    if (q == NULL) return NULL;
+    pd->kinds = q;
     pd->cubics_room = room;
   }
-  return pd->cubics + 8 * pd->ncubics;
+  memset(pd->kinds + pd->ncubics, ARCLEN_PD_CUBIC, k);
+  return pd->cubics + ARCLEN_PD_STRIDE * pd->ncubics;
 }
 
-/* Count k cubics written at reserve()'s pointer into the open subpath. */
+/* Count k records written at reserve()'s pointer into the open subpath. */
 static void commit(reader *r, size_t k) {
   r->pd->ncubics += k;
   r->pd->subpaths[r->sp].n += k;
@@ -198,27 +217,115 @@ static int open_subpath(reader *r, double x, double y) {
   return 1;
 }
 
-static int cubic(reader *r, double x0, double y0, double x1, double y1,
-                 double x2, double y2, double x3, double y3) {
+/* One record: kind's npts points v[] (already mapped), then w for a conic;
+** the rest of the record 0. */
+static int put(reader *r, unsigned char kind, const double *v, int npts,
+               double w) {
   double *c = reserve(r, 1);
+  int k, count = 2 * npts;
   if (c == NULL) return 0;
-  c[0] = x0; c[1] = y0; c[2] = x1; c[3] = y1;
-  c[4] = x2; c[5] = y2; c[6] = x3; c[7] = y3;
+  for (k = 0; k < ARCLEN_PD_STRIDE; k++) c[k] = k < count ? v[k] : 0;
+  if (kind == ARCLEN_PD_CONIC) c[count] = w;
+  r->pd->kinds[r->pd->ncubics] = kind;
   commit(r, 1);
   return 1;
 }
 
-/* A line: the control points at thirds (the same curve, constant speed). */
+static int fold(reader *r, const double p[6], double w);
+
+/* A segment of kind (npts points v[] in the data's coordinates, w for a
+** conic) mapped by T: exact on every kind (the affine image of a Bezier
+** curve, rational too, is the curve of the images of its control points;
+** a conic keeps w).  A mapped point beyond the doubles is remembered for
+** the error at the end.  A conic (of at most 90 degrees) that rounding
+** made flat -- its control points coincide or are collinear -- is the
+** line of its ends; one that a singular T made flat is that line where
+** the line is the curve (both legs one way), else the two lines to its
+** farthest point and back. */
+static int emit(reader *r, unsigned char kind, double *v, int npts, double w) {
+  int k;
+  if (kind == ARCLEN_PD_CONIC && arclen_conic_degenerate(v)) {
+    v[2] = v[4]; v[3] = v[5];
+    kind = ARCLEN_PD_LINE;
+    npts = 2;
+  }
+  if (r->T != NULL) {
+    const double *T = r->T;
+    for (k = 0; k < npts; k++) {
+      double x = v[2 * k], y = v[2 * k + 1];
+      v[2 * k] = T[0] * x + T[2] * y + T[4];
+      v[2 * k + 1] = T[1] * x + T[3] * y + T[5];
+      if (!(fabs(v[2 * k]) <= DBL_MAX && fabs(v[2 * k + 1]) <= DBL_MAX))
+        r->overflow = 1;
+    }
+  }
+  if (kind == ARCLEN_PD_CONIC && !r->overflow && arclen_conic_degenerate(v)) {
+    if ((v[2] - v[0]) * (v[4] - v[2]) + (v[3] - v[1]) * (v[5] - v[3]) >= 0) {
+      v[2] = v[4]; v[3] = v[5];
+      return put(r, ARCLEN_PD_LINE, v, 2, 0);
+    }
+    return fold(r, v, w);
+  }
+  return put(r, kind, v, npts, w);
+}
+
+/* The flat conic's farthest point along its line: the derivative's
+** numerator there, w a (1-t)^2 + c t (1-t) + w b t^2 (the rational
+** quadratic's derivative, weights 1 w 1; a, b the legs, c the chord, along
+** the line, a and b of opposite signs), changes sign once in (0, 1); 64
+** halvings find t to the last bit.  Then two lines, out and back. */
+static int fold(reader *r, const double p[6], double w) {
+  double ux = p[2] - p[0], uy = p[3] - p[1], lo = 0, hi = 1, a, b, c, m[2];
+  double v[4];
+  int k;
+  if (ux == 0 && uy == 0) { ux = p[4] - p[2]; uy = p[5] - p[3]; }
+  a = ux * (p[2] - p[0]) + uy * (p[3] - p[1]);
+  b = ux * (p[4] - p[2]) + uy * (p[5] - p[3]);
+  c = ux * (p[4] - p[0]) + uy * (p[5] - p[1]);
+  for (k = 0; k < 64; k++) {
+    double t = (lo + hi) / 2, s = 1 - t;
+    double f = w * a * s * s + c * t * s + w * b * t * t;
+    if ((f > 0) == (a > 0)) lo = t; else hi = t;
+  }
+  arclen_conic_point(p, w, (lo + hi) / 2, m);
+  v[0] = p[0]; v[1] = p[1]; v[2] = m[0]; v[3] = m[1];
+  if (!put(r, ARCLEN_PD_LINE, v, 2, 0)) return 0;
+  v[0] = m[0]; v[1] = m[1]; v[2] = p[4]; v[3] = p[5];
+  return put(r, ARCLEN_PD_LINE, v, 2, 0);
+}
+
+static int cubic(reader *r, double x0, double y0, double x1, double y1,
+                 double x2, double y2, double x3, double y3) {
+  double v[8];
+  v[0] = x0; v[1] = y0; v[2] = x1; v[3] = y1;
+  v[4] = x2; v[5] = y2; v[6] = x3; v[7] = y3;
+  if (r->pd->arcs != ARCLEN_PD_ARCS_CUBICS)
+    return emit(r, ARCLEN_PD_CUBIC, v, 4, 0);
+  return put(r, ARCLEN_PD_CUBIC, v, 4, 0);   /* mapped at the end, as ever */
+}
+
+/* A line; as a cubic, the control points at thirds (the same curve,
+** constant speed). */
 static int line(reader *r, double x0, double y0, double x1, double y1) {
   double dx = x1 - x0, dy = y1 - y0;
+  if (r->pd->arcs != ARCLEN_PD_ARCS_CUBICS) {
+    double v[4];
+    v[0] = x0; v[1] = y0; v[2] = x1; v[3] = y1;
+    return emit(r, ARCLEN_PD_LINE, v, 2, 0);
+  }
   return cubic(r, x0, y0, x0 + dx / 3, y0 + dy / 3, x1 - dx / 3, y1 - dy / 3,
                x1, y1);
 }
 
-/* A quadratic, degree-elevated: C1 = Q0 + 2/3 (Q1 - Q0), C2 = Q2 + 2/3
-** (Q1 - Q2) (the same curve). */
+/* A quadratic; as a cubic, degree-elevated: C1 = Q0 + 2/3 (Q1 - Q0), C2 =
+** Q2 + 2/3 (Q1 - Q2) (the same curve). */
 static int quadratic(reader *r, double x0, double y0, double qx, double qy,
                      double x1, double y1) {
+  if (r->pd->arcs != ARCLEN_PD_ARCS_CUBICS) {
+    double v[6];
+    v[0] = x0; v[1] = y0; v[2] = qx; v[3] = qy; v[4] = x1; v[5] = y1;
+    return emit(r, ARCLEN_PD_QUAD, v, 3, 0);
+  }
   return cubic(r, x0, y0, x0 + 2.0 / 3 * (qx - x0), y0 + 2.0 / 3 * (qy - y0),
                x1 + 2.0 / 3 * (qx - x1), y1 + 2.0 / 3 * (qy - y1), x1, y1);
 }
@@ -257,6 +364,63 @@ static int arc_fail(reader *r, int why, int code, size_t pos) {
   return fail(r, ARCLEN_PD_ARC, pos);
 }
 
+/* Is |b - a| exactly r (the difference without rounding: Knuth's TwoSum
+** leaves no error)? */
+static int exact_gap(double a, double b, double r) {
+  double d = b - a, bb = d - b, err = (b - (d - bb)) + (-a - bb);
+  return err == 0 && fabs(d) == r;
+}
+
+/* The conics of an elliptical arc (SVG 1.1 F.6) from (x0, y0) to (x1,
+** y1), a = rx ry rotation large sweep, pos the command's byte: at most
+** four of at most 90 degrees each, exact but for the rounding of the
+** centre form (arclen_svg_arc_conics).  An arc with no rotation and no
+** large-arc flag whose ends are exactly rx and ry apart is a quarter of
+** the axis-aligned ellipse (F.6.5: Lambda = 1/2, the centre a corner of
+** the ends' box), and so is every such arc under ARCLEN_PD_ARCS_QUARTERS
+** (the basic shapes, whose ends are rounded): its centre and control
+** point are the two corners of the ends' box, the sweep flag says which
+** is which (positive angle: the centre c has cross(p0 - c, p2 - c) > 0),
+** and w = cos 45 degrees (Floater's eq. 1 for a circular arc of angle 2h:
+** w = cos h) -- the ends are the only rounding. */
+static int arc_conics(reader *r, double x0, double y0, const double *a,
+                      double x1, double y1, size_t pos) {
+  double c[28], v[6];
+  int kind, n, k;
+  if (!isfinite(x0)) return arc_fail(r, ARCLEN_PD_ARC_X1, 0, pos);
+  if (!isfinite(y0)) return arc_fail(r, ARCLEN_PD_ARC_Y1, 0, pos);
+  if (!isfinite(x1)) return arc_fail(r, ARCLEN_PD_ARC_X2, 0, pos);
+  if (!isfinite(y1)) return arc_fail(r, ARCLEN_PD_ARC_Y2, 0, pos);
+  if (a[2] == 0 && a[3] == 0 && a[0] != 0 && a[1] != 0 &&
+      (r->pd->arcs == ARCLEN_PD_ARCS_QUARTERS ||
+       (exact_gap(x0, x1, fabs(a[0])) && exact_gap(y0, y1, fabs(a[1]))))) {
+    int centre_first = ((x0 - x1) * (y1 - y0) > 0) == (a[4] != 0);
+    if (x0 == x1 && y0 == y1) return ARCLEN_PD_OK;       /* F.6.2: omitted */
+    v[0] = x0; v[1] = y0; v[4] = x1; v[5] = y1;
+    /* the corners (x1, y0) and (x0, y1); the control point is the one
+    ** that is not the centre */
+    v[2] = centre_first ? x0 : x1;
+    v[3] = centre_first ? y1 : y0;
+    return emit(r, ARCLEN_PD_CONIC, v, 3, sqrt(0.5)) ? ARCLEN_PD_OK
+                                                   : fail(r, ARCLEN_PD_NOMEM, pos);
+  }
+  kind = arclen_svg_arc_conics(x0, y0, fabs(a[0]), fabs(a[1]), a[2], a[3] != 0,
+                               a[4] != 0, x1, y1, c, &n);
+  if (kind == ARCLEN_SVGARC_NONE) return ARCLEN_PD_OK;   /* F.6.2: omitted */
+  if (kind == ARCLEN_SVGARC_LINE)                        /* F.6.2: a line */
+    return line(r, x0, y0, x1, y1) ? ARCLEN_PD_OK
+                                   : fail(r, ARCLEN_PD_NOMEM, pos);
+  if (kind == ARCLEN_EOVERFLOW) return arc_fail(r, ARCLEN_PD_ARC_OVERFLOW, 0, pos);
+  if (kind < 0) return arc_fail(r, ARCLEN_PD_ARC_CODE, kind, pos);
+  for (k = 0; k < n; k++) {
+    int j;
+    for (j = 0; j < 6; j++) v[j] = c[7 * k + j];
+    if (!emit(r, ARCLEN_PD_CONIC, v, 3, c[7 * k + 6]))
+      return fail(r, ARCLEN_PD_NOMEM, pos);
+  }
+  return ARCLEN_PD_OK;
+}
+
 /* The cubics of an elliptical arc (SVG 1.1 F.6) from (x0, y0) to (x1,
 ** y1); a = rx ry rotation large sweep; pos: the command's byte.  The Hausdorff tolerance is arc_tol
 ** times the arc's size, max(rx, ry, chord/2); under T the cubics are built
@@ -270,6 +434,8 @@ static int arc(reader *r, double x0, double y0, const double *a, double x1,
   double hx = x1 - x0, hy = y1 - y0, half = 0.5 * sqrt(hx * hx + hy * hy);
   double scale = rx;
   int have_tol, kind, n, k, level = 0;
+  if (r->pd->arcs != ARCLEN_PD_ARCS_CUBICS)
+    return arc_conics(r, x0, y0, a, x1, y1, pos);
   if (scale < ry) scale = ry;
   if (scale < half) scale = half;
   if (r->T != NULL && scale > 0) {
@@ -320,20 +486,21 @@ static int arc(reader *r, double x0, double y0, const double *a, double x1,
 
 /* ---- the transform --------------------------------------------------------- */
 
-/* Map every point by T (exact for cubics: an affine image of a Bezier
-** curve is the Bezier curve of the images of its control points); a
-** control point that overflows is an error. */
-static int transform(arclen_pathdata *pd, const double *T) {
+/* Map the subpaths' starts by T, and under ARCLEN_PD_ARCS_CUBICS every
+** cubic's points (exact: an affine image of a Bezier curve is the Bezier
+** curve of the images of its control points; the other modes mapped each
+** segment as it came, emit); a control point that overflows is an error. */
+static int transform(arclen_pathdata *pd, const double *T, int overflow) {
   double A = T[0], B = T[1], C = T[2], D = T[3], E = T[4], F = T[5];
   size_t k;
-  int ok = 1;
+  int ok = !overflow;
   for (k = 0; k < pd->nsubpaths; k++) {
     arclen_subpath *s = &pd->subpaths[k];
     double x = s->x, y = s->y;
     s->x = A * x + C * y + E;
     s->y = B * x + D * y + F;
   }
-  for (k = 0; k < 4 * pd->ncubics; k++) {
+  for (k = 0; pd->arcs == ARCLEN_PD_ARCS_CUBICS && k < 4 * pd->ncubics; k++) {
     double x = pd->cubics[2 * k], y = pd->cubics[2 * k + 1];
     double u = A * x + C * y + E, v = B * x + D * y + F;
     if (!(u > -HUGE_VAL && u < HUGE_VAL && v > -HUGE_VAL && v < HUGE_VAL))
@@ -430,6 +597,7 @@ int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
   int rel = 0, rc;
   size_t i;
   r.pd = pd; r.d = d; r.n = n; r.arc_tol = arc_tol; r.T = T; r.sp = -1;
+  r.overflow = 0;
   pd->ncubics = pd->nsubpaths = 0;
   pd->err.kind = ARCLEN_PD_OK;
   pd->err.pos = 0;
@@ -483,5 +651,5 @@ int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
     if (d[i - 1] == ',' && (i >= n || is_alpha((unsigned char)d[i])))
       return fail(&r, ARCLEN_PD_COMMA, i - 1);
   }
-  return T != NULL ? transform(pd, T) : ARCLEN_PD_OK;
+  return T != NULL ? transform(pd, T, r.overflow) : ARCLEN_PD_OK;
 }

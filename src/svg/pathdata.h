@@ -1,7 +1,8 @@
 /*
 ** pathdata.h -- SVG path data (the `d` attribute, SVG 1.1 section 8.3 and
-** SVG 2 section 9.3) read into cubic Bezier segments, optionally mapped by
-** a 2x3 transform.  No Lua dependency: the binding (lua/svg.c) turns
+** SVG 2 section 9.3) read into segments of four kinds (lines, quadratic
+** and cubic Bezier curves, conics), or into cubics only, optionally mapped
+** by a 2x3 transform.  No Lua dependency: the binding (lua/svg.c) turns
 ** the result into tables and the error into its message.
 */
 #ifndef ARCLEN_PATHDATA_H
@@ -9,8 +10,29 @@
 
 #include <stddef.h>
 
-/* A subpath: its start point, whether Z closed it, and its cubics
-** cubics[8 * first .. 8 * (first + n) - 1] of the result. */
+/* A segment's record: ARCLEN_PD_STRIDE doubles, its kind's numbers first
+** and the rest 0 -- a line P0 P1, a quadratic P0 P1 P2, a cubic P0 P1 P2
+** P3, a conic P0 P1 P2 w (the rational quadratic with weights 1, w, 1,
+** Floater's eq. 1) -- and its kind's letter, as arclen.lengths reads them. */
+#define ARCLEN_PD_STRIDE 8
+#define ARCLEN_PD_LINE 'L'
+#define ARCLEN_PD_QUAD 'Q'
+#define ARCLEN_PD_CUBIC 'C'
+#define ARCLEN_PD_CONIC 'R'
+
+/* What the reader makes of the data (arclen_pathdata.arcs). */
+enum {
+  ARCLEN_PD_ARCS_CONICS,    /* the kinds as written, arcs as conics (exact) */
+  ARCLEN_PD_ARCS_CUBICS,    /* cubics only: lines and quadratics raised
+                            ** exactly, arcs within arc_tol */
+  ARCLEN_PD_ARCS_QUARTERS   /* as CONICS, but every arc is a quarter of an
+                            ** axis-aligned ellipse given by its end points
+                            ** (the basic shapes' own data, svgdoc/shapes.c):
+                            ** the conic through the corner, w = sqrt(1/2) */
+};
+
+/* A subpath: its start point, whether Z closed it, and its segments
+** first .. first + n - 1 of the result. */
 typedef struct arclen_subpath {
   double x, y;
   size_t first, n;
@@ -61,8 +83,13 @@ typedef struct arclen_pathdata_error {
 } arclen_pathdata_error;
 
 typedef struct arclen_pathdata {
-  double *cubics;                     /* 8 numbers per cubic */
+  /* the segments' records (ARCLEN_PD_STRIDE numbers each) and kinds; the
+  ** names are older than the kinds: every record is a cubic only under
+  ** ARCLEN_PD_ARCS_CUBICS */
+  double *cubics;
+  unsigned char *kinds;
   size_t ncubics, cubics_room;
+  int arcs;                           /* ARCLEN_PD_ARCS_*; init: CONICS */
   arclen_subpath *subpaths;
   size_t nsubpaths, subpaths_room;
   arclen_pathdata_error err;
@@ -71,12 +98,18 @@ typedef struct arclen_pathdata {
 void arclen_pathdata_init(arclen_pathdata *pd);
 void arclen_pathdata_free(arclen_pathdata *pd);
 
-/* Read d[0 .. n-1] into pd (initialised; previous contents are dropped).
-** Lines are cubics with control points at thirds, quadratics are degree-
-** elevated, arcs become cubics within arc_tol times the arc's size (SVG
-** 1.1 F.6, Floater's mid-point scheme; see doc/svg.md).  T (NULL: none)
-** is {a, b, c, d, e, f} as SVG's matrix(a b c d e f).  Returns the error
-** kind (ARCLEN_PD_OK on success; then pd->err.kind is OK too). */
+/* Read d[0 .. n-1] into pd (initialised, pd->arcs set; previous contents
+** are dropped).  pd->arcs CONICS: L H V Z are lines, Q T quadratics, C S
+** cubics, A at most four conics of at most 90 degrees (SVG 1.1 F.6.5),
+** degenerate arcs per F.6.2 a line or nothing; a conic that rounding made
+** flat is the line of its ends.  CUBICS: lines are cubics with control
+** points at thirds, quadratics are degree-elevated, arcs become cubics
+** within arc_tol times the arc's size (Floater's mid-point scheme; see
+** doc/svg.md).  T (NULL: none) is {a, b, c, d, e, f} as SVG's matrix(a b
+** c d e f): exact on every kind (the affine image of a Bezier curve or of
+** a conic is the curve of its mapped control points, w unchanged).
+** Returns the error kind (ARCLEN_PD_OK on success; then pd->err.kind is
+** OK too). */
 int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
                           double arc_tol, const double *T);
 

@@ -188,6 +188,11 @@ void svgdoc_properties(svgdoc *D, const char **atts, const char *out[]);
 const char *svgdoc_shape_data(svgdoc *D, unsigned long line,
                               unsigned long col, const char *tag,
                               const char **atts, const svgdoc_viewport *vp);
+/* The segments of a drawn element's d (from svgdoc_shape_data) into pd
+** (initialised) under T (NULL: the identity), as the document's arcs
+** option says; returns arclen_pathdata_parse's result. */
+int svgdoc_shape_parse(svgdoc *D, arclen_pathdata *pd, const char *tag,
+                       const char *d, const double *T);
 
 
 /* ---- matrices ---- */

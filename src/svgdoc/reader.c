@@ -337,8 +337,8 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
   size_t size;
   reserve_out(D, line, col);
   arclen_pathdata_init(&pd);
-  if (arclen_pathdata_parse(&pd, d, strlen(d), D->o.arc_tol,
-                            identity ? NULL : C) != ARCLEN_PD_OK) {
+  if (svgdoc_shape_parse(D, &pd, tag, d, identity ? NULL : C) !=
+      ARCLEN_PD_OK) {
     const char *m = shape_size_message(D, &pd, tag, atts);
     if (m == NULL) {
       m = pathdata_message(D, &pd, d);

@@ -4,10 +4,16 @@
 ** rx and ry), circle and ellipse (10.3, 10.4: four arcs from (cx + rx, cy)
 ** in the positive angle direction), line (10.5), polyline and polygon
 ** (10.6, 10.7).  Numbers are written with 17 significant digits, so the
-** path data reads back to the same doubles.
+** path data reads back to the same doubles; its arcs are quarters of
+** axis-aligned ellipses from corner to corner, so the reader makes each
+** the exact conic through its box's corner (ARCLEN_PD_ARCS_QUARTERS):
+** the shape's points rounded once are the only rounding.
 */
+#include <float.h>
+#include <math.h>
 #include <string.h>
 
+#include "arclen.h"
 #include "svg/decimal.h"
 #include "svgdoc/internal.h"
 
@@ -160,4 +166,46 @@ const char *svgdoc_shape_data(svgdoc *D, unsigned long line,
     return points_data(D, line, col, atts, 1);
   }
   return svgdoc_strdup(D, b->s, b->len);
+}
+
+/* Is the length of pd's lines and conics beyond the doubles?  Only when
+** their control polygon's is (a curve is no longer than its control
+** polygon) are the conics measured (exactly, Carlson's integrals). */
+static int length_overflows(const arclen_pathdata *pd) {
+  double polygon = 0, length = 0;
+  size_t k;
+  for (k = 0; k < pd->ncubics; k++) {
+    const double *c = pd->cubics + ARCLEN_PD_STRIDE * k;
+    polygon += hypot(c[2] - c[0], c[3] - c[1]);
+    if (pd->kinds[k] != ARCLEN_PD_LINE)
+      polygon += hypot(c[4] - c[2], c[5] - c[3]);
+  }
+  if (polygon <= DBL_MAX) return 0;
+  for (k = 0; k < pd->ncubics; k++) {
+    const double *c = pd->cubics + ARCLEN_PD_STRIDE * k;
+    double len;
+    if (pd->kinds[k] == ARCLEN_PD_LINE) len = hypot(c[2] - c[0], c[3] - c[1]);
+    else if (arclen_conic_length(c, c[6], &len, NULL) != ARCLEN_OK) return 1;
+    length += len;
+  }
+  return !(length <= DBL_MAX);
+}
+
+int svgdoc_shape_parse(svgdoc *D, arclen_pathdata *pd, const char *tag,
+                       const char *d, const double *T) {
+  int rc;
+  if (D->o.arcs == ARCLEN_PD_ARCS_CUBICS) pd->arcs = ARCLEN_PD_ARCS_CUBICS;
+  else if (strcmp(tag, "path") == 0) pd->arcs = ARCLEN_PD_ARCS_CONICS;
+  else pd->arcs = ARCLEN_PD_ARCS_QUARTERS;     /* this file's own data */
+  rc = arclen_pathdata_parse(pd, d, strlen(d), D->o.arc_tol, T);
+  /* a basic shape (lines and conics only) whose length is beyond the
+  ** doubles is out of range as its cubics were: the reader names its
+  ** size attributes (reader.c, shape_size_message) */
+  if (rc == ARCLEN_PD_OK && pd->arcs == ARCLEN_PD_ARCS_QUARTERS &&
+      length_overflows(pd)) {
+    pd->err.kind = rc = ARCLEN_PD_ARC;
+    pd->err.arc = ARCLEN_PD_ARC_OVERFLOW;
+    pd->err.pos = 0;
+  }
+  return rc;
 }

@@ -2,7 +2,7 @@
 ** svgdoc.h -- SVG documents read as a renderer draws them: expat's
 ** events walked in C, every basic shape turned into path data (SVG 2
 ** chapter 10), nested transforms and viewports applied, <use> expanded,
-** each drawn element's path data read into cubics (svg/pathdata.c) in
+** each drawn element's path data read into segments (svg/pathdata.c) in
 ** document coordinates, handed over as soon as it is complete (a stream:
 ** what is kept is the open elements' frames, the subtrees <use> can
 ** still reference, and the elements waiting behind a <use> of an element
@@ -27,7 +27,10 @@
 #define SVGDOC_MAX_WARNINGS 1000
 
 typedef struct svgdoc_options {
-  double arc_tol;       /* arcs' tolerance, relative to their size */
+  double arc_tol;       /* arcs' tolerance, relative to their size (cubics) */
+  int arcs;             /* ARCLEN_PD_ARCS_CONICS (0): the segments' kinds as
+                        ** drawn, circles, ellipses and rounded corners as
+                        ** conics; ARCLEN_PD_ARCS_CUBICS: cubics only */
   double unit_px;       /* px per output unit; 0: the root's user units */
   int hidden;           /* draw display:none and visibility:hidden too */
   int stroked;          /* only stroked shapes */
@@ -45,7 +48,7 @@ typedef struct svgdoc_element {
   unsigned long line, col;
   int stroked;
   double ctm[6];        /* onto the document's coordinates */
-  arclen_pathdata pd;   /* the cubics of d mapped by ctm */
+  arclen_pathdata pd;   /* the segments of d mapped by ctm */
 } svgdoc_element;
 
 typedef struct svgdoc_warning {
