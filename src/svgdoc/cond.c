@@ -38,7 +38,9 @@ static int next_item(const char **s, const char **item, size_t *n) {
 /* Does the user's tag u[0 .. un-1] match the document's d[0 .. dn-1]? */
 static int tag_matches(const char *u, size_t un, const char *d, size_t dn) {
   size_t k;
-  if (un == 0 || un > dn || (un < dn && d[un] != '-')) return 0;
+  /* "en-" is no tag: a prefix needs a subtag after its '-' */
+  if (un == 0 || un > dn || (un < dn && (d[un] != '-' || un + 1 == dn)))
+    return 0;
   for (k = 0; k < un; k++)
     if (lower((unsigned char)u[k]) != lower((unsigned char)d[k])) return 0;
   return 1;

@@ -163,7 +163,8 @@ int svgdoc_color(const char *s, int *clear) {
   for (k = 0; k < sizeof FUNCTIONS / sizeof *FUNCTIONS; k++) {
     size_t m = strlen(FUNCTIONS[k]), i = m;
     double alpha;
-    if (strncmp(s, FUNCTIONS[k], m) != 0) continue;
+    if (strncmp(s, FUNCTIONS[k], m) != 0 || (s[m] != '(' && !space(s[m])))
+      continue;                       /* rgb is no prefix of rgba */
     while (i < n && space(s[i])) i++;
     if (i == n || s[i] != '(' || s[n - 1] != ')') return 0;
     if (!arguments(s, i + 1, n - 1, &alpha)) return 0;
