@@ -247,7 +247,7 @@ describe("paint that shows (stroked, painted)", function()
   end)
 
   it("every CSS named colour (148) and system colour paints; transparent does not", function()
-    local src = assert(io.open("src/svgdoc/paint.c")):read("a")
+    local src = assert(io.open("src/svgdoc/paint.c")):read("*a")
     for _, list in ipairs({"NAMED", "SYSTEM"}) do
       local names = {}
       for n in src:match(list .. "%[%] = (%b{})"):gmatch('"([a-z]+)"') do names[#names + 1] = n end
@@ -281,9 +281,18 @@ describe("paint that shows (stroked, painted)", function()
 end)
 
 describe("the command line: --painted, --stroked, --lang", function()
+  local helpers = require("helpers")
+  local MAIN = os.tmpname()   -- arclen.cli from this Lua's search paths
+  local f = assert(io.open(MAIN, "w"))
+  f:write('require("arclen.cli").main(arg)\n')
+  f:close()
+  teardown(function() os.remove(MAIN) end)
+  -- stdout and stderr of the command line under this Lua, then "rc=N"
   local function run(args)
-    local p = assert(io.popen("lua5.4 bin/arclen " .. args .. " 2>&1; echo \"rc=$?\""))
-    local out = p:read("a")
+    local p = assert(io.popen(("LUA_PATH=%s LUA_CPATH=%s %s %s %s 2>&1; echo \"rc=$?\""):format(
+      helpers.shquote(package.path), helpers.shquote(package.cpath), helpers.interpreter(),
+      helpers.shquote(MAIN), args)))
+    local out = p:read("*a")
     p:close()
     return out
   end
