@@ -2,7 +2,7 @@
 ** attrs.c -- the attributes the reader interprets: lengths with units
 ** (SVG 2 section 4.3, CSS Values 3 section 5.2), the transform list (SVG
 ** 1.1 section 7.6), viewBox and preserveAspectRatio (SVG 2 section 8.2),
-** and the four properties it reads from style="" or the presentation
+** and the properties it reads from style="" or the presentation
 ** attributes (SVG 2 section 6.6).
 */
 #include <math.h>
@@ -385,8 +385,9 @@ void svgdoc_viewbox_matrix(svgdoc *D, unsigned long line, unsigned long col,
 
 /* ---- properties ------------------------------------------------------ */
 
-static const char *const PROPS[SVGDOC_NPROPS] = {"display", "visibility",
-                                                 "stroke", "stroke-width"};
+static const char *const PROPS[SVGDOC_NPROPS] = {
+  "display", "visibility", "stroke", "stroke-width", "fill", "fill-opacity",
+  "stroke-opacity", "opacity", "color"};
 
 /* May byte c precede a property's name?  (The name must be whole.) */
 static int name_byte(unsigned char c) {

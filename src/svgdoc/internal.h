@@ -22,9 +22,11 @@ typedef struct svgdoc_viewport {
 } svgdoc_viewport;
 
 /* The properties the reader uses, from style="" (CSS declarations, which
-** win) or the presentation attributes, trimmed and lower-cased. */
+** win) or the presentation attributes, trimmed and lower-cased.  The
+** paint's (fill ... color) decide what shows (paint.c). */
 enum { SVGDOC_DISPLAY, SVGDOC_VISIBILITY, SVGDOC_STROKE,
-       SVGDOC_STROKE_WIDTH, SVGDOC_NPROPS };
+       SVGDOC_STROKE_WIDTH, SVGDOC_FILL, SVGDOC_FILL_OPACITY,
+       SVGDOC_STROKE_OPACITY, SVGDOC_OPACITY, SVGDOC_COLOR, SVGDOC_NPROPS };
 
 typedef struct svgdoc_buffer {
   char *s;
@@ -54,6 +56,7 @@ typedef struct svgdoc_idtable {
 
 struct svgdoc {
   svgdoc_options o;
+  char *lang;                            /* o.lang copied (cond.c) */
   void *parser;                          /* XML_Parser */
   jmp_buf *on_error;                     /* where svgdoc_fail jumps */
   int failed, finished, scanned;
