@@ -252,7 +252,9 @@ static int emit(reader *r, unsigned char kind, double *v, int npts, double w) {
         r->overflow = 1;
     }
   }
-  if (kind == ARCLEN_PD_CONIC && !r->overflow && arclen_conic_degenerate(v)) {
+  /* without T the points are the ones judged above: not flat */
+  if (kind == ARCLEN_PD_CONIC && r->T != NULL && !r->overflow &&
+      arclen_conic_degenerate(v)) {
     if ((v[2] - v[0]) * (v[4] - v[2]) + (v[3] - v[1]) * (v[5] - v[3]) >= 0) {
       v[2] = v[4]; v[3] = v[5];
       return put(r, ARCLEN_PD_LINE, v, 2, 0);
