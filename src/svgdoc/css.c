@@ -351,7 +351,7 @@ static int compound(parser *p, unsigned long counts[3]) {
         return 0;
       }
       ws(p);
-      if (p->i < p->n && p->t[p->i] == '|') {
+      if (p->i + 1 < p->n && p->t[p->i] == '|' && p->t[p->i + 1] != '=') {
         p->why = "namespace prefixes are not supported";
         return 0;
       }
@@ -681,7 +681,7 @@ static int media_holds(const parser *p, size_t s, size_t e) {
       size_t w = 0;
       while (q < qe && space((unsigned char)p->t[q])) q++;
       if (q == qe) break;
-      if (p->t[q] == '(') { holds = 0; break; }
+      if (p->t[q] == '(') { holds = 0, neg = 0; break; }
       while (q < qe && !space((unsigned char)p->t[q]) && p->t[q] != '(') {
         if (w + 1 < sizeof word) word[w++] = (char)lower((unsigned char)p->t[q]);
         q++;
@@ -689,12 +689,12 @@ static int media_holds(const parser *p, size_t s, size_t e) {
       word[w] = '\0';
       if (strcmp(word, "not") == 0 && holds < 0) neg = 1;
       else if (strcmp(word, "only") == 0 && holds < 0) {}
-      else if (strcmp(word, "and") == 0) { holds = 0; break; }
+      else if (strcmp(word, "and") == 0) { holds = 0, neg = 0; break; }
       else if (holds < 0)
         holds = strcmp(word, "all") == 0 || strcmp(word, "screen") == 0;
-      else { holds = 0; break; }
+      else { holds = 0, neg = 0; break; }
     }
-    if (holds < 0) holds = 0;
+    if (holds < 0) holds = 0, neg = 0;   /* no media type: not a query */
     if (neg ? !holds : holds) return 1;
   }
   return 0;
