@@ -1029,6 +1029,7 @@ void svgdoc_css_style_start(svgdoc *D, const char **atts, size_t depth,
     if (!((size_t)(e - s) == 8 && strncmp(s, "text/css", 8) == 0)) return;
   }
   D->style_depth = depth + 1;
+  D->shapes_before = D->shapes_seen;
   D->style_line = line, D->style_col = col;
   D->style_text.len = 0;
   D->style_media.len = 0;
@@ -1052,11 +1053,13 @@ void svgdoc_css_text(svgdoc *D, const char *s, size_t n) {
 void svgdoc_css_style_end(svgdoc *D, size_t depth) {
   if (D->style_depth != depth + 1) return;
   D->style_depth = 0;
-  if (D->ndrawn + D->held_elements > 0)
-    svgdoc_warn(D, D->style_line, D->style_col, "style sheet after drawn "
-                "elements: it applies only to the elements that start after "
-                "it (the stream)");
-  svgdoc_css_add(D, D->style_text.s ? D->style_text.s : "", D->style_text.len,
+  svgdoc_append(D, &D->style_text, "", 1);   /* NUL-ended */
+  D->style_text.len--;
+  if (D->shapes_before > 0 && !svgdoc_blank(D->style_text.s))
+    svgdoc_warn(D, D->style_line, D->style_col, svgdoc_format(D, "style sheet "
+                "after %lu shapes or uses: it applies only to the elements that "
+                "start after it (the stream)", (unsigned long)D->shapes_before));
+  svgdoc_css_add(D, D->style_text.s, D->style_text.len,
                  D->style_has_media ? D->style_media.s : NULL, D->style_line,
                  D->style_col);
 }

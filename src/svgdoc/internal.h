@@ -104,7 +104,7 @@ struct svgdoc {
   ** them (max_depth + 2), the <style> being read (its depth + 1) */
   struct svgdoc_css *css;
   struct svgdoc_css_node *nodes;
-  size_t style_depth;
+  size_t style_depth, shapes_seen, shapes_before;
   unsigned long style_line, style_col;
   svgdoc_buffer style_text, style_media;
   int style_has_media;

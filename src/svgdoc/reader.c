@@ -908,6 +908,9 @@ static void start_element(svgdoc *D, const char *qname, const char **atts) {
   if (svgns && strcmp(tag ? tag + 1 : qname, "style") == 0) {
     position(D, &line, &col);
     svgdoc_css_style_start(D, atts, D->depth, line, col);
+  } else if (svgns && (lookup(SHAPES, tag ? tag + 1 : qname) >= 0 ||
+                       strcmp(tag ? tag + 1 : qname, "use") == 0)) {
+    D->shapes_seen++;                    /* what a later sheet cannot style */
   }
   id = svgdoc_attr(atts, "id");
   keep_it = kept(D, id);
