@@ -172,6 +172,16 @@ describe("arclen.svg: style sheets #svgdoc", function()
             "rect{stroke:red}</style>" .. deep, {stroked = true})
     assert.are.equal(1, #d.elements)
     assert.is_true(os.clock() - t0 < 5, "deep descendant matching took " .. (os.clock() - t0))
+    -- selectors that fail only at the root, on 990 nested groups: matching stops at the
+    -- cap (2e8 tests and 200 a byte), an error at the element, in about a second
+    local sels = {}
+    for i = 1, 2000 do sels[i] = "x" .. i .. " " .. ("* "):rep(29) .. "*" end
+    t0 = os.clock()
+    local ok, err = pcall(doc, "<style>" .. table.concat(sels, ",") .. "{stroke:red}</style>" ..
+      ("<g>"):rep(990) .. "<path d='M0 0h1'/>" .. ("</g>"):rep(990))
+    assert.is_false(ok)
+    assert.matches("^t%.svg:1:%d+: style sheet: matching its selectors takes more than %d+ tests", err)
+    assert.is_true(os.clock() - t0 < 30, "the cap took " .. (os.clock() - t0))
     -- more than 65536 selectors: the rest are left out, with a warning
     local many = {}
     for i = 1, 70000 do many[i] = ".c" .. i end

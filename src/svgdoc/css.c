@@ -4,8 +4,8 @@
 ** not support is dropped whole, as CSS drops an invalid selector list),
 ** indexed by their rightmost compound's id, class or type, and matched
 ** right to left against the open elements, each (compound, ancestor)
-** pair tried at most once per match (a failure memo), so that a
-** selector of m compounds costs at most m * depth tests.
+** pair tried at most once per match (failure memos), so that a
+** selector of m compounds costs at most 2 m (depth + 1) steps.
 ** Selectors: type, *, #id, .class, [a], [a=v], [a~=v], [a|=v], [a^=v],
 ** [a$=v], [a*=v], :first-child, :root; descendant and child
 ** combinators; lists.  Dynamic pseudo-classes (:hover...) never match a
@@ -839,10 +839,12 @@ static int compound_matches(svgdoc *D, const css_compound *c, size_t depth,
   struct svgdoc_css *C = D->css;
   const svgdoc_css_node *e = &D->nodes[depth];
   size_t k;
-  if (++C->tests > SVGDOC_MAX_CSS_TESTS)
+  if (++C->tests > SVGDOC_MAX_CSS_TESTS +
+                       SVGDOC_CSS_TESTS_PER_BYTE * (double)D->bytes)
     svgdoc_fail(D, line, col, "style sheet: matching its selectors takes "
-                "more than %.0f tests (too many selectors for this document)",
-                SVGDOC_MAX_CSS_TESTS);
+                "more than %.0f tests (%.0f and %.0f a byte of the document: "
+                "too many selectors for it)", C->tests - 1, SVGDOC_MAX_CSS_TESTS,
+                SVGDOC_CSS_TESTS_PER_BYTE);
   for (k = 0; k < c->n; k++) {
     const css_simple *s = &C->simples[c->first + k];
     int ok;
@@ -860,25 +862,53 @@ static int compound_matches(svgdoc *D, const css_compound *c, size_t depth,
   return 1;
 }
 
+/* The failure memos of compound i at node depth: fail[0]: compound i
+** there and the compounds left of it do not match; fail[1]: nor at any
+** ancestor of depth (inclusive).  Each pair is computed once per match,
+** so a selector of m compounds costs at most 2 m (depth + 1) steps. */
+static unsigned *memo(const svgdoc *D, int which, size_t i, size_t depth) {
+  size_t row = (size_t)D->o.max_depth + 2;
+  return &D->css->memo[(which * SVGDOC_MAX_CSS_COMPOUNDS + i) * row + depth];
+}
+
+static int match_below(svgdoc *D, const css_selector *s, size_t i,
+                       size_t depth, unsigned long line, unsigned long col);
+
 /* Does compound i of selector s match node depth, and the compounds left
-** of it its ancestors?  Failures are remembered per (i, depth). */
+** of it its ancestors? */
 static int match_at(svgdoc *D, const css_selector *s, size_t i, size_t depth,
                     unsigned long line, unsigned long col) {
   struct svgdoc_css *C = D->css;
   const css_compound *c = &C->compounds[s->first + i];
-  unsigned *memo = &C->memo[i * ((size_t)D->o.max_depth + 2) + depth];
-  size_t a;
-  if (*memo == C->gen) return 0;
+  unsigned *fail = memo(D, 0, i, depth);
+  if (*fail == C->gen) return 0;
   if (compound_matches(D, c, depth, line, col)) {
     if (i + 1 == s->n) return 1;
-    if (c->comb == '>') {
-      if (depth > 0 && match_at(D, s, i + 1, depth - 1, line, col)) return 1;
-    } else {
-      for (a = depth; a-- > 0;)
-        if (match_at(D, s, i + 1, a, line, col)) return 1;
-    }
+    if (depth > 0 && (c->comb == '>'
+                          ? match_at(D, s, i + 1, depth - 1, line, col)
+                          : match_below(D, s, i + 1, depth - 1, line, col)))
+      return 1;
   }
-  *memo = C->gen;
+  *fail = C->gen;
+  return 0;
+}
+
+/* Does compound i (and what is left of it) match node depth or one of its
+** ancestors?  A success is the whole selector's; a failure is remembered
+** for every node walked, down to one known to fail. */
+static int match_below(svgdoc *D, const css_selector *s, size_t i,
+                       size_t depth, unsigned long line, unsigned long col) {
+  struct svgdoc_css *C = D->css;
+  size_t a = depth, stop;
+  for (;;) {
+    if (*memo(D, 1, i, a) == C->gen) break;
+    if (match_at(D, s, i, a, line, col)) return 1;
+    if (a == 0) break;
+    a--;
+  }
+  stop = a;
+  for (a = depth; a > stop; a--) *memo(D, 1, i, a) = C->gen;
+  *memo(D, 1, i, stop) = C->gen;
   return 0;
 }
 
@@ -891,7 +921,7 @@ static void try_chain(svgdoc *D, size_t head, size_t depth, unsigned long line,
     const css_selector *s = &C->sels[head - 1];
     size_t k;
     if (++C->gen == 0) {               /* wrapped: the memo starts afresh */
-      memset(C->memo, 0, SVGDOC_MAX_CSS_COMPOUNDS *
+      memset(C->memo, 0, 2 * SVGDOC_MAX_CSS_COMPOUNDS *
              ((size_t)D->o.max_depth + 2) * sizeof *C->memo);
       C->gen = 1;
     }
@@ -930,8 +960,8 @@ void svgdoc_css_match_node(svgdoc *D, size_t depth, unsigned long line,
   if (!svgdoc_css_any(D)) return;
   memset(best, 0, sizeof best), memset(order, 0, sizeof order);
   if (C->memo == NULL) {
-    C->memo = calloc(SVGDOC_MAX_CSS_COMPOUNDS * ((size_t)D->o.max_depth + 2),
-                     sizeof *C->memo);
+    C->memo = calloc(2 * SVGDOC_MAX_CSS_COMPOUNDS *
+                     ((size_t)D->o.max_depth + 2), sizeof *C->memo);
     if (C->memo == NULL) svgdoc_nomem(D);
   }
   try_chain(D, C->universal, depth, line, col, best, order, m);

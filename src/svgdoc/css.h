@@ -19,7 +19,11 @@
 #define SVGDOC_MAX_CSS_COMPOUNDS 32         /* compounds per selector */
 #define SVGDOC_MAX_CSS_SIMPLES 32           /* simple selectors per compound */
 #define SVGDOC_MAX_CSS_NESTING 8            /* @media inside @media */
-#define SVGDOC_MAX_CSS_TESTS 200000000.0    /* compound tests per document */
+/* Compound tests per document: this many, and as many more per byte of
+** the document read so far (a normal sheet costs a few tests a byte: the
+** cap keeps a hostile one linear in the input, never a hang). */
+#define SVGDOC_MAX_CSS_TESTS 200000000.0
+#define SVGDOC_CSS_TESTS_PER_BYTE 200.0
 
 /* What the matcher knows of an open element (the stream keeps one per
 ** frame, copied into the open element's pool). */
