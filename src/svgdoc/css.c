@@ -37,6 +37,8 @@ typedef struct css_selector {
   unsigned long spec;            /* (ids, classes, types) in 10 bits each */
   size_t decl, ndecl;            /* its rule's declarations */
   size_t next;                   /* the next in its bucket, + 1 (0: none) */
+  unsigned anc[8];               /* Bloom slots its ancestors must fill */
+  int nanc;
 } css_selector;
 
 typedef struct css_decl {
@@ -66,6 +68,7 @@ struct svgdoc_css {
   size_t nbuckets, buckets_room;  /* open addressing, room a power of 2 */
   size_t universal;              /* the selectors without a key, + 1 */
   unsigned *memo;                /* failures: (compound, depth) -> gen */
+  unsigned *bloom;               /* the open elements' tags, ids, classes */
   unsigned gen;
   double tests;
   int full_warned;
@@ -98,12 +101,14 @@ void svgdoc_css_free(svgdoc *D) {
   if (C == NULL) return;
   for (k = 0; k < C->ntexts; k++) free(C->texts[k]);
   free(C->texts), free(C->simples), free(C->compounds), free(C->sels);
-  free(C->decls), free(C->buckets), free(C->memo);
+  free(C->decls), free(C->buckets), free(C->memo), free(C->bloom);
   free(C);
   D->css = NULL;
 }
 
 int svgdoc_css_any(const svgdoc *D) { return D->css && D->css->nsels > 0; }
+
+static size_t hash(int kind, const char *s, size_t n);
 
 /* ---- characters --------------------------------------------------------- */
 
@@ -486,6 +491,43 @@ static size_t hash(int kind, const char *s, size_t n) {
   return h;
 }
 
+/* A counting Bloom filter of the open elements' tags, ids and classes (as
+** browsers keep one): a selector whose left compounds name a key no open
+** element has cannot match, and is not walked. */
+#define BLOOM_SIZE 4096
+
+static unsigned bloom_slot(int kind, const char *s, size_t n) {
+  return (unsigned)((hash(kind, s, n) * 2654435761u) >> 11) & (BLOOM_SIZE - 1);
+}
+
+/* The keys of node e counted in (delta 1) or out (-1). */
+static void bloom_node(struct svgdoc_css *C, const svgdoc_css_node *e,
+                       int delta) {
+  const char *s = e->cls;
+  C->bloom[bloom_slot(S_TAG, e->tag, strlen(e->tag))] += (unsigned)delta;
+  if (e->id) C->bloom[bloom_slot(S_ID, e->id, strlen(e->id))] += (unsigned)delta;
+  while (s && *s) {
+    const char *w;
+    while (*s && space((unsigned char)*s)) s++;
+    for (w = s; *s && !space((unsigned char)*s); s++) {}
+    if (s > w) C->bloom[bloom_slot(S_CLASS, w, (size_t)(s - w))] += (unsigned)delta;
+  }
+}
+
+/* The slots of the keys of selector si's compounds left of the rightmost. */
+static void bloom_selector(struct svgdoc_css *C, css_selector *sel) {
+  size_t k, j;
+  sel->nanc = 0;
+  for (k = 1; k < sel->n; k++) {
+    const css_compound *c = &C->compounds[sel->first + k];
+    for (j = 0; j < c->n && sel->nanc < 8; j++) {
+      const css_simple *x = &C->simples[c->first + j];
+      if (x->kind == S_TAG || x->kind == S_ID || x->kind == S_CLASS)
+        sel->anc[sel->nanc++] = bloom_slot(x->kind, x->name, strlen(x->name));
+    }
+  }
+}
+
 /* The slot of key[0 .. n-1] of this kind (empty when absent). */
 static size_t bucket_slot(const struct svgdoc_css *C, int kind,
                           const char *key, size_t n) {
@@ -653,6 +695,7 @@ static void style_rule(parser *p, size_t ps, size_t pe, size_t b) {
                          &first);
     for (k = s0; k < C->nsels; k++) {
       C->sels[k].decl = first, C->sels[k].ndecl = ndecl;
+      bloom_selector(C, &C->sels[k]);
       if (ndecl > 0) index_selector(p->D, C, k);
     }
   }
@@ -920,6 +963,9 @@ static void try_chain(svgdoc *D, size_t head, size_t depth, unsigned long line,
   for (; head; head = C->sels[head - 1].next) {
     const css_selector *s = &C->sels[head - 1];
     size_t k;
+    int j;
+    for (j = 0; j < s->nanc && C->bloom[s->anc[j]] > 0; j++) {}
+    if (j < s->nanc) continue;         /* an ancestor key no open element has */
     if (++C->gen == 0) {               /* wrapped: the memo starts afresh */
       memset(C->memo, 0, 2 * SVGDOC_MAX_CSS_COMPOUNDS *
              ((size_t)D->o.max_depth + 2) * sizeof *C->memo);
@@ -1008,6 +1054,15 @@ void svgdoc_css_open(svgdoc *D, size_t depth, const char *tag,
   e->children = 0;
   e->first_child = depth == 0 || D->nodes[depth - 1].children == 0;
   if (depth > 0) D->nodes[depth - 1].children++;
+  if (sheet(D)->bloom == NULL) {
+    D->css->bloom = calloc(BLOOM_SIZE, sizeof *D->css->bloom);
+    if (D->css->bloom == NULL) svgdoc_nomem(D);
+  }
+  bloom_node(D->css, e, 1);
+}
+
+void svgdoc_css_close(svgdoc *D, size_t depth) {
+  if (D->css && D->css->bloom) bloom_node(D->css, &D->nodes[depth], -1);
 }
 
 size_t svgdoc_css_store(svgdoc *D, const svgdoc_css_match *m, const char **a,

@@ -64,6 +64,8 @@ void svgdoc_css_for(svgdoc *D, const char **atts, int live, size_t depth,
 ** matcher sees it, copied into the open element's pool. */
 void svgdoc_css_open(svgdoc *D, size_t depth, const char *tag,
                      const char **atts);
+/* The element at depth ends (every opened one must). */
+void svgdoc_css_close(svgdoc *D, size_t depth);
 /* A <style> element's start at depth, its text, its end. */
 void svgdoc_css_style_start(svgdoc *D, const char **atts, size_t depth,
                             unsigned long line, unsigned long col);

@@ -966,6 +966,7 @@ static void end_element(svgdoc *D) {
       drain(D, 0);
   }
   if (D->style_depth) svgdoc_css_style_end(D, D->depth - 1);
+  svgdoc_css_close(D, D->depth - 1);
   D->depth--;
   svgdoc_release(D, &D->stack[D->depth].mark);
 }
