@@ -122,6 +122,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   o.arc_tol = (data[0] & 1) ? 1e-12 : 1e-3;
   o.hidden = (data[0] >> 1) & 1;
   o.stroked = (data[0] >> 2) & 1;
+  o.painted = (data[1] >> 1) & 1;        /* with cut: bits shared, harmless */
+  o.lang = (data[1] >> 2) & 1 ? "de, en-US" : NULL;
   o.unit_px = UNITS[(data[0] >> 3) & 3];
   o.uses = (data[0] >> 5) & 1;
   o.max_depth = (data[0] >> 6) == 3 ? 8 : SVGDOC_MAX_DEPTH;

@@ -49,6 +49,18 @@ describe("arclen.svg: style sheets #svgdoc", function()
     assert.are.equal("sheet-over-attr imp-over-style styleimp-over-imp", ids(d))
   end)
 
+  it("carries every property of the reader's list: the paint's too", function()
+    local body = [[<style>.t{stroke:transparent} .o{opacity:0} .so{stroke-opacity:0}
+        .f{fill:red} .nf{fill:none} g.c{color:red} .cc{stroke:currentColor}</style>
+      <path id="t" class="t" stroke="black" d="M0 0h1"/><path id="o" class="o" stroke="black" d="M0 0h1"/>
+      <path id="so" class="so" stroke="black" d="M0 0h1"/><rect id="f" class="f nf" width="1" height="1"/>
+      <rect id="nf" class="nf" width="1" height="1"/><g class="c"><path id="cc" class="cc" d="M0 0h1"/></g>]]
+    assert.are.equal("cc", ids(doc(body, {stroked = true})))
+    -- painted: t and so fill (black, the initial fill); .nf wins over .f (later)
+    assert.are.equal("t so cc", ids(doc(body, {painted = true})))
+    assert.are.equal("t o so f nf cc", ids(doc(body)))
+  end)
+
   it("specificity first (id > class > type), then the later rule", function()
     local d = doc([[<style>#a{stroke:red} .c{stroke:none} path.c{stroke:red} .c{stroke:none}
         .x{stroke:none} .y{stroke:red} path{stroke:none} *{stroke:red}</style>

@@ -30,7 +30,7 @@ svgelements (python3-svgelements) is asked for a second opinion on the
 structure only: the number of drawn shapes is printed next to ours (it also
 draws what unused symbols, masks and markers hold; its lengths are ~1e-10 off).
 
-Columns: file, units, options (hidden / stroked / -), elements (drawn
+Columns: file, units, options (hidden / stroked / painted / -), elements (drawn
 shapes), L (total length, 30 digits), arcs, arcscale (sum over arcs of
 max(rx', ry', chord'/2), the size of the arc's image in the output units:
 arclen's arc tolerance is arc_tol times it, so an arc's length is within
@@ -76,11 +76,19 @@ VARIANTS = {
     "hand/par-none.svg": [("user", "-"), ("px", "-"), ("mm", "-")],
     "hand/par-slice.svg": [("user", "-"), ("px", "-"), ("in", "-")],
     "hand/display.svg": [("user", "-"), ("user", "hidden"), ("user", "stroked")],
+    "hand/switch.svg": [("user", "-"), ("user", "stroked"), ("user", "painted")],
+    "hand/paint.svg": [("user", "-"), ("user", "stroked"), ("user", "painted")],
+    "graphviz/pipeline.svg": [("user", "-"), ("user", "stroked"), ("user", "painted")],
+    "graphviz/records.svg": [("user", "-"), ("user", "stroked"), ("user", "painted")],
+    "real/vim-gvim.svg": [("user", "-"), ("px", "-"), ("user", "stroked"), ("user", "painted")],
+    "real/inkscape-org.inkscape.Inkscape.svg": [("user", "-"), ("user", "stroked"),
+                                                ("user", "painted")],
+    "real/inkscape-org.inkscape.Inkscape-symbolic.svg": [("user", "-"), ("user", "stroked"),
+                                                         ("user", "painted")],
     "real/inkscape-tutorials-making_markers.svg": [("user", "-"), ("mm", "-")],
-    "real/vim-gvim.svg": [("user", "-"), ("px", "-")],
-    "hand/css.svg": [("user", "-"), ("user", "hidden"), ("user", "stroked")],
+    "hand/css.svg": [("user", "-"), ("user", "hidden"), ("user", "stroked"), ("user", "painted")],
     "hand/em.svg": [("user", "-"), ("mm", "-")],
-    "real/rust-favicon.svg": [("user", "-"), ("user", "stroked")],
+    "real/rust-favicon.svg": [("user", "-"), ("user", "stroked"), ("user", "painted")],
 }
 
 
@@ -222,6 +230,167 @@ def font_size(v, parent, root):
     if u == "%":
         return x / 100 * parent
     return x * {"em": parent, "ex": parent / 2, "rem": root}.get(u, PX.get(u))
+
+
+# ---- what shows: conditional processing and paint -----------------------
+# SVG 2 section 5.8 and section 13, CSS Color 4, as doc/svg.md reads them:
+# the paint of an element as a dict of flags, every colour reduced to
+# "shows" (alpha > 0) or not; a value that does not parse is ignored.
+LANG = ["en"]                                   # the reader's default language
+CSS_NAMED = {
+    "aliceblue", "antiquewhite", "aqua", "aquamarine", "azure", "beige",
+    "bisque", "black", "blanchedalmond", "blue", "blueviolet", "brown",
+    "burlywood", "cadetblue", "chartreuse", "chocolate", "coral",
+    "cornflowerblue", "cornsilk", "crimson", "cyan", "darkblue", "darkcyan",
+    "darkgoldenrod", "darkgray", "darkgreen", "darkgrey", "darkkhaki",
+    "darkmagenta", "darkolivegreen", "darkorange", "darkorchid", "darkred",
+    "darksalmon", "darkseagreen", "darkslateblue", "darkslategray",
+    "darkslategrey", "darkturquoise", "darkviolet", "deeppink", "deepskyblue",
+    "dimgray", "dimgrey", "dodgerblue", "firebrick", "floralwhite",
+    "forestgreen", "fuchsia", "gainsboro", "ghostwhite", "gold", "goldenrod",
+    "gray", "green", "greenyellow", "grey", "honeydew", "hotpink",
+    "indianred", "indigo", "ivory", "khaki", "lavender", "lavenderblush",
+    "lawngreen", "lemonchiffon", "lightblue", "lightcoral", "lightcyan",
+    "lightgoldenrodyellow", "lightgray", "lightgreen", "lightgrey",
+    "lightpink", "lightsalmon", "lightseagreen", "lightskyblue",
+    "lightslategray", "lightslategrey", "lightsteelblue", "lightyellow",
+    "lime", "limegreen", "linen", "magenta", "maroon", "mediumaquamarine",
+    "mediumblue", "mediumorchid", "mediumpurple", "mediumseagreen",
+    "mediumslateblue", "mediumspringgreen", "mediumturquoise",
+    "mediumvioletred", "midnightblue", "mintcream", "mistyrose", "moccasin",
+    "navajowhite", "navy", "oldlace", "olive", "olivedrab", "orange",
+    "orangered", "orchid", "palegoldenrod", "palegreen", "paleturquoise",
+    "palevioletred", "papayawhip", "peachpuff", "peru", "pink", "plum",
+    "powderblue", "purple", "rebeccapurple", "red", "rosybrown", "royalblue",
+    "saddlebrown", "salmon", "sandybrown", "seagreen", "seashell", "sienna",
+    "silver", "skyblue", "slateblue", "slategray", "slategrey", "snow",
+    "springgreen", "steelblue", "tan", "teal", "thistle", "tomato",
+    "turquoise", "violet", "wheat", "white", "whitesmoke", "yellow",
+    "yellowgreen"}
+NUMBER = r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?"
+
+
+def cond_pass(el):
+    if el.get("requiredExtensions") is not None:
+        return False
+    v = el.get("systemLanguage")
+    if v is None:
+        return True
+    for t in (t.strip().lower() for t in v.split(",")):
+        for u in LANG:
+            if t == u or (t.startswith(u + "-") and len(t) > len(u) + 1):
+                return True
+    return False
+
+
+def alpha_of(v):
+    """An <alpha-value> or colour component: its value (percent / 100,
+    none 0), or None when it is neither."""
+    v = v.strip()
+    if v == "none":
+        return mp.mpf(0)
+    m = re.fullmatch("(%s)(%%|[a-z]*)" % NUMBER, v)
+    if not m:
+        return None
+    return mp.mpf(m.group(1)) / (100 if m.group(2) == "%" else 1)
+
+
+def color_shows(v):
+    """True / False (alpha > 0 or not) for a colour, None if v is none."""
+    if v == "transparent":
+        return False
+    if v in CSS_NAMED or v in ("canvastext", "windowtext", "buttontext"):
+        return True
+    m = re.fullmatch(r"#([0-9a-f]+)", v)
+    if m:
+        h = m.group(1)
+        if len(h) in (3, 6):
+            return True
+        if len(h) in (4, 8):
+            return int(h[len(h) // 4 * 3:], 16) != 0
+        return None
+    m = re.fullmatch(r"(rgba?|hsla?|hwb|lab|lch|oklab|oklch)\s*\((.*)\)", v)
+    if not m:
+        return None
+    inner = m.group(2)
+    if "," in inner:
+        parts = inner.split(",")
+        alpha = parts[3] if len(parts) == 4 else "1"
+        comps = parts[:3] if len(parts) in (3, 4) else None
+    else:
+        left, _, right = inner.partition("/")
+        comps = left.split() if len(left.split()) == 3 else None
+        alpha = right if "/" in inner else "1"
+    if comps is None or any(alpha_of(c) is None for c in comps) or alpha_of(alpha) is None:
+        return None
+    return alpha_of(alpha) > 0
+
+
+def paint_kind(v, context):
+    """"shown", "none", "current", or None (not a paint)."""
+    if v == "none":
+        return "none"
+    if v == "currentcolor":
+        return "current"
+    if v in ("context-fill", "context-stroke"):
+        return context[v[8:]] if context else "none"
+    if v.startswith("url("):
+        rest = v[v.index(")") + 1:].strip() if ")" in v else None
+        if rest is None or (rest and rest not in ("none", "currentcolor") and color_shows(rest) is None):
+            return None
+        return "shown"
+    c = color_shows(v)
+    return None if c is None else ("shown" if c else "none")
+
+
+INITIAL = {"fill": "shown", "stroke": "none", "color": True, "fill-opacity": True,
+           "stroke-opacity": True, "stroke-width": True, "opacity": True}
+
+
+def paint_of(el, parent, context):
+    """The element's paint from its parent's (each flag True: shows)."""
+    p = dict(parent)
+    for k in ("color", "fill", "stroke", "fill-opacity", "stroke-opacity", "stroke-width", "opacity"):
+        v = prop(el, k)
+        if v is None or v in ("inherit", "unset"):
+            continue
+        if v == "initial":
+            if k != "opacity":
+                p[k] = INITIAL[k]
+            continue
+        if k == "color":
+            c = None if v == "currentcolor" else color_shows(v)
+        elif k in ("fill", "stroke"):
+            c = paint_kind(v, context)
+        elif k == "stroke-width":
+            m = re.fullmatch("(%s)(%%|[a-z]*)" % NUMBER, v)
+            c = None if not m or mp.mpf(m.group(1)) < 0 else mp.mpf(m.group(1)) != 0
+        else:
+            a = alpha_of(v) if v != "none" else None
+            c = None if a is None else a > 0
+        if c is not None and not (k == "opacity" and c):
+            p[k] = c                               # opacity only ever turns off
+    return p
+
+
+def shows(p, which):
+    k = p[which]
+    ok = k == "shown" or (k == "current" and p["color"])
+    return ok and p[which + "-opacity"] and p["opacity"]
+
+
+def stroke_shows(p):
+    return shows(p, "stroke") and p["stroke-width"]
+
+
+def fill_shows(p, tag):
+    return tag != "line" and shows(p, "fill")
+
+
+def context_of(p):
+    """What context-fill / context-stroke give inside a use of paint p."""
+    return {"fill": "shown" if shows(dict(p, opacity=True), "fill") else "none",
+            "stroke": "shown" if stroke_shows(dict(p, opacity=True)) else "none"}
 
 
 def length(s, kind, vp):
@@ -471,11 +640,13 @@ class Doc:
         if r.get("transform"):
             ctm = mul(ctm, transform(r.get("transform")))
         visible = prop(r, "visibility") not in ("hidden", "collapse")
-        stroked = prop(r, "stroke") not in (None, "none", "inherit")
+        paint = paint_of(r, INITIAL, None)
+        if not cond_pass(r):
+            return
         for ch in r:
-            self.walk(ch, ctm, vp, visible, stroked, [], None, FONT[1])
+            self.walk(ch, ctm, vp, visible, paint, [], None, FONT[1])
 
-    def walk(self, el, ctm, vp, visible, stroked, chain, use, fs):
+    def walk(self, el, ctm, vp, visible, paint, chain, use, fs):
         if not isinstance(el.tag, str):
             return                                  # comments, processing instructions
         ns, tag = split(el.tag)
@@ -490,14 +661,9 @@ class Doc:
             visible = False
         elif v == "visible":
             visible = True
-        st = prop(el, "stroke")
-        if st == "none":
-            stroked = False
-        elif st not in (None, "inherit"):
-            stroked = True
-        sw = prop(el, "stroke-width")
-        if sw is not None and NUM.match(sw) and mp.mpf(NUM.match(sw).group(0)) == 0:
-            stroked = False
+        if not cond_pass(el):
+            return
+        paint = paint_of(el, paint, use and use["context"])
         via_use = use is not None and use["root"] is el
         if tag in NOT_RENDERED and not (tag == "symbol" and via_use):
             return
@@ -526,7 +692,9 @@ class Doc:
             d = d_of(tag, el, vp)
             if d is None or not (visible or self.option == "hidden"):
                 return
-            if self.option == "stroked" and not stroked:
+            if self.option == "stroked" and not stroke_shows(paint):
+                return
+            if self.option == "painted" and not (stroke_shows(paint) or fill_shows(paint, tag)):
                 return
             self.count += 1
             A = ctm[:4]
@@ -544,17 +712,16 @@ class Doc:
             target = self.ids[href[1:]]
             assert href[1:] not in chain, "use cycle"
             u = {"root": target, "w": attr_len(el, "width", "x", vp, None),
-                 "h": attr_len(el, "height", "y", vp, None)}
+                 "h": attr_len(el, "height", "y", vp, None), "context": context_of(paint)}
             m = mul(ctm, tr(attr_len(el, "x", "x", vp, 0), attr_len(el, "y", "y", vp, 0)))
-            self.walk(target, m, vp, visible, stroked, chain + [href[1:]], u, fs)
+            self.walk(target, m, vp, visible, paint, chain + [href[1:]], u, fs)
             return
         children = [c for c in el if isinstance(c.tag, str)]
         if tag == "switch":                         # SVG 2 section 5.8: the first that passes
-            first = [c for c in children if split(c.tag)[0] in (None, SVG_NS)
-                     and c.get("requiredExtensions") is None]
+            first = [c for c in children if split(c.tag)[0] in (None, SVG_NS) and cond_pass(c)]
             children = first[:1]
         for ch in children:
-            self.walk(ch, ctm, vp, visible, stroked, chain, use and dict(use, root=None), fs)
+            self.walk(ch, ctm, vp, visible, paint, chain, use and dict(use, root=None), fs)
 
 
 def second_opinion(path):

@@ -50,7 +50,12 @@ options:
   --n N           fit: Gauss-Legendre points per span
   --units U       SVG documents: user (the root's user units, default), px (the
                   viewBox mapped onto width/height, 96 px per inch), mm, cm, in, pt, pc
-  --stroked       SVG documents: only shapes with a stroke (for plotters)
+  --stroked       SVG documents: only shapes whose stroke paints (for plotters:
+                  not none, not transparent, opacity above 0, width above 0)
+  --painted       SVG documents: only shapes whose stroke or fill paints
+                  (without either: every shape, whatever its paint)
+  --lang L        SVG documents: the user languages systemLanguage is matched
+                  against (default en; a list: de,en-US)
   --hidden        SVG documents: also display:none and visibility:hidden shapes
   --quiet         no progress line (length and stat show one on a terminal
                   when a document takes more than a second)
@@ -88,9 +93,9 @@ local function fail(msg, status)
 end
 
 local VALUED = {["--method"] = true, ["--tol"] = true, ["--step"] = true, ["--n"] = true,
-                ["--units"] = true, ["--arcs"] = true}
+                ["--units"] = true, ["--arcs"] = true, ["--lang"] = true}
 local FLAGS = {["--json"] = "json", ["--stroked"] = "stroked", ["--hidden"] = "hidden",
-               ["--quiet"] = "quiet"}
+               ["--quiet"] = "quiet", ["--painted"] = "painted"}
 
 -- Split argv into options and positional arguments.
 local function parse(argv)
@@ -214,8 +219,16 @@ local function svg_opts(opts)
     end
     o.units = opts.units
   end
+  if opts.stroked and opts.painted then fail("--stroked and --painted exclude each other", 2) end
   if opts.stroked then o.stroked = true end
+  if opts.painted then o.painted = true end
   if opts.hidden then o.hidden = true end
+  if opts.lang then
+    if not svg_lib().lang_ok(opts.lang) then
+      fail(format("--lang: '%s' is not a list of language tags (en, de,en-US)", opts.lang), 2)
+    end
+    o.lang = opts.lang
+  end
   if opts.arcs then
     if opts.arcs ~= "conics" and opts.arcs ~= "cubics" then
       fail(format("--arcs: '%s' is neither conics nor cubics", opts.arcs), 2)

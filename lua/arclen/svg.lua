@@ -47,6 +47,14 @@ local format, shortest = numtext.format, numtext.shortest   -- '.' in any locale
 local find, sub, floor, huge = string.find, string.sub, math.floor, math.huge
 local abs, sqrt = math.abs, math.sqrt
 
+-- Is s a list of language tags, as the lang option takes (ASCII letters,
+-- digits and '-', separated by commas and spaces; under 256 bytes)?  The
+-- reader's own check (cond.c), in Lua for the messages.
+function M.lang_ok(s)
+  return type(s) == "string" and #s > 0 and #s < 256 and find(s, "^[A-Za-z0-9%-, ]+$") ~= nil
+    and find(s, "[A-Za-z0-9]") ~= nil
+end
+
 local MAX_DEPTH = 1000                -- element nesting (the reader's cap)
 local MAX_ELEMENTS = 1000000          -- drawn elements svg.read keeps (default)
 local CHUNK = 65536                   -- bytes per read of a file
@@ -112,7 +120,7 @@ end
 -- over.  Returns the document without its elements.
 local function stream(o, name, next_chunk, uses, scan, on_element, size)
   local r = svgdoc.new({arc_tol = o.arc_tol or o.tol, hidden = o.hidden, arcs = o.arcs,
-    stroked = o.stroked, max_depth = o.max_depth or MAX_DEPTH, uses = uses,
+    stroked = o.stroked, painted = o.painted, lang = o.lang, max_depth = o.max_depth or MAX_DEPTH, uses = uses,
     unit_px = o.units ~= "user" and UNITS[o.units] or 0, stream = true})
   if scan then
     for _ = 1, huge do
@@ -165,7 +173,7 @@ local function stream(o, name, next_chunk, uses, scan, on_element, size)
 end
 
 -- The options of read, parse and each: tol, arc_tol, method, units,
--- hidden, stroked, measure, max_depth, arcs, max_elements, progress; each's
+-- hidden, stroked, painted, lang, measure, max_depth, arcs, max_elements, progress; each's
 -- name.
 -- n: the options' argument position.
 local function read_opts(opts, fname, cap, n)
@@ -188,8 +196,15 @@ local function read_opts(opts, fname, cap, n)
       end
     elseif k == "arcs" then
       if v ~= "conics" and v ~= "cubics" then argerror4(2, fname, 'arcs must be "conics" or "cubics"') end
-    elseif k == "hidden" or k == "stroked" or k == "measure" then
+    elseif k == "hidden" or k == "stroked" or k == "painted" or k == "measure" then
       if type(v) ~= "boolean" then argerror4(2, fname, k .. " must be a boolean") end
+      if (k == "stroked" and v and opts.painted) or (k == "painted" and v and opts.stroked) then
+        argerror4(2, fname, "stroked and painted exclude each other")
+      end
+    elseif k == "lang" then
+      if type(v) ~= "string" or not M.lang_ok(v) then
+        argerror4(2, fname, 'lang must be language tags separated by commas ("en", "de,en-US")')
+      end
     elseif k == "max_depth" then
       if type(v) ~= "number" or v ~= floor(v) or v < 1 or v > MAX_DEPTH then
         argerror4(2, fname, format("max_depth must be an integer in [1, %d]", MAX_DEPTH))

@@ -677,6 +677,8 @@ static void job_svgdoc(sink *s) {
       o.unit_px = v ? 96 / 25.4 : 0;
       o.hidden = v;
       o.stroked = v;
+      o.painted = 0;
+      o.lang = NULL;
       o.max_depth = SVGDOC_MAX_DEPTH;
       o.uses = 1;
       o.stream = 0;                    /* collected: put_doc reads them all */
@@ -759,7 +761,8 @@ static int build_shared(void) {
     svgdoc_options so;
     so.arc_tol = 1e-12;
     so.unit_px = 0;
-    so.hidden = so.stroked = 0;
+    so.hidden = so.stroked = so.painted = 0;
+    so.lang = NULL;
     so.max_depth = SVGDOC_MAX_DEPTH;
     so.uses = 1;
     so.stream = 0;

@@ -3,7 +3,9 @@
 ** module arclen.svgdoc, a shared object of its own because it links
 ** libexpat, which arclen.core does without.  arclen.svg is its user.
 **   svgdoc.new(opts) -> reader    opts: arc_tol, unit_px (0: user units),
-**                                 hidden, stroked, max_depth, uses, stream,
+**                                 hidden, stroked, painted, lang (user
+**                                 languages for systemLanguage, default
+**                                 "en"), max_depth, uses, stream,
 **                                 max_held (the queue behind a forward use)
 **   reader:scan(s)                optional, before feed: the whole document
 **                                 once, for the ids <use> refers to
@@ -19,13 +21,14 @@
 **                                 (the command line's progress line)
 ** A located error is raised as {line =, col =, msg =}; arclen.svg names
 ** the document in it.  Each element is {id, tag, layer, line, col,
-** stroked, use, d, ctm = {a, b, c, d, e, f}, subpaths} (subpaths as
+** stroked, filled, use, d, ctm = {a, b, c, d, e, f}, subpaths} (subpaths as
 ** arclen.core.svg_pathdata returns them).  Warnings come formatted as
 ** "NAME:LINE:COL: message".
 */
 #include <string.h>
 
 #include "lua/binding.h"
+#include "svgdoc/cond.h"
 #include "svgdoc/svgdoc.h"
 
 #include <stdio.h>
@@ -91,6 +94,15 @@ static int l_new(lua_State *L) {
   o.max_depth = (int)depth;
   o.hidden = opt_boolean(L, "hidden");
   o.stroked = opt_boolean(L, "stroked");
+  o.painted = opt_boolean(L, "painted");
+  lua_getfield(L, 1, "lang");
+  o.lang = NULL;
+  if (!lua_isnil(L, -1)) {
+    if (lua_type(L, -1) != LUA_TSTRING || !svgdoc_cond_lang_ok(lua_tostring(L, -1)))
+      luaL_argerror(L, 1, "lang must be language tags separated by commas "
+                    "(\"en\", \"de,en-US\")");
+    o.lang = lua_tostring(L, -1);        /* copied by svgdoc_new */
+  }
   o.uses = opt_boolean(L, "uses");
   o.stream = opt_boolean(L, "stream");
   held = opt_number(L, "max_held", SVGDOC_MAX_HELD);
@@ -112,6 +124,7 @@ static int l_new(lua_State *L) {
   lua_setmetatable(L, -2);
   *D = svgdoc_new(&o);
   if (*D == NULL) return luaL_error(L, "not enough memory");
+  lua_remove(L, -2);                     /* lang, now copied */
   return 1;
 }
 
@@ -191,6 +204,8 @@ static void push_element(lua_State *L, const svgdoc_element *e) {
   lua_setfield(L, -2, "col");
   lua_pushboolean(L, e->stroked);
   lua_setfield(L, -2, "stroked");
+  lua_pushboolean(L, e->filled);
+  lua_setfield(L, -2, "filled");
   lua_createtable(L, 6, 0);
   for (k = 0; k < 6; k++) {
     lua_pushnumber(L, e->ctm[k]);

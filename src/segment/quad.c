@@ -199,11 +199,24 @@ int arclen_quad_length(const double *p, int dim, double t0, double t1,
   return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
 }
 
+/* out into the points' bounding box: the curve's points (and its
+** blossom's, for u, v in [0, 1]) are convex combinations of P0, P1, P2, so
+** only rounding leaves the box -- past DBL_MAX for points at -1.797e308. */
+static void into_hull(const double *p, int dim, double *out) {
+  int k;
+  for (k = 0; k < dim; k++) {
+    double lo = fmin(p[k], fmin(p[dim + k], p[2 * dim + k]));
+    double hi = fmax(p[k], fmax(p[dim + k], p[2 * dim + k]));
+    out[k] = fmin(fmax(out[k], lo), hi);
+  }
+}
+
 void arclen_quad_point(const double *p, int dim, double t, double *out) {
   double s = 1 - t, b0 = s * s, b1 = 2 * s * t, b2 = t * t;
   int k;
   for (k = 0; k < dim; k++)     /* Bernstein: P0 and P2 exactly at the ends */
     out[k] = b0 * p[k] + b1 * p[dim + k] + b2 * p[2 * dim + k];
+  into_hull(p, dim, out);
 }
 
 void arclen_quad_derivative(const double *p, int dim, double t,
@@ -222,6 +235,7 @@ static void blossom(const double *p, int dim, double u, double v,
   int k;
   for (k = 0; k < dim; k++)
     out[k] = b0 * p[k] + b1 * p[dim + k] + b2 * p[2 * dim + k];
+  into_hull(p, dim, out);
 }
 
 void arclen_quad_sub(const double *p, int dim, double t0, double t1,

@@ -391,9 +391,9 @@ void svgdoc_viewbox_matrix(svgdoc *D, unsigned long line, unsigned long col,
 
 /* ---- properties ------------------------------------------------------ */
 
-static const char *const PROPS[SVGDOC_NPROPS] = {"display", "visibility",
-                                                 "stroke", "stroke-width",
-                                                 "font-size"};
+static const char *const PROPS[SVGDOC_NPROPS] = {
+  "display", "visibility", "stroke", "stroke-width", "fill", "fill-opacity",
+  "stroke-opacity", "opacity", "color", "font-size"};
 
 int svgdoc_prop_index(const char *name) {
   int k;

@@ -25,9 +25,12 @@ typedef struct svgdoc_viewport {
 } svgdoc_viewport;
 
 /* The properties the reader uses, cascaded from the presentation
-** attributes, style sheets and style="" (css.c), trimmed and lower-cased. */
+** attributes, style sheets and style="" (css.c), trimmed and lower-cased.
+** The paint's (fill ... color) decide what shows (paint.c). */
 enum { SVGDOC_DISPLAY, SVGDOC_VISIBILITY, SVGDOC_STROKE,
-       SVGDOC_STROKE_WIDTH, SVGDOC_FONT_SIZE, SVGDOC_NPROPS };
+       SVGDOC_STROKE_WIDTH, SVGDOC_FILL, SVGDOC_FILL_OPACITY,
+       SVGDOC_STROKE_OPACITY, SVGDOC_OPACITY, SVGDOC_COLOR, SVGDOC_FONT_SIZE,
+       SVGDOC_NPROPS };
 
 typedef struct svgdoc_buffer {
   char *s;
@@ -60,6 +63,7 @@ typedef struct svgdoc_idtable {
 
 struct svgdoc {
   svgdoc_options o;
+  char *lang;                            /* o.lang copied (cond.c) */
   void *parser;                          /* XML_Parser */
   jmp_buf *on_error;                     /* where svgdoc_fail jumps */
   int failed, finished, scanned;

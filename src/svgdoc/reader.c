@@ -19,8 +19,10 @@
 
 #include "curve/numeric.h"
 #include "svg/decimal.h"
+#include "svgdoc/cond.h"
 #include "svgdoc/css.h"
 #include "svgdoc/internal.h"
+#include "svgdoc/paint.h"
 
 #define SVG_NS "http://www.w3.org/2000/svg"
 #define XLINK_HREF "http://www.w3.org/1999/xlink\1href"
@@ -54,7 +56,8 @@ static int find_tag(const char *const *list, int n, const char *tag) {
 typedef struct svgdoc_frame {
   svgdoc_mark mark;              /* the tmp pool when it opened */
   size_t depth;
-  int skip, top, is_switch, switch_done, visible, stroked;
+  int skip, top, is_switch, switch_done, visible;
+  svgdoc_paint paint;            /* what its stroke and fill show */
   svgdoc_matrix ctm;
   svgdoc_viewport vp;
   const char *layer;
@@ -66,7 +69,8 @@ typedef struct svgdoc_use {
   unsigned long line, col;
   svgdoc_matrix ctm;
   svgdoc_viewport vp;
-  int visible, stroked, has_w, has_h;
+  int visible, has_w, has_h;
+  svgdoc_paint paint;
   double w, h;
   const char **chain;            /* the ids being expanded around it */
   size_t nchain;
@@ -391,7 +395,8 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
   e->use = own(&at, use);
   e->d = own(&at, d);
   e->line = line, e->col = col;
-  e->stroked = f->stroked;
+  e->stroked = svgdoc_paint_stroked(&f->paint);
+  e->filled = svgdoc_paint_filled(&f->paint, tag);
   memcpy(e->ctm, C, sizeof e->ctm);
   emit(D, e);
 }
@@ -399,12 +404,13 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
 static void expand(svgdoc *D, const svgdoc_use *u);
 static void use_at_top(svgdoc *D, svgdoc_use *u);
 
-/* Lua's tonumber(s) == 0 for the number-like prefix of a stroke-width
-** (a width of zero draws no stroke), read in any locale. */
-static int zero_width(const char *s) {
-  size_t n = strspn(s, "0123456789.eE+-");
-  double v;
-  return n > 0 && arclen_decimal_scan(s, n, 0, &v) == n && v == 0;
+/* Is a shape with paint p drawn in the document's mode: every shape, or
+** those whose stroke (o.stroked), stroke or fill (o.painted) shows? */
+static int shown(const svgdoc *D, const svgdoc_paint *p, const char *tag) {
+  if (D->o.stroked) return svgdoc_paint_stroked(p);
+  if (D->o.painted)
+    return svgdoc_paint_stroked(p) || svgdoc_paint_filled(p, tag);
+  return 1;
 }
 
 /* Is the CTM's linear part [[a c] [b d]] singular: is its smaller
@@ -442,17 +448,18 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
   if (f->depth > (size_t)D->o.max_depth)
     svgdoc_fail(D, line, col, "elements nested deeper than %d", D->o.max_depth);
   if (parent->skip || !svgns) return;            /* a foreign element */
-  if (parent->is_switch) {      /* SVG 2 section 5.8: the first that passes */
-    if (parent->switch_done || svgdoc_attr(atts, "requiredExtensions")) return;
-    parent->switch_done = 1;
-  }
+  /* SVG 2 section 5.8: one whose tests fail is not rendered; a switch
+  ** renders its first child element that passes */
+  if (parent->is_switch && parent->switch_done) return;
+  if (!svgdoc_cond_pass(atts, D->lang)) return;
+  if (parent->is_switch) parent->switch_done = 1;
   svgdoc_css_for(D, atts, sh == NULL, D->depth, line, col, &M);
   svgdoc_properties(D, atts, &M, P);
   memcpy(f->ctm, parent->ctm, sizeof f->ctm);
   f->vp = parent->vp;
   f->vp.em = svgdoc_font_size(D, line, col, P[SVGDOC_FONT_SIZE], parent->vp.em,
                               parent->vp.rem);
-  f->visible = parent->visible, f->stroked = parent->stroked;
+  f->visible = parent->visible, f->paint = parent->paint;
   f->layer = parent->layer;
   f->top = f->is_switch = f->switch_done = 0;
   if (P[SVGDOC_DISPLAY] && strcmp(P[SVGDOC_DISPLAY], "none") == 0 &&
@@ -462,11 +469,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
     if (strcmp(s, "hidden") == 0 || strcmp(s, "collapse") == 0) f->visible = 0;
     else if (strcmp(s, "visible") == 0) f->visible = 1;
   }
-  if ((s = P[SVGDOC_STROKE]) != NULL) {
-    if (strcmp(s, "none") == 0) f->stroked = 0;
-    else if (strcmp(s, "inherit") != 0) f->stroked = 1;
-  }
-  if ((s = P[SVGDOC_STROKE_WIDTH]) != NULL && zero_width(s)) f->stroked = 0;
+  svgdoc_paint_apply(&f->paint, P, sh ? &sh->u->paint : NULL);
   if (lookup(NOT_RENDERED, tag) >= 0 && !(sh && sh->root && is_symbol)) return;
   skipped = find_tag(svgdoc_skipped_tags, SVGDOC_NSKIPPED, tag);
   if (skipped >= 0) {
@@ -541,7 +544,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
   }
   if (shape >= 0) {
     const char *d = svgdoc_shape_data(D, line, col, tag, atts, &f->vp);
-    if (d && (f->visible || D->o.hidden) && (f->stroked || !D->o.stroked))
+    if (d && (f->visible || D->o.hidden) && shown(D, &f->paint, tag))
       draw(D, f, SHAPES[shape], d, atts, line, col, sh);
     f->skip = 1;                     /* shapes have no rendered children */
   } else if (strcmp(tag, "use") == 0) {
@@ -573,7 +576,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
       svgdoc_translate(ux, uy, M);
       svgdoc_mul(f->ctm, M, u->ctm);
       u->vp = *vp;
-      u->visible = f->visible, u->stroked = f->stroked;
+      u->visible = f->visible, u->paint = f->paint;
       u->has_w = hw, u->w = uw, u->has_h = hh, u->h = uh;
       u->chain = sh ? sh->chain : NULL;
       u->nchain = sh ? sh->nchain : 0;
@@ -640,7 +643,7 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
   memset(&stack[0], 0, sizeof stack[0]);
   memcpy(stack[0].ctm, u->ctm, sizeof stack[0].ctm);
   stack[0].vp = u->vp;
-  stack[0].visible = u->visible, stack[0].stroked = u->stroked;
+  stack[0].visible = u->visible, stack[0].paint = u->paint;
   stack[0].layer = u->layer;
   for (i = start; i <= last; i++) {
     const svgdoc_event *x = &D->events[i];
@@ -819,17 +822,17 @@ static void open_root(svgdoc *D, const char **atts, unsigned long line,
     warn(D, line, col, "width or height zero: nothing drawn");
     return;
   }
-  f->visible = 1, f->stroked = 0, f->layer = "(root)", f->top = 1;
+  f->visible = 1, f->layer = "(root)", f->top = 1;
+  svgdoc_paint_initial(&f->paint);
   if (P[SVGDOC_DISPLAY] && strcmp(P[SVGDOC_DISPLAY], "none") == 0 &&
       !D->o.hidden)
     return;
+  if (!svgdoc_cond_pass(atts, D->lang)) return;  /* SVG 2 section 5.8.2 */
   f->skip = 0;
   if ((s = P[SVGDOC_VISIBILITY]) != NULL &&
       (strcmp(s, "hidden") == 0 || strcmp(s, "collapse") == 0))
     f->visible = 0;
-  if ((s = P[SVGDOC_STROKE]) != NULL && strcmp(s, "none") != 0 &&
-      strcmp(s, "inherit") != 0)
-    f->stroked = 1;
+  svgdoc_paint_apply(&f->paint, P, NULL);
   if ((s = svgdoc_attr(atts, "transform")) != NULL) {  /* SVG 2 allows it */
     svgdoc_matrix T;
     svgdoc_transform(D, line, col, s, T);
@@ -1037,6 +1040,8 @@ svgdoc *svgdoc_new(const svgdoc_options *o) {
   svgdoc *D = calloc(1, sizeof *D);
   if (D == NULL) return NULL;
   D->o = *o;
+  D->lang = svgdoc_message("%s", o->lang ? o->lang : SVGDOC_DEFAULT_LANG);
+  D->o.lang = NULL;                      /* the caller's: D->lang is ours */
   if (D->o.max_held == 0 || D->o.max_held > SVGDOC_MAX_HELD)
     D->o.max_held = SVGDOC_MAX_HELD;
   D->record = o->uses;
@@ -1046,7 +1051,7 @@ svgdoc *svgdoc_new(const svgdoc_options *o) {
   D->nodes = malloc(((size_t)o->max_depth + 2) * sizeof *D->nodes);
   D->parser = XML_ParserCreateNS(NULL, '\1');
   if (D->stack == NULL || D->open_ev == NULL || D->nodes == NULL ||
-      D->parser == NULL) {
+      D->parser == NULL || D->lang == NULL) {
     svgdoc_free(D);
     return NULL;
   }
@@ -1077,6 +1082,7 @@ void svgdoc_free(svgdoc *D) {
   free(D->stack), free(D->open_ev), free(D->events);
   free(D->ids.keys), free(D->ids.vals), free(D->refs.keys), free(D->refs.vals);
   free(D->held_q), free(D->batch), free(D->warnings), free(D->err_msg);
+  free(D->lang);
   free(D);
 }
 

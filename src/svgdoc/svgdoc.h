@@ -33,7 +33,11 @@ typedef struct svgdoc_options {
                         ** conics; ARCLEN_PD_ARCS_CUBICS: cubics only */
   double unit_px;       /* px per output unit; 0: the root's user units */
   int hidden;           /* draw display:none and visibility:hidden too */
-  int stroked;          /* only stroked shapes */
+  int stroked;          /* only shapes whose stroke paints (paint.c) */
+  int painted;          /* only shapes whose stroke or fill paints (stroked
+                        ** wins when both are set) */
+  const char *lang;     /* user languages for systemLanguage, a comma-
+                        ** separated list (NULL: "en"; copied) */
   int max_depth;        /* in [1, SVGDOC_MAX_DEPTH] */
   int uses;             /* the document may contain <use>: keep subtrees */
   int stream;           /* hand the elements over per feed, keep none */
@@ -46,7 +50,7 @@ typedef struct svgdoc_element {
   const char *use;      /* the id a <use> instantiated this from */
   const char *d;        /* the shape's path data in its own coordinates */
   unsigned long line, col;
-  int stroked;
+  int stroked, filled;  /* its stroke, its fill paints something */
   double ctm[6];        /* onto the document's coordinates */
   arclen_pathdata pd;   /* the segments of d mapped by ctm */
 } svgdoc_element;
