@@ -73,6 +73,8 @@ static void put_s(sink *s, const char *str) {
   if (str == NULL) put(s, &none, 1);
   else put(s, str, strlen(str) + 1);
 }
+/* svgdoc_shape_d's pieces (a d and its terminating zero with put_s's). */
+static void put_bytes(void *s, const char *bytes, size_t n) { put(s, bytes, n); }
 static void put_info(sink *s, const arclen_info *in) {
   put_l(s, in->evals);
   put_l(s, in->pieces);
@@ -627,7 +629,8 @@ static void put_doc(sink *s, const svgdoc *D) {
     put_s(s, e->tag);
     put_s(s, e->layer);
     put_s(s, e->use);
-    put_s(s, e->d);
+    svgdoc_shape_d(&e->shape, put_bytes, s);
+    put(s, "", 1);
     put_l(s, (long)e->line);
     put_l(s, (long)e->col);
     put_l(s, e->stroked);
@@ -683,6 +686,7 @@ static void job_svgdoc(sink *s) {
       o.uses = 1;
       o.stream = 0;                    /* collected: put_doc reads them all */
       o.max_held = 0;
+      o.shape_text = 0;
       o.arcs = ARCLEN_PD_ARCS_CUBICS;     /* measured below as cubics */
       put_s(s, docs[i].name);
       D = svgdoc_new(&o);
@@ -767,6 +771,7 @@ static int build_shared(void) {
     so.uses = 1;
     so.stream = 0;
     so.max_held = 0;
+    so.shape_text = 0;
     so.arcs = ARCLEN_PD_ARCS_CUBICS;
     shared_doc = svgdoc_new(&so);
     if (shared_doc == NULL || svgdoc_feed(shared_doc, DOCS[0], strlen(DOCS[0])) != 0 ||

@@ -6,7 +6,9 @@
 **                                 hidden, stroked, painted, lang (user
 **                                 languages for systemLanguage, default
 **                                 "en"), max_depth, uses, stream,
-**                                 max_held (the queue behind a forward use)
+**                                 max_held (the queue behind a forward use),
+**                                 shape_text (for the specs: basic shapes
+**                                 written as path data and that parsed)
 **   reader:scan(s)                optional, before feed: the whole document
 **                                 once, for the ids <use> refers to
 **   reader:feed(s) -> elements    the next bytes of the document; with
@@ -22,7 +24,8 @@
 ** A located error is raised as {line =, col =, msg =}; arclen.svg names
 ** the document in it.  Each element is {id, tag, layer, line, col,
 ** stroked, filled, use, d, ctm = {a, b, c, d, e, f}, subpaths} (subpaths as
-** arclen.core.svg_pathdata returns them).  Warnings come formatted as
+** arclen.core.svg_pathdata returns them; a basic shape's d is written
+** when first read, element_index).  Warnings come formatted as
 ** "NAME:LINE:COL: message".
 */
 #include <string.h>
@@ -105,6 +108,7 @@ static int l_new(lua_State *L) {
   }
   o.uses = opt_boolean(L, "uses");
   o.stream = opt_boolean(L, "stream");
+  o.shape_text = opt_boolean(L, "shape_text");   /* for the specs */
   held = opt_number(L, "max_held", SVGDOC_MAX_HELD);
   luaL_argcheck(L, held >= 1 && held <= SVGDOC_MAX_HELD, 1, "max_held out of range");
   o.max_held = (size_t)held;
@@ -190,6 +194,64 @@ static void set_string(lua_State *L, const char *k, const char *v) {
   lua_setfield(L, -2, k);
 }
 
+/* A basic shape's numbers, kept in a userdata for its d. */
+typedef union shape_head {
+  struct {
+    size_t n;
+    int kind;
+  } h;
+  double align;                  /* the numbers follow, aligned */
+} shape_head;
+
+static void add_bytes(void *b, const char *bytes, size_t n) {
+  luaL_addlstring((luaL_Buffer *)b, bytes, n);
+}
+
+/* __index of a basic shape's element: its d written when first asked for
+** (the numbers of the shape in the metatable) and kept; nil for any other
+** key.  Writing each d up front was half the reader's work (doc/benchmarks.md). */
+static int element_index(lua_State *L) {
+  const shape_head *u;
+  svgdoc_shape s;
+  luaL_Buffer b;
+  if (lua_type(L, 2) != LUA_TSTRING || strcmp(lua_tostring(L, 2), "d") != 0)
+    return 0;
+  if (!lua_getmetatable(L, 1)) return 0;
+  lua_getfield(L, -1, "shape");
+  u = (const shape_head *)lua_touserdata(L, -1);
+  if (u == NULL) return 0;
+  s.kind = u->h.kind;
+  s.d = NULL;
+  s.n = u->h.n;
+  s.v = (const double *)(u + 1);
+  luaL_buffinit(L, &b);
+  svgdoc_shape_d(&s, add_bytes, &b);
+  luaL_pushresult(&b);
+  lua_pushliteral(L, "d");
+  lua_pushvalue(L, -2);
+  lua_rawset(L, 1);
+  return 1;
+}
+
+/* d: a path's as written; a basic shape's made on first access (its
+** numbers copied into the element's metatable). */
+static void set_d(lua_State *L, const svgdoc_shape *s) {
+  shape_head *u;
+  if (s->kind == SVGDOC_SHAPE_PATH) {
+    set_string(L, "d", s->d);
+    return;
+  }
+  lua_createtable(L, 0, 2);
+  lua_pushcfunction(L, element_index);
+  lua_setfield(L, -2, "__index");
+  u = (shape_head *)lua_newuserdata(L, sizeof *u + s->n * sizeof *s->v);
+  u->h.n = s->n;
+  u->h.kind = s->kind;
+  if (s->n) memcpy(u + 1, s->v, s->n * sizeof *s->v);
+  lua_setfield(L, -2, "shape");
+  lua_setmetatable(L, -2);
+}
+
 static void push_element(lua_State *L, const svgdoc_element *e) {
   int k;
   lua_createtable(L, 0, 10);
@@ -197,7 +259,7 @@ static void push_element(lua_State *L, const svgdoc_element *e) {
   set_string(L, "tag", e->tag);
   set_string(L, "layer", e->layer);
   set_string(L, "use", e->use);
-  set_string(L, "d", e->d);
+  set_d(L, &e->shape);
   lua_pushinteger(L, (lua_Integer)e->line);
   lua_setfield(L, -2, "line");
   lua_pushinteger(L, (lua_Integer)e->col);

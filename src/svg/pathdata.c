@@ -89,21 +89,14 @@ const char *arclen_pathdata_argname(char cmd, int k) {
   }
 }
 
-/* The reader's state. */
-typedef struct reader {
-  arclen_pathdata *pd;
-  const char *d;
-  size_t n;
-  double arc_tol;
-  const double *T;
-  long sp;                  /* the open subpath, -1 when none */
-  int overflow;             /* a mapped point beyond the doubles */
-} reader;
+/* The reader's state is the builder's (pathdata.h): the text parser and
+** the builder make their records through the same functions below. */
+typedef arclen_pathbuild reader;
 
 static int fail(reader *r, int kind, size_t i) {
   arclen_pathdata_error *e = &r->pd->err;
   e->kind = kind;
-  e->pos = i + 1;
+  e->pos = r->d != NULL ? i + 1 : 0;         /* the builder has no text */
   e->at_end = i >= r->n;
   e->byte = i < r->n ? (unsigned char)r->d[i] : 0;
   return kind;
@@ -259,7 +252,9 @@ static int emit(reader *r, unsigned char kind, double *v, int npts, double w) {
         r->overflow = 1;
     }
   }
-  if (kind == ARCLEN_PD_CONIC && !r->overflow && arclen_conic_degenerate(v)) {
+  /* without T the points are the ones judged above: not flat */
+  if (kind == ARCLEN_PD_CONIC && r->T != NULL && !r->overflow &&
+      arclen_conic_degenerate(v)) {
     if ((v[2] - v[0]) * (v[4] - v[2]) + (v[3] - v[1]) * (v[5] - v[3]) >= 0) {
       v[2] = v[4]; v[3] = v[5];
       return put(r, ARCLEN_PD_LINE, v, 2, 0);
@@ -516,19 +511,13 @@ static int transform(arclen_pathdata *pd, const double *T, int overflow) {
 
 /* ---- the reader ------------------------------------------------------------ */
 
-/* One command instance (cmd's arguments at *i); updates the current point
-** (cur), the subpath's start (start) and the reflected control point
-** (ctl, valid after C/S or Q/T as *last says). */
-typedef struct state {
-  double cx, cy, sx, sy;
-  double lcx, lcy, lqx, lqy;
-  int lastc, lastq;
-} state;
-
-static int draw(reader *r, state *st, char cmd, int rel, const double *a,
+/* One drawing command instance (arguments a[]); updates the current point
+** (cx, cy), the subpath's start (sx, sy) and the reflected control points
+** (lcx, lcy after C/S, lqx, lqy after Q/T, as lastc and lastq say). */
+static int draw(reader *r, char cmd, int rel, const double *a,
                 size_t cmdpos) {
-  double ox = rel ? st->cx : 0, oy = rel ? st->cy : 0, x, y;
-  double cx = st->cx, cy = st->cy;
+  double ox = rel ? r->cx : 0, oy = rel ? r->cy : 0, x, y;
+  double cx = r->cx, cy = r->cy;
   int ok = 1;
   if (r->sp < 0 && !open_subpath(r, cx, cy))   /* drawing after Z */
     return fail(r, ARCLEN_PD_NOMEM, cmdpos);
@@ -551,12 +540,12 @@ static int draw(reader *r, state *st, char cmd, int rel, const double *a,
       x1 = a[0] + ox; y1 = a[1] + oy; x2 = a[2] + ox; y2 = a[3] + oy;
       x = a[4] + ox; y = a[5] + oy;
     } else {
-      if (st->lastc) { x1 = 2 * cx - st->lcx; y1 = 2 * cy - st->lcy; }
+      if (r->lastc) { x1 = 2 * cx - r->lcx; y1 = 2 * cy - r->lcy; }
       else { x1 = cx; y1 = cy; }
       x2 = a[0] + ox; y2 = a[1] + oy; x = a[2] + ox; y = a[3] + oy;
     }
     ok = cubic(r, cx, cy, x1, y1, x2, y2, x, y);
-    st->lcx = x2; st->lcy = y2;
+    r->lcx = x2; r->lcy = y2;
     break;
   }
   case 'Q': case 'T': {
@@ -564,12 +553,12 @@ static int draw(reader *r, state *st, char cmd, int rel, const double *a,
     if (cmd == 'Q') {
       qx = a[0] + ox; qy = a[1] + oy; x = a[2] + ox; y = a[3] + oy;
     } else {
-      if (st->lastq) { qx = 2 * cx - st->lqx; qy = 2 * cy - st->lqy; }
+      if (r->lastq) { qx = 2 * cx - r->lqx; qy = 2 * cy - r->lqy; }
       else { qx = cx; qy = cy; }
       x = a[0] + ox; y = a[1] + oy;
     }
     ok = quadratic(r, cx, cy, qx, qy, x, y);
-    st->lqx = qx; st->lqy = qy;
+    r->lqx = qx; r->lqy = qy;
     break;
   }
   default: {                                   /* 'A' */
@@ -581,28 +570,66 @@ static int draw(reader *r, state *st, char cmd, int rel, const double *a,
   }
   }
   if (!ok) return fail(r, ARCLEN_PD_NOMEM, cmdpos);
-  st->lastc = cmd == 'C' || cmd == 'S';
-  st->lastq = cmd == 'Q' || cmd == 'T';
-  st->cx = x;
-  st->cy = y;
+  r->lastc = cmd == 'C' || cmd == 'S';
+  r->lastq = cmd == 'Q' || cmd == 'T';
+  r->cx = x;
+  r->cy = y;
   return ARCLEN_PD_OK;
+}
+
+/* Z, M or a drawing command (absolute unless rel), at byte cmdpos. */
+static int step(reader *r, char cmd, int rel, const double *a, size_t cmdpos) {
+  if (cmd == 'Z') {
+    if (r->sp < 0) return fail(r, ARCLEN_PD_CLOSE_FIRST, cmdpos);
+    if ((r->cx != r->sx || r->cy != r->sy) &&
+        !line(r, r->cx, r->cy, r->sx, r->sy))
+      return fail(r, ARCLEN_PD_NOMEM, cmdpos);
+    r->pd->subpaths[r->sp].closed = 1;
+    r->cx = r->sx;
+    r->cy = r->sy;
+    r->sp = -1;               /* a drawing command opens a new subpath here */
+    r->lastc = r->lastq = 0;
+    return ARCLEN_PD_OK;
+  }
+  if (cmd == 'M') {
+    double ox = rel ? r->cx : 0, oy = rel ? r->cy : 0;
+    r->cx = a[0] + ox;
+    r->cy = a[1] + oy;
+    r->sx = r->cx;
+    r->sy = r->cy;
+    if (!open_subpath(r, r->cx, r->cy)) return fail(r, ARCLEN_PD_NOMEM, cmdpos);
+    r->lastc = r->lastq = 0;
+    return ARCLEN_PD_OK;
+  }
+  return draw(r, cmd, rel, a, cmdpos);
+}
+
+static void start(reader *r, arclen_pathdata *pd, const char *d, size_t n,
+                  double arc_tol, const double *T) {
+  memset(r, 0, sizeof *r);
+  r->pd = pd; r->d = d; r->n = n; r->arc_tol = arc_tol; r->T = T; r->sp = -1;
+  pd->ncubics = pd->nsubpaths = 0;
+  pd->err.kind = ARCLEN_PD_OK;
+  pd->err.pos = 0;
+}
+
+static int finish(reader *r) {
+  if (r->pd->err.kind != ARCLEN_PD_OK) return r->pd->err.kind;
+  if (!r->begun) return fail(r, ARCLEN_PD_EMPTY, 0);
+  return r->T != NULL ? transform(r->pd, r->T, r->overflow) : ARCLEN_PD_OK;
 }
 
 int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
                           double arc_tol, const double *T) {
   reader r;
-  state st = {0, 0, 0, 0, 0, 0, 0, 0, 0, 0};
   double a[7];
   char cmd = 0;                   /* the current command, 0 before any */
   int rel = 0, rc;
   size_t i;
-  r.pd = pd; r.d = d; r.n = n; r.arc_tol = arc_tol; r.T = T; r.sp = -1;
-  r.overflow = 0;
-  pd->ncubics = pd->nsubpaths = 0;
-  pd->err.kind = ARCLEN_PD_OK;
-  pd->err.pos = 0;
+  start(&r, pd, d, n, arc_tol, T);
   i = skip_space(&r, 0);
   if (i >= n) return fail(&r, ARCLEN_PD_EMPTY, 0);
+  r.begun = 1;
   while (i < n) {
     unsigned char c = (unsigned char)d[i];
     char up = upper(c);
@@ -620,36 +647,36 @@ int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
       return fail(&r, ARCLEN_PD_UNKNOWN, i);
     }
     if (cmd == 'Z') {
-      if (r.sp < 0) return fail(&r, ARCLEN_PD_CLOSE_FIRST, cmdpos);
-      if ((st.cx != st.sx || st.cy != st.sy) &&
-          !line(&r, st.cx, st.cy, st.sx, st.sy))
-        return fail(&r, ARCLEN_PD_NOMEM, cmdpos);
-      pd->subpaths[r.sp].closed = 1;
-      st.cx = st.sx;
-      st.cy = st.sy;
-      r.sp = -1;              /* a drawing command opens a new subpath here */
-      st.lastc = st.lastq = 0;
+      if ((rc = step(&r, cmd, rel, a, cmdpos)) != ARCLEN_PD_OK) return rc;
       i = skip_space(&r, i);
       continue;
     }
     if ((rc = arguments(&r, &i, cmd, a)) != ARCLEN_PD_OK) return rc;
-    if (cmd == 'M') {
-      double ox = rel ? st.cx : 0, oy = rel ? st.cy : 0;
-      st.cx = a[0] + ox;
-      st.cy = a[1] + oy;
-      st.sx = st.cx;
-      st.sy = st.cy;
-      if (!open_subpath(&r, st.cx, st.cy))
-        return fail(&r, ARCLEN_PD_NOMEM, cmdpos);
-      cmd = 'L';              /* further pairs are implicit linetos */
-      st.lastc = st.lastq = 0;
-    } else if ((rc = draw(&r, &st, cmd, rel, a, cmdpos)) != ARCLEN_PD_OK) {
-      return rc;
-    }
+    if ((rc = step(&r, cmd, rel, a, cmdpos)) != ARCLEN_PD_OK) return rc;
+    if (cmd == 'M') cmd = 'L';  /* further pairs are implicit linetos */
     i = skip_sep(&r, i);
     /* a trailing comma must be followed by another argument list */
     if (d[i - 1] == ',' && (i >= n || is_alpha((unsigned char)d[i])))
       return fail(&r, ARCLEN_PD_COMMA, i - 1);
   }
-  return T != NULL ? transform(pd, T, r.overflow) : ARCLEN_PD_OK;
+  return finish(&r);
 }
+
+/* ---- the builder ----------------------------------------------------------- */
+
+void arclen_pathbuild_start(arclen_pathbuild *b, arclen_pathdata *pd,
+                            double arc_tol, const double *T) {
+  start(b, pd, NULL, 0, arc_tol, T);
+}
+
+int arclen_pathbuild_add(arclen_pathbuild *b, char cmd, const double *a) {
+  int rc;
+  if (b->pd->err.kind != ARCLEN_PD_OK) return b->pd->err.kind;  /* sticky */
+  if (arg_count(cmd) < 0) return fail(b, ARCLEN_PD_UNKNOWN, 0);
+  if (!b->begun && cmd != 'M') return fail(b, ARCLEN_PD_NO_MOVETO, 0);
+  b->begun = 1;
+  rc = step(b, cmd, 0, a, 0);
+  return rc;
+}
+
+int arclen_pathbuild_finish(arclen_pathbuild *b) { return finish(b); }

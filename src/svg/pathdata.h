@@ -113,6 +113,37 @@ void arclen_pathdata_free(arclen_pathdata *pd);
 int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
                           double arc_tol, const double *T);
 
+/* A path built command by command (the basic shapes, svgdoc/shapes.c), with
+** no text between: the records, kinds, subpaths, transform and errors that
+** arclen_pathdata_parse gives the same commands written as text (numbers
+** that read back to the same doubles), through the same functions; errors
+** have no position (pd->err.pos 0).  The fields are the builder's own. */
+typedef struct arclen_pathbuild {
+  arclen_pathdata *pd;
+  const char *d;            /* the text being parsed; NULL when building */
+  size_t n;
+  double arc_tol;
+  const double *T;
+  long sp;                  /* the open subpath, -1 when none */
+  int overflow;             /* a mapped point beyond the doubles */
+  int begun;                /* a first command seen */
+  double cx, cy, sx, sy;    /* the current point, the subpath's start */
+  double lcx, lcy, lqx, lqy;  /* the last cubic's and quadratic's control */
+  int lastc, lastq;           /* points, valid after C/S and Q/T */
+} arclen_pathbuild;
+
+/* Start building into pd (initialised, pd->arcs set; previous contents
+** dropped), arc_tol and T (kept, not copied) as arclen_pathdata_parse's. */
+void arclen_pathbuild_start(arclen_pathbuild *b, arclen_pathdata *pd,
+                            double arc_tol, const double *T);
+/* One absolute command, cmd one of M L H V C S Q T A Z, with its arguments
+** a[] in the text's order (A: rx ry rotation large-arc sweep x y; Z: none);
+** the first must be M.  Returns the error kind; after an error the later
+** calls return it again and add nothing. */
+int arclen_pathbuild_add(arclen_pathbuild *b, char cmd, const double *a);
+/* The end: T applied; returns the error kind (ARCLEN_PD_EMPTY: no command). */
+int arclen_pathbuild_finish(arclen_pathbuild *b);
+
 /* The name of argument k (from 1) of command cmd (upper case), as the
 ** specification calls it ("x1", "large-arc-flag"); "?" when none. */
 const char *arclen_pathdata_argname(char cmd, int k);

@@ -216,17 +216,22 @@ void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
 
 /* ---- shapes (shapes.c) ---- */
 
-/* The path data of a basic shape in its own coordinates, or NULL when it
-** is not rendered (SVG 2 chapter 10); into the pool. */
-const char *svgdoc_shape_data(svgdoc *D, unsigned long line,
-                              unsigned long col, const char *tag,
-                              const char **atts, const svgdoc_viewport *vp);
-/* The segments of a drawn element's d (from svgdoc_shape_data) into pd
-** (initialised) under T (NULL: the identity), as the document's arcs
-** option says; returns arclen_pathdata_parse's result. */
-int svgdoc_shape_parse(svgdoc *D, arclen_pathdata *pd, const char *tag,
-                       const char *d, const double *T);
-
+/* The shape of a drawn element (tag, atts) in its own coordinates into
+** *s (its numbers in the pool); 0 when it is not rendered (SVG 2 chapter
+** 10: a zero width, radius, no points). */
+int svgdoc_shape_get(svgdoc *D, unsigned long line, unsigned long col,
+                     const char *tag, const char **atts,
+                     const svgdoc_viewport *vp, svgdoc_shape *s);
+/* s's path data (svgdoc_shape_d) into the pool; a path's d as it is. */
+const char *svgdoc_shape_text(svgdoc *D, const svgdoc_shape *s);
+/* The segments of s into pd (initialised) under T (NULL: the identity), as
+** the document's arcs option says: a basic shape built from its numbers,
+** the same records as its text would give (the text is parsed instead when
+** a number is beyond the doubles, or the builder fails, so that the error
+** is the text's); returns arclen_pathdata_parse's result, and on an error
+** sets *d to the path data the error's position refers to. */
+int svgdoc_shape_parse(svgdoc *D, arclen_pathdata *pd, const svgdoc_shape *s,
+                       const double *T, const char **d);
 
 /* ---- matrices ---- */
 

@@ -332,22 +332,24 @@ static const char *shape_size_message(svgdoc *D, const arclen_pathdata *pd,
                        "beyond the largest double", what, b->len ? b->s : "");
 }
 
-/* A drawn shape: its path data into cubics under the CTM. */
+/* A drawn shape: its segments under the CTM. */
 static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
-                 const char *d, const char **atts, unsigned long line,
-                 unsigned long col, const svgdoc_shadow *sh) {
+                 const svgdoc_shape *shape, const char **atts,
+                 unsigned long line, unsigned long col,
+                 const svgdoc_shadow *sh) {
   const double *C = f->ctm;
   const char *id = svgdoc_attr(atts, "id");
   const char *use = sh ? sh->u->href : NULL;
   int identity = C[0] == 1 && C[1] == 0 && C[2] == 0 && C[3] == 1 &&
                  C[4] == 0 && C[5] == 0;
+  const char *d;
   arclen_pathdata pd;
   svgdoc_element *e;
   char *at;
-  size_t size;
+  size_t size, nums = shape->n * sizeof *shape->v;
   reserve_out(D, line, col);
   arclen_pathdata_init(&pd);
-  if (svgdoc_shape_parse(D, &pd, tag, d, identity ? NULL : C) !=
+  if (svgdoc_shape_parse(D, &pd, shape, identity ? NULL : C, &d) !=
       ARCLEN_PD_OK) {
     const char *m = shape_size_message(D, &pd, tag, atts);
     if (m == NULL) {
@@ -380,20 +382,24 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
   }
   /* the element and its strings in one block, its own: it outlives the
   ** open elements' pool (a stream hands it over, the queue holds it) */
-  size = sizeof *e + strlen(d) + 1 + (id ? strlen(id) + 1 : 0) +
-         (f->layer ? strlen(f->layer) + 1 : 0) + (use ? strlen(use) + 1 : 0);
+  size = sizeof *e + nums + (shape->d ? strlen(shape->d) + 1 : 0) +
+         (id ? strlen(id) + 1 : 0) + (f->layer ? strlen(f->layer) + 1 : 0) +
+         (use ? strlen(use) + 1 : 0);
   e = malloc(size);
   if (e == NULL) {
     arclen_pathdata_free(&pd);
     svgdoc_nomem(D);
   }
-  at = (char *)(e + 1);
+  at = (char *)(e + 1);             /* the numbers first: aligned as e is */
+  e->shape = *shape;
+  if (nums) e->shape.v = memcpy(at, shape->v, nums);
+  at += nums;
+  e->shape.d = own(&at, shape->d);
   e->pd = pd;
   e->id = own(&at, id);
   e->tag = tag;                        /* one of SHAPES */
   e->layer = own(&at, f->layer);
   e->use = own(&at, use);
-  e->d = own(&at, d);
   e->line = line, e->col = col;
   e->stroked = svgdoc_paint_stroked(&f->paint);
   e->filled = svgdoc_paint_filled(&f->paint, tag);
@@ -543,9 +549,10 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
     f->is_switch = 1;
   }
   if (shape >= 0) {
-    const char *d = svgdoc_shape_data(D, line, col, tag, atts, &f->vp);
-    if (d && (f->visible || D->o.hidden) && shown(D, &f->paint, tag))
-      draw(D, f, SHAPES[shape], d, atts, line, col, sh);
+    svgdoc_shape drawn;
+    if (svgdoc_shape_get(D, line, col, tag, atts, &f->vp, &drawn) &&
+        (f->visible || D->o.hidden) && shown(D, &f->paint, tag))
+      draw(D, f, SHAPES[shape], &drawn, atts, line, col, sh);
     f->skip = 1;                     /* shapes have no rendered children */
   } else if (strcmp(tag, "use") == 0) {
     const char *href = svgdoc_attr(atts, "href");

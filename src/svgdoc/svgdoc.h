@@ -1,6 +1,6 @@
 /*
 ** svgdoc.h -- SVG documents read as a renderer draws them: expat's
-** events walked in C, every basic shape turned into path data (SVG 2
+** events walked in C, every basic shape turned into segments (SVG 2
 ** chapter 10), nested transforms and viewports applied, <use> expanded,
 ** each drawn element's path data read into segments (svg/pathdata.c) in
 ** document coordinates, handed over as soon as it is complete (a stream:
@@ -42,17 +42,42 @@ typedef struct svgdoc_options {
   int uses;             /* the document may contain <use>: keep subtrees */
   int stream;           /* hand the elements over per feed, keep none */
   size_t max_held;      /* behind a forward use; 0: SVGDOC_MAX_HELD */
+  int shape_text;       /* for the specs: basic shapes written as path data
+                        ** and that parsed, the builder's reference */
 } svgdoc_options;
+
+/* What a drawn element is drawn of: a path's d as written, or a basic
+** shape's own numbers (SVG 2 chapter 10, after its auto and clamping
+** rules), which the reader builds into segments without a text between;
+** svgdoc_shape_d writes them as path data when that is asked for. */
+enum { SVGDOC_SHAPE_PATH, SVGDOC_SHAPE_RECT, SVGDOC_SHAPE_ELLIPSE,
+       SVGDOC_SHAPE_LINE, SVGDOC_SHAPE_POLYLINE, SVGDOC_SHAPE_POLYGON };
+typedef struct svgdoc_shape {
+  int kind;             /* SVGDOC_SHAPE_* */
+  const char *d;        /* PATH: the d attribute; otherwise NULL */
+  size_t n;             /* the numbers: RECT x y width height rx ry (rx or
+                        ** ry 0: square corners); ELLIPSE (circle too) cx cy
+                        ** rx ry; LINE x1 y1 x2 y2; POLYLINE, POLYGON the
+                        ** points' x y pairs */
+  const double *v;
+} svgdoc_shape;
+
+/* The path data of s, as the reader has always written it (SVG 2 chapter
+** 10's commands, numbers in 17 significant digits, any locale), handed to
+** put(ctx, bytes, n) in pieces; a path's d as it is. */
+void svgdoc_shape_d(const svgdoc_shape *s,
+                    void (*put)(void *ctx, const char *bytes, size_t n),
+                    void *ctx);
 
 /* A drawn element.  Its strings live with it (NULL: none). */
 typedef struct svgdoc_element {
   const char *id, *tag, *layer;
   const char *use;      /* the id a <use> instantiated this from */
-  const char *d;        /* the shape's path data in its own coordinates */
+  svgdoc_shape shape;   /* what it is drawn of, in its own coordinates */
   unsigned long line, col;
   int stroked, filled;  /* its stroke, its fill paints something */
   double ctm[6];        /* onto the document's coordinates */
-  arclen_pathdata pd;   /* the segments of d mapped by ctm */
+  arclen_pathdata pd;   /* the segments of shape mapped by ctm */
 } svgdoc_element;
 
 typedef struct svgdoc_warning {
