@@ -127,6 +127,14 @@ describe("arclen.svg: style sheets #svgdoc", function()
     assert.are.equal("a d e i", ids(d))
   end)
 
+  it("the CSS transform property is not read: a warning says so", function()
+    local d = doc([[<style>path{transform:scale(2)} g{transform:rotate(9deg)}</style>
+      <path d="M0 0h1"/>]])
+    assert.are.equal(1, d.total)
+    assert.are.equal(1, #d.warnings)
+    assert.matches("t.svg:1:%d+: style sheet: the CSS transform property is not read", d.warnings[1])
+  end)
+
   it("@import is a warning; its rules are left out", function()
     local d = doc([[<style>@import url("more.css"); path{stroke:red}</style><path d="M0 0h1"/>]],
       {stroked = true})

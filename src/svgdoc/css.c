@@ -71,7 +71,7 @@ struct svgdoc_css {
   unsigned *bloom;               /* the open elements' tags, ids, classes */
   unsigned gen;
   double tests;
-  int full_warned;
+  int full_warned, transform_warned;
 };
 
 /* ---- growing arrays --------------------------------------------------- */
@@ -607,6 +607,12 @@ static size_t declarations(parser *p, size_t b, size_t e, size_t *first) {
     ve = p->i;
     if (p->i < p->n) p->i++;
     prop = svgdoc_prop_index(name);
+    if (prop < 0 && strcmp(name, "transform") == 0 && !C->transform_warned) {
+      /* it would move what is measured: say that it is not */
+      warn_at(p, "style sheet: the CSS transform property is not read (the "
+                 "transform attribute is)");
+      C->transform_warned = 1;
+    }
     if (prop < 0) continue;
     while (ve > vs && space((unsigned char)p->t[ve - 1])) ve--;
     {                                  /* "! important" at the end */
