@@ -18,6 +18,7 @@ build = {
         "src/lua/subpaths.c",
         "src/svgdoc/attrs.c",
         "src/svgdoc/cond.c",
+        "src/svgdoc/css.c",
         "src/svgdoc/memory.c",
         "src/svgdoc/paint.c",
         "src/svgdoc/reader.c",

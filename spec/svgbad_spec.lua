@@ -185,6 +185,8 @@ end)
 describe("arclen.svg: seeded random mutations of the real documents #svgdoc", function()
   local files = {}
   for _, row in ipairs(require("helpers").tsv("svg/SOURCES.tsv")) do files[#files + 1] = row.file end
+  files[#files + 1] = "hand/css.svg"         -- style sheets: selectors, the cascade, @media
+  files[#files + 1] = "hand/em.svg"
   local texts = {}
   for i, f in ipairs(files) do
     local h = assert(io.open("spec/data/svg/" .. f, "rb"))
@@ -202,7 +204,10 @@ describe("arclen.svg: seeded random mutations of the real documents #svgdoc", fu
     " width='1e400'", " r='-1'", " d='M1e308 1e308 L-1e308 -1e308'", " d='M0 0 A1e-320 1e-320 0 0 1 1 1'",
     "1e999", "-", ".", "NaN", "inf", "0x10", "]]>", "<!--", "-->", "<![CDATA[", "<?x?>",
     " display='none'", " viewBox='0 0 0 0'", " points='1 2 3'", " style='stroke:none'",
-    "\0", "\255\254", "<svg>", "</svg>", "<symbol id='s'>", "<use xlink:href='#s'/>"}
+    "\0", "\255\254", "<svg>", "</svg>", "<symbol id='s'>", "<use xlink:href='#s'/>",
+    "<style>", "</style>", "{", "}", "/*", "*/", " class='st0'", ".st0{stroke:red}",
+    "@media screen{", "* * * *{display:none}", ":first-child", "[id^=a]>", "!important",
+    " style='font-size:1e308em'", " font-size='-1'", "\\", "@import 'x';"}
   local function mutate(text)
     local t = text
     for _ = 1, rnd(4) do

@@ -15,7 +15,8 @@
 #           (base has libexpat1-dev for the SVG document reader,
 #           arclen.svgdoc, and lua-dkjson for --json)
 #   refs    regenerate spec/data (python3-mpmath, real MetaPost;
-#           python3-svgelements: tools/ref_svg.py's second opinion)
+#           python3-svgelements: tools/ref_svg.py's second opinion;
+#           python3-tinycss2, python3-cssselect2: its style sheets)
 # Without dpkg and apt-get (macOS, Alpine, Fedora, Arch, FreeBSD, MSYS2) it
 # prints what to install there for base -- a C compiler, make, Lua 5.4 with
 # its headers, busted, expat, pkg-config -- and fails unless the commands are
@@ -79,7 +80,7 @@ other_system() {
 }
 BASE="gcc make libc6-dev lua5.4 liblua5.4-dev lua-busted libexpat1-dev lua-dkjson"
 MATRIX="lua5.1 liblua5.1-0-dev lua5.2 liblua5.2-dev lua5.3 liblua5.3-dev luajit libluajit-5.1-dev texlive-binaries texlive-base texlive-luatex texlive-latex-base texlive-metapost luarocks poppler-utils python3 locales git zip texlive-pictures"
-REFS="python3 python3-mpmath python3-svgelements texlive-binaries texlive-base python3-fonttools fonts-urw-base35"
+REFS="python3 python3-mpmath python3-svgelements python3-tinycss2 python3-cssselect2 texlive-binaries texlive-base python3-fonttools fonts-urw-base35"
 case "${1:-base}" in
   base) WANT="$BASE" ;;
   matrix) WANT="$BASE $MATRIX" ;;

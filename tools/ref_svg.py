@@ -15,6 +15,11 @@ and cubic Beziers, elliptical arcs, each with the affine map of its element
     preserveAspectRatio, SVG 2 section 8.2) as exact matrices (angles by
     mpmath), units by CSS (96 px per inch);
   - <use> of elements and symbols (SVG 2 section 5.6);
+  - <style> sheets parsed by tinycss2 and matched by cssselect2 (python3-
+    tinycss2, python3-cssselect2: WeasyPrint's and CairoSVG's, not ours),
+    cascaded as SVG 2 section 6.3 says (style !important, sheet !important,
+    style, sheet, presentation attribute), @media for a plain screen;
+    font-size (CSS Fonts 4 section 2.5) for em, ex (em / 2) and rem;
   - lines exactly, Beziers by quadrature of the speed split at its minima
     (B' . B'' = 0) and in 4 (or 16), where Gauss-Legendre and tanh-sinh
     must agree to 1e-24 relative, each arc by the SVG 1.1 F.6.5
@@ -81,6 +86,9 @@ VARIANTS = {
     "real/inkscape-org.inkscape.Inkscape-symbolic.svg": [("user", "-"), ("user", "stroked"),
                                                          ("user", "painted")],
     "real/inkscape-tutorials-making_markers.svg": [("user", "-"), ("mm", "-")],
+    "hand/css.svg": [("user", "-"), ("user", "hidden"), ("user", "stroked"), ("user", "painted")],
+    "hand/em.svg": [("user", "-"), ("mm", "-")],
+    "real/rust-favicon.svg": [("user", "-"), ("user", "stroked"), ("user", "painted")],
 }
 
 
@@ -128,18 +136,100 @@ def transform(s):
     return T
 
 
-def styles(el):
+def styles(el, important):
     out = {}
     for decl in (el.get("style") or "").split(";"):
         if ":" in decl:
             k, v = decl.split(":", 1)
-            out[k.strip().lower()] = v.replace("!important", "").strip()
+            imp = re.search(r"!\s*important\s*$", v, re.I)
+            if bool(imp) == important:
+                out[k.strip().lower()] = v[:imp.start()].strip() if imp else v.strip()
+    return out
+
+
+SHEET = {}       # element -> (normal, important) declarations of the sheets
+FONT = [16, 16]  # the font-size of the element whose lengths are read, the root's
+
+
+def media_ok(text):
+    """A media query list for a plain screen: media types only."""
+    text = text.strip().lower()
+    if not text:
+        return True
+    for q in text.split(","):
+        words = q.split()
+        if "(" in q or "and" in words:
+            continue                            # a media feature: false
+        neg = words[:1] == ["not"]
+        words = [w for w in words if w not in ("not", "only")]
+        if len(words) == 1 and (words[0] in ("all", "screen")) != neg:
+            return True
+    return False
+
+
+def read_sheets(root):
+    import cssselect2
+    import tinycss2
+    matcher = cssselect2.Matcher()
+
+    def add(rules):
+        for r in rules:
+            if r.type == "qualified-rule":
+                try:
+                    sels = cssselect2.compile_selector_list(r.prelude)
+                except cssselect2.SelectorError:
+                    continue
+                decls = [(d.lower_name, tinycss2.serialize(d.value).strip(), d.important)
+                         for d in tinycss2.parse_declaration_list(r.content, True, True)
+                         if d.type == "declaration"]
+                for sel in sels:
+                    matcher.add_selector(sel, decls)
+            elif r.type == "at-rule" and r.lower_at_keyword == "media" and r.content is not None:
+                if media_ok(tinycss2.serialize(r.prelude)):
+                    add(tinycss2.parse_rule_list(r.content, True, True))
+
+    for el in root.iter():
+        if isinstance(el.tag, str) and split(el.tag) in ((SVG_NS, "style"), (None, "style")):
+            if (el.get("type") or "text/css").strip() == "text/css" and media_ok(el.get("media") or ""):
+                add(tinycss2.parse_stylesheet(el.text or "", True, True))
+    out = {}
+    for w in cssselect2.ElementWrapper.from_xml_root(root).iter_subtree():
+        normal, imp = {}, {}
+        for spec, order, pseudo, decls in sorted(matcher.match(w), key=lambda m: (m[0], m[1])):
+            if pseudo is None:
+                for name, value, important in decls:
+                    (imp if important else normal)[name] = value
+        out[w.etree_element] = (normal, imp)
     return out
 
 
 def prop(el, name):
-    v = styles(el).get(name, el.get(name))
-    return v.strip().lower() if v is not None else None
+    normal, imp = SHEET.get(el, ({}, {}))
+    for v in (styles(el, True).get(name), imp.get(name), styles(el, False).get(name),
+              normal.get(name), el.get(name)):
+        if v is not None:
+            return v.strip().lower()
+    return None
+
+
+SIZES = {"xx-small": mp.mpf(3) / 5, "x-small": mp.mpf(3) / 4, "small": mp.mpf(8) / 9,
+         "medium": 1, "large": mp.mpf(6) / 5, "x-large": mp.mpf(3) / 2, "xx-large": 2,
+         "xxx-large": 3}
+
+
+def font_size(v, parent, root):
+    """CSS Fonts 4 section 2.5: the computed font-size in px."""
+    if v is None or v == "inherit":
+        return parent
+    if v in SIZES:
+        return 16 * SIZES[v]
+    if v in ("larger", "smaller"):
+        return parent * mp.mpf("1.2") if v == "larger" else parent / mp.mpf("1.2")
+    m = re.match(r"^([+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?)\s*([a-zA-Z%]*)$", v)
+    x, u = mp.mpf(m.group(1)), m.group(2).lower()
+    if u == "%":
+        return x / 100 * parent
+    return x * {"em": parent, "ex": parent / 2, "rem": root}.get(u, PX.get(u))
 
 
 # ---- what shows: conditional processing and paint -----------------------
@@ -310,9 +400,11 @@ def length(s, kind, vp):
     if u in PX:
         return v * PX[u]
     if u == "em":
-        return v * 16
+        return v * FONT[0]
     if u == "ex":
-        return v * 8
+        return v * FONT[0] / 2
+    if u == "rem":
+        return v * FONT[1]
     assert u == "%", s
     ref = vp[0] if kind == "x" else vp[1] if kind == "y" else mp.sqrt((vp[0] ** 2 + vp[1] ** 2) / 2)
     return v / 100 * ref
@@ -520,6 +612,8 @@ class Doc:
     def __init__(self, path, units, option):
         self.tree = ET.parse(path)
         self.root = self.tree.getroot()
+        SHEET.clear()
+        SHEET.update(read_sheets(self.root))
         self.ids = {}
         for el in self.root.iter():
             i = el.get("id")
@@ -530,6 +624,7 @@ class Doc:
 
     def run(self):
         r = self.root
+        FONT[0] = FONT[1] = font_size(prop(r, "font-size"), 16, 16)
         vb = vbox(r)
         w = r.get("width")
         h = r.get("height")
@@ -549,9 +644,9 @@ class Doc:
         if not cond_pass(r):
             return
         for ch in r:
-            self.walk(ch, ctm, vp, visible, paint, [], None)
+            self.walk(ch, ctm, vp, visible, paint, [], None, FONT[1])
 
-    def walk(self, el, ctm, vp, visible, paint, chain, use):
+    def walk(self, el, ctm, vp, visible, paint, chain, use, fs):
         if not isinstance(el.tag, str):
             return                                  # comments, processing instructions
         ns, tag = split(el.tag)
@@ -559,6 +654,8 @@ class Doc:
             return
         if prop(el, "display") == "none" and self.option != "hidden":
             return
+        fs = font_size(prop(el, "font-size"), fs, FONT[1])
+        FONT[0] = fs
         v = prop(el, "visibility")
         if v in ("hidden", "collapse"):
             visible = False
@@ -617,14 +714,14 @@ class Doc:
             u = {"root": target, "w": attr_len(el, "width", "x", vp, None),
                  "h": attr_len(el, "height", "y", vp, None), "context": context_of(paint)}
             m = mul(ctm, tr(attr_len(el, "x", "x", vp, 0), attr_len(el, "y", "y", vp, 0)))
-            self.walk(target, m, vp, visible, paint, chain + [href[1:]], u)
+            self.walk(target, m, vp, visible, paint, chain + [href[1:]], u, fs)
             return
         children = [c for c in el if isinstance(c.tag, str)]
         if tag == "switch":                         # SVG 2 section 5.8: the first that passes
             first = [c for c in children if split(c.tag)[0] in (None, SVG_NS) and cond_pass(c)]
             children = first[:1]
         for ch in children:
-            self.walk(ch, ctm, vp, visible, paint, chain, use and dict(use, root=None))
+            self.walk(ch, ctm, vp, visible, paint, chain, use and dict(use, root=None), fs)
 
 
 def second_opinion(path):

@@ -2,17 +2,19 @@
 ** attrs.c -- the attributes the reader interprets: lengths with units
 ** (SVG 2 section 4.3, CSS Values 3 section 5.2), the transform list (SVG
 ** 1.1 section 7.6), viewBox and preserveAspectRatio (SVG 2 section 8.2),
-** and the properties it reads from style="" or the presentation
-** attributes (SVG 2 section 6.6).
+** the properties it reads, cascaded from the presentation attributes,
+** the style sheets (css.c) and style="" (SVG 2 section 6), and the
+** font-size that em, ex and rem refer to (CSS Fonts 4 section 2.5).
 */
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 #include "svg/decimal.h"
+#include "svgdoc/css.h"
 #include "svgdoc/internal.h"
 
-#define FONT_SIZE 16.0   /* em (CSS "medium"); ex is half of it */
+#define FONT_SIZE 16.0   /* the initial font-size (CSS "medium") */
 
 /* The C locale's character classes, whatever LC_CTYPE the host sets:
 ** tolower('I') is 'I' under tr_TR.UTF-8 (0xFD under tr_TR.ISO-8859-9), so
@@ -55,12 +57,14 @@ double svgdoc_nonneg(svgdoc *D, unsigned long line, unsigned long col,
 
 /* ---- lengths -------------------------------------------------------- */
 
-/* A length's unit and what it is in px, px / div (CSS: 1in = 96px; em
-** and ex from the font size); px 0 for the percentage. */
+/* A length's unit and what it is in px, px / div (CSS: 1in = 96px); px 0
+** for the percentage, -1 for em and ex (the element's font-size, ex half
+** of it, as renderers without font metrics take it), -2 for rem (the
+** root's). */
 static const struct { const char *name; double px, div; } UNITS[] = {
   {"", 1, 1}, {"px", 1, 1}, {"in", 96.0, 1}, {"cm", 96 / 2.54, 1},
   {"mm", 96 / 25.4, 1}, {"pt", 96.0 / 72, 1}, {"pc", 96.0 / 6, 1},
-  {"q", 96 / 101.6, 1}, {"em", FONT_SIZE, 1}, {"ex", FONT_SIZE, 2},
+  {"q", 96 / 101.6, 1}, {"em", -1, 1}, {"ex", -1, 2}, {"rem", -2, 1},
   {"%", 0, 1}};
 
 /* The entry of UNITS that u[0 .. n-1] names, in any case; -1 if none. */
@@ -91,6 +95,8 @@ double svgdoc_length(svgdoc *D, unsigned long line, unsigned long col,
   if (i < n) goto bad;
   k = unit_of(s + e, u - e);
   if (k >= 0 && UNITS[k].px > 0) return v * UNITS[k].px / UNITS[k].div;
+  if (k >= 0 && UNITS[k].px < 0)
+    return v * (UNITS[k].px == -1 ? vp->em : vp->rem) / UNITS[k].div;
   if (k >= 0) {                                  /* a percentage */
     double ref;
     if (!vp->has)
@@ -387,7 +393,16 @@ void svgdoc_viewbox_matrix(svgdoc *D, unsigned long line, unsigned long col,
 
 static const char *const PROPS[SVGDOC_NPROPS] = {
   "display", "visibility", "stroke", "stroke-width", "fill", "fill-opacity",
-  "stroke-opacity", "opacity", "color"};
+  "stroke-opacity", "opacity", "color", "font-size"};
+
+int svgdoc_prop_index(const char *name) {
+  int k;
+  for (k = 0; k < SVGDOC_NPROPS; k++)
+    if (strcmp(PROPS[k], name) == 0) return k;
+  return -1;
+}
+
+const char *svgdoc_prop_name(int k) { return PROPS[k]; }
 
 /* May byte c precede a property's name?  (The name must be whole.) */
 static int name_byte(unsigned char c) {
@@ -406,56 +421,98 @@ static const char *normalised(svgdoc *D, svgdoc_buffer *b, const char *s,
   return b->s;
 }
 
-/* The value of the last whole declaration "name: value" in style s (the
-** last one wins, as in CSS), "!important" and trailing space removed;
-** 0 when none. */
-static int style_value(const char *s, const char *name, const char **v,
-                       size_t *vn) {
+/* The value of the last whole declaration "name: value" in style s that
+** is !important (important) or not (the last one wins, as in CSS),
+** "!important" and trailing space removed; 0 when none. */
+static int style_value(const char *s, const char *name, int important,
+                       const char **v, size_t *vn) {
   size_t nl = strlen(name);
   const char *p = s;
   int found = 0;
   while ((p = strstr(p, name)) != NULL) {
     const char *q = p + nl, *e;
+    size_t n, m;
+    int imp = 0;
     if (p != s && name_byte((unsigned char)p[-1])) { p++; continue; }
     while (*q && space((unsigned char)*q)) q++;
     if (*q != ':') { p++; continue; }
     q++;
     while (*q && space((unsigned char)*q)) q++;
     for (e = q; *e && *e != ';'; e++) {}
-    *v = q, *vn = (size_t)(e - q), found = 1;
     p = e;
-  }
-  if (found) {       /* "%s*!%s*important%s*$" then trailing space */
-    const char *q = *v;
-    size_t n = *vn, m = n;
+    n = (size_t)(e - q), m = n;   /* "%s*!%s*important%s*$" then trailing space */
     while (m > 0 && space((unsigned char)q[m - 1])) m--;
-    if (m >= 9 && memcmp(q + m - 9, "important", 9) == 0) {
-      size_t k = m - 9;
-      while (k > 0 && space((unsigned char)q[k - 1])) k--;
-      if (k > 0 && q[k - 1] == '!') {
+    if (m >= 9) {
+      size_t k = m - 9, j;
+      for (j = 0; j < 9 && lower((unsigned char)q[k + j]) == "important"[j]; j++) {}
+      while (j == 9 && k > 0 && space((unsigned char)q[k - 1])) k--;
+      if (j == 9 && k > 0 && q[k - 1] == '!') {
         k--;
         while (k > 0 && space((unsigned char)q[k - 1])) k--;
-        n = k;
+        n = k, imp = 1;
       }
     }
     while (n > 0 && space((unsigned char)q[n - 1])) n--;
-    *vn = n;
+    if (imp != important) continue;
+    *v = q, *vn = n, found = 1;
   }
   return found;
 }
 
-void svgdoc_properties(svgdoc *D, const char **atts, const char *out[]) {
+void svgdoc_properties(svgdoc *D, const char **atts,
+                       const struct svgdoc_css_match *sheet, const char *out[]) {
   const char *style = svgdoc_attr(atts, "style");
   int k;
   for (k = 0; k < SVGDOC_NPROPS; k++) {
     const char *v = NULL;
     size_t vn = 0;
-    if (style && style_value(style, PROPS[k], &v, &vn)) {
-      out[k] = normalised(D, &D->props[k], v, vn);
+    /* from the strongest down (SVG 2 section 6.3; Cascade 4 section 6) */
+    if (style && style_value(style, PROPS[k], 1, &v, &vn)) {
+    } else if (sheet && (v = sheet->important[k]) != NULL) {
+      vn = strlen(v);
+    } else if (style && style_value(style, PROPS[k], 0, &v, &vn)) {
+    } else if (sheet && (v = sheet->normal[k]) != NULL) {
+      vn = strlen(v);
     } else if ((v = svgdoc_attr(atts, PROPS[k])) != NULL) {
-      out[k] = normalised(D, &D->props[k], v, strlen(v));
-    } else {
-      out[k] = NULL;
+      vn = strlen(v);
     }
+    out[k] = v ? normalised(D, &D->props[k], v, vn) : NULL;
   }
+}
+
+/* ---- font-size -------------------------------------------------------- */
+
+/* The absolute sizes' scaling factors from medium (CSS Fonts 4 2.5). */
+static const struct { const char *name; double f; } SIZES[] = {
+  {"xx-small", 3.0 / 5}, {"x-small", 3.0 / 4}, {"small", 8.0 / 9},
+  {"medium", 1}, {"large", 6.0 / 5}, {"x-large", 3.0 / 2}, {"xx-large", 2},
+  {"xxx-large", 3}};
+
+double svgdoc_font_size(svgdoc *D, unsigned long line, unsigned long col,
+                        const char *s, double em, double rem) {
+  size_t n, e, u, i;
+  int k;
+  double v;
+  if (s == NULL || strcmp(s, "inherit") == 0) return em;
+  if (strcmp(s, "initial") == 0) return FONT_SIZE;
+  for (k = 0; k < (int)(sizeof SIZES / sizeof SIZES[0]); k++)
+    if (strcmp(s, SIZES[k].name) == 0) return FONT_SIZE * SIZES[k].f;
+  /* the relative sizes: a ratio of 1.2 (CSS 2 section 15.7) */
+  if (strcmp(s, "larger") == 0) return em * 1.2;
+  if (strcmp(s, "smaller") == 0) return em / 1.2;
+  n = strlen(s);
+  e = arclen_decimal_scan(s, n, 0, &v);
+  if (e > 0 && v >= 0) {
+    for (u = e; u < n && is_letter((unsigned char)s[u]); u++) {}
+    if (u < n && s[u] == '%') u++;
+    for (i = u; i < n && space((unsigned char)s[i]); i++) {}
+    k = i == n ? unit_of(s + e, u - e) : -1;
+    if (k >= 0 && UNITS[k].px > 0) v = v * UNITS[k].px / UNITS[k].div;
+    else if (k >= 0 && UNITS[k].px == 0) v = v / 100 * em;   /* of the parent's */
+    else if (k >= 0) v = v * (UNITS[k].px == -1 ? em : rem) / UNITS[k].div;
+    if (k >= 0 && isfinite(v)) return v;
+  }
+  svgdoc_warn(D, line, col, svgdoc_format(D, "font-size '%s' is not a size: "
+                                          "the parent's is used", s));
+  return em;
 }

@@ -15,18 +15,22 @@
 /* SVG's matrix(a b c d e f) is {a, b, c, d, e, f}. */
 typedef double svgdoc_matrix[6];
 
-/* The viewport's size in the current user units (SVG 2 section 8.9). */
+/* The viewport's size in the current user units (SVG 2 section 8.9), and
+** the font sizes em and rem are relative to (CSS Values 3 section 6.1):
+** what lengths are resolved against. */
 typedef struct svgdoc_viewport {
   int has;
   double w, h;
+  double em, rem;            /* the element's and the root's font-size */
 } svgdoc_viewport;
 
-/* The properties the reader uses, from style="" (CSS declarations, which
-** win) or the presentation attributes, trimmed and lower-cased.  The
-** paint's (fill ... color) decide what shows (paint.c). */
+/* The properties the reader uses, cascaded from the presentation
+** attributes, style sheets and style="" (css.c), trimmed and lower-cased.
+** The paint's (fill ... color) decide what shows (paint.c). */
 enum { SVGDOC_DISPLAY, SVGDOC_VISIBILITY, SVGDOC_STROKE,
        SVGDOC_STROKE_WIDTH, SVGDOC_FILL, SVGDOC_FILL_OPACITY,
-       SVGDOC_STROKE_OPACITY, SVGDOC_OPACITY, SVGDOC_COLOR, SVGDOC_NPROPS };
+       SVGDOC_STROKE_OPACITY, SVGDOC_OPACITY, SVGDOC_COLOR, SVGDOC_FONT_SIZE,
+       SVGDOC_NPROPS };
 
 typedef struct svgdoc_buffer {
   char *s;
@@ -46,6 +50,9 @@ typedef struct svgdoc_arena {
 typedef svgdoc_arena svgdoc_mark;        /* a point to give back to */
 
 typedef struct svgdoc_held svgdoc_held;  /* elements behind a forward use */
+struct svgdoc_css;                       /* the style sheets (css.c) */
+struct svgdoc_css_node;
+struct svgdoc_css_match;
 typedef struct svgdoc_event svgdoc_event;
 
 /* ids -> the index of a kept event (or a set of ids: values unused). */
@@ -97,6 +104,14 @@ struct svgdoc {
   size_t skipped[SVGDOC_NSKIPPED];
   svgdoc_info info;
   svgdoc_buffer props[SVGDOC_NPROPS], scratch;
+  /* style sheets (css.c): the rules, the open elements as selectors see
+  ** them (max_depth + 2), the <style> being read (its depth + 1) */
+  struct svgdoc_css *css;
+  struct svgdoc_css_node *nodes;
+  size_t style_depth, shapes_seen, shapes_before;
+  unsigned long style_line, style_col;
+  svgdoc_buffer style_text, style_media;
+  int style_has_media;
   /* input held back while expat has an unfinished token (reader.c) */
   svgdoc_buffer held;
   size_t held_need;
@@ -181,8 +196,23 @@ int svgdoc_viewbox(svgdoc *D, unsigned long line, unsigned long col,
 void svgdoc_viewbox_matrix(svgdoc *D, unsigned long line, unsigned long col,
                            const double vb[4], const char *par, double ex,
                            double ey, double ew, double eh, svgdoc_matrix M);
-/* The reader's properties of an element: out[k] NULL when not given. */
-void svgdoc_properties(svgdoc *D, const char **atts, const char *out[]);
+/* The reader's properties of an element, cascaded (SVG 2 section 6.3,
+** CSS Cascade 4 section 6): style="" !important, the sheets' !important
+** (sheet), style="", the sheets' normal ones, the presentation attribute;
+** out[k] NULL when none is given. */
+void svgdoc_properties(svgdoc *D, const char **atts,
+                       const struct svgdoc_css_match *sheet, const char *out[]);
+/* The index of property name in the reader's list, or -1; its name. */
+int svgdoc_prop_index(const char *name);
+const char *svgdoc_prop_name(int k);
+/* The computed font-size (px) of value s (NULL: inherited) under a parent
+** whose font-size is em, the root's rem (CSS Fonts 4 section 2.5); a
+** value that is not one is warned of and inherited. */
+double svgdoc_font_size(svgdoc *D, unsigned long line, unsigned long col,
+                        const char *s, double em, double rem);
+/* A warning at a place (reader.c). */
+void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
+                 const char *msg);
 
 /* ---- shapes (shapes.c) ---- */
 

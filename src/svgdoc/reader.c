@@ -20,6 +20,7 @@
 #include "curve/numeric.h"
 #include "svg/decimal.h"
 #include "svgdoc/cond.h"
+#include "svgdoc/css.h"
 #include "svgdoc/internal.h"
 #include "svgdoc/paint.h"
 
@@ -126,6 +127,11 @@ static void warn(svgdoc *D, unsigned long line, unsigned long col,
   D->arena = was;
   w = &D->warnings[D->nwarnings++];
   w->line = line, w->col = col, w->msg = msg;
+}
+
+void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
+                 const char *msg) {
+  warn(D, line, col, msg);
 }
 
 /* ---- ids of kept elements, ids referred to ------------------------------ */
@@ -440,6 +446,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
                          unsigned long line, unsigned long col,
                          const svgdoc_shadow *sh) {
   const char *P[SVGDOC_NPROPS], *s;
+  svgdoc_css_match M;
   int shape, skipped, is_svg = strcmp(tag, "svg") == 0,
                       is_symbol = strcmp(tag, "symbol") == 0;
   f->depth = parent->depth + 1;
@@ -452,9 +459,12 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
   if (parent->is_switch && parent->switch_done) return;
   if (!svgdoc_cond_pass(atts, D->lang)) return;
   if (parent->is_switch) parent->switch_done = 1;
-  svgdoc_properties(D, atts, P);
+  svgdoc_css_for(D, atts, sh == NULL, D->depth, line, col, &M);
+  svgdoc_properties(D, atts, &M, P);
   memcpy(f->ctm, parent->ctm, sizeof f->ctm);
   f->vp = parent->vp;
+  f->vp.em = svgdoc_font_size(D, line, col, P[SVGDOC_FONT_SIZE], parent->vp.em,
+                              parent->vp.rem);
   f->visible = parent->visible, f->paint = parent->paint;
   f->layer = parent->layer;
   f->top = f->is_switch = f->switch_done = 0;
@@ -483,7 +493,9 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
     svgdoc_mul(f->ctm, T, f->ctm);
   }
   if (is_svg || is_symbol) {                /* a new viewport (SVG 2 section 8) */
-    const svgdoc_viewport *vp = &parent->vp;
+    svgdoc_viewport pvp = parent->vp;      /* with its own font-size for em */
+    const svgdoc_viewport *vp = &pvp;
+    pvp.em = f->vp.em;
     double x = 0, y = 0, w = 0, h = 0, vb[4];
     int hw, hh;
     svgdoc_matrix V;
@@ -767,11 +779,18 @@ static void use_at_top(svgdoc *D, svgdoc_use *u) {
 static void open_root(svgdoc *D, const char **atts, unsigned long line,
                       unsigned long col, svgdoc_frame *f) {
   const char *P[SVGDOC_NPROPS], *s;
+  svgdoc_css_match M;
   double vb[4], w = 0, h = 0;
   int has_vb = svgdoc_viewbox(D, line, col, svgdoc_attr(atts, "viewBox"), vb);
   int hw = 0, hh = 0;
-  svgdoc_viewport none = {0, 0, 0};
+  svgdoc_viewport none = {0, 0, 0, 16, 16};
   const char *ws = svgdoc_attr(atts, "width"), *hs = svgdoc_attr(atts, "height");
+  /* the root's font-size: its em, and rem everywhere (CSS Values 3 6.1.1;
+  ** on the root, em and rem refer to the initial value) */
+  svgdoc_css_for(D, atts, 1, 0, line, col, &M);
+  svgdoc_properties(D, atts, &M, P);
+  none.em = none.rem = svgdoc_font_size(D, line, col, P[SVGDOC_FONT_SIZE],
+                                        16, 16);
   if (ws && !strchr(ws, '%'))
     hw = svgdoc_len_attr(D, line, col, atts, "width", 'x', &none, &w);
   if (hs && !strchr(hs, '%'))
@@ -780,6 +799,7 @@ static void open_root(svgdoc *D, const char **atts, unsigned long line,
   if (hh) svgdoc_nonneg(D, line, col, h, "height");
   memset(f, 0, sizeof *f);
   f->depth = 1;
+  f->vp.em = f->vp.rem = none.em;
   if (has_vb) f->vp.has = 1, f->vp.w = vb[2], f->vp.h = vb[3];
   else if (hw && hh) f->vp.has = 1, f->vp.w = w, f->vp.h = h;
   svgdoc_translate(0, 0, f->ctm);
@@ -811,7 +831,6 @@ static void open_root(svgdoc *D, const char **atts, unsigned long line,
   }
   f->visible = 1, f->layer = "(root)", f->top = 1;
   svgdoc_paint_initial(&f->paint);
-  svgdoc_properties(D, atts, P);
   if (P[SVGDOC_DISPLAY] && strcmp(P[SVGDOC_DISPLAY], "none") == 0 &&
       !D->o.hidden)
     return;
@@ -850,12 +869,18 @@ static void keep(svgdoc *D, int svgns, const char *tag, const char **atts,
   size_t n = 0, k;
   svgdoc_event *x;
   const char **a;
+  svgdoc_css_match M;
+  int css = svgdoc_css_any(D);
   while (atts[n]) n += 2;
+  /* the sheets' declarations as they match here, in the document: the
+  ** used copies take them (SVG 2 section 5.6.2) */
+  if (css) svgdoc_css_match_node(D, D->depth, line, col, &M);
   D->events = grow(D, D->events, &D->events_room, D->nevents, sizeof *D->events);
   D->arena = &D->keep;                   /* kept as long as the document */
-  a = svgdoc_alloc(D, (n + 1) * sizeof *a);
+  a = svgdoc_alloc(D, (n + 1 + (css ? 4 * SVGDOC_NPROPS : 0)) * sizeof *a);
   for (k = 0; k < n; k++) a[k] = copy(D, atts[k]);
   a[n] = NULL;
+  if (css) svgdoc_css_store(D, &M, a, n);
   x = &D->events[D->nevents];
   x->tag = copy(D, tag), x->atts = a, x->line = line, x->col = col;
   D->arena = &D->tmp;
@@ -886,6 +911,17 @@ static void start_element(svgdoc *D, const char *qname, const char **atts) {
   /* what this element takes from the pool is given back at its end */
   svgdoc_mark_get(D, &m);
   D->stack[D->depth].mark = m;
+  svgns = tag == NULL || ((size_t)(tag - qname) == strlen(SVG_NS) &&
+                          memcmp(qname, SVG_NS, strlen(SVG_NS)) == 0);
+  /* every element, as selectors see it (a sheet may come later) */
+  svgdoc_css_open(D, D->depth, tag ? tag + 1 : qname, atts);
+  if (svgns && strcmp(tag ? tag + 1 : qname, "style") == 0) {
+    position(D, &line, &col);
+    svgdoc_css_style_start(D, atts, D->depth, line, col);
+  } else if (svgns && (lookup(SHAPES, tag ? tag + 1 : qname) >= 0 ||
+                       strcmp(tag ? tag + 1 : qname, "use") == 0)) {
+    D->shapes_seen++;                    /* what a later sheet cannot style */
+  }
   id = svgdoc_attr(atts, "id");
   keep_it = kept(D, id);
   /* inside a subtree that draws nothing and is not kept for <use>, only
@@ -897,8 +933,6 @@ static void start_element(svgdoc *D, const char *qname, const char **atts) {
     return;
   }
   position(D, &line, &col);
-  svgns = tag == NULL || ((size_t)(tag - qname) == strlen(SVG_NS) &&
-                          memcmp(qname, SVG_NS, strlen(SVG_NS)) == 0);
   tag = tag ? tag + 1 : qname;
   if (!D->root_seen) {
     D->root_seen = 1;
@@ -941,6 +975,8 @@ static void end_element(svgdoc *D) {
         strncmp(id, D->waiting, D->waiting_len) == 0 && id[D->waiting_len] == '\0')
       drain(D, 0);
   }
+  if (D->style_depth) svgdoc_css_style_end(D, D->depth - 1);
+  svgdoc_css_close(D, D->depth - 1);
   D->depth--;
   svgdoc_release(D, &D->stack[D->depth].mark);
 }
@@ -989,6 +1025,12 @@ static void XMLCALL on_end(void *ud, const XML_Char *name) {
   CATCH(D, end_element(D));
 }
 
+static void XMLCALL on_text(void *ud, const XML_Char *s, int len) {
+  svgdoc *D = ud;
+  if (D->style_depth == 0) return;        /* only a <style>'s text is read */
+  CATCH(D, svgdoc_css_text(D, s, (size_t)len));
+}
+
 static void XMLCALL on_entity(void *ud, const XML_Char *name, int is_param,
                               const XML_Char *value, int value_length,
                               const XML_Char *base, const XML_Char *system,
@@ -1013,15 +1055,17 @@ svgdoc *svgdoc_new(const svgdoc_options *o) {
   D->arena = &D->tmp;
   D->stack = malloc(((size_t)o->max_depth + 2) * sizeof *D->stack);
   D->open_ev = malloc(((size_t)o->max_depth + 2) * sizeof *D->open_ev);
+  D->nodes = malloc(((size_t)o->max_depth + 2) * sizeof *D->nodes);
   D->parser = XML_ParserCreateNS(NULL, '\1');
-  if (D->stack == NULL || D->open_ev == NULL || D->parser == NULL ||
-      D->lang == NULL) {
+  if (D->stack == NULL || D->open_ev == NULL || D->nodes == NULL ||
+      D->parser == NULL || D->lang == NULL) {
     svgdoc_free(D);
     return NULL;
   }
   XML_SetUserData((XML_Parser)D->parser, D);
   XML_SetElementHandler((XML_Parser)D->parser, on_start, on_end);
   XML_SetEntityDeclHandler((XML_Parser)D->parser, on_entity);
+  XML_SetCharacterDataHandler((XML_Parser)D->parser, on_text);
   return D;
 }
 
@@ -1040,6 +1084,8 @@ void svgdoc_free(svgdoc *D) {
   for (k = 0; k < SVGDOC_NPROPS; k++) free(D->props[k].s);
   for (k = 0; k <= SVGDOC_MAX_USE_DEPTH; k++) free(D->xstacks[k]);
   free(D->scratch.s), free(D->held.s);
+  svgdoc_css_free(D);
+  free(D->nodes), free(D->style_text.s), free(D->style_media.s);
   free(D->stack), free(D->open_ev), free(D->events);
   free(D->ids.keys), free(D->ids.vals), free(D->refs.keys), free(D->refs.vals);
   free(D->held_q), free(D->batch), free(D->warnings), free(D->err_msg);
