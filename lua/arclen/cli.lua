@@ -52,6 +52,8 @@ options:
                   viewBox mapped onto width/height, 96 px per inch), mm, cm, in, pt, pc
   --stroked       SVG documents: only shapes with a stroke (for plotters)
   --hidden        SVG documents: also display:none and visibility:hidden shapes
+  --strict        SVG documents: warnings are errors (a <use> of a missing id,
+                  an error in path data: by default the rest is measured)
   --quiet         no progress line (length and stat show one on a terminal
                   when a document takes more than a second)
   --arcs A        SVG documents: conics (default: segments as drawn, arcs exact)
@@ -90,7 +92,7 @@ end
 local VALUED = {["--method"] = true, ["--tol"] = true, ["--step"] = true, ["--n"] = true,
                 ["--units"] = true, ["--arcs"] = true}
 local FLAGS = {["--json"] = "json", ["--stroked"] = "stroked", ["--hidden"] = "hidden",
-               ["--quiet"] = "quiet"}
+               ["--quiet"] = "quiet", ["--strict"] = "strict"}
 
 -- Split argv into options and positional arguments.
 local function parse(argv)
@@ -216,6 +218,7 @@ local function svg_opts(opts)
   end
   if opts.stroked then o.stroked = true end
   if opts.hidden then o.hidden = true end
+  if opts.strict then o.strict = true end
   if opts.arcs then
     if opts.arcs ~= "conics" and opts.arcs ~= "cubics" then
       fail(format("--arcs: '%s' is neither conics nor cubics", opts.arcs), 2)

@@ -112,7 +112,7 @@ end
 -- over.  Returns the document without its elements.
 local function stream(o, name, next_chunk, uses, scan, on_element, size)
   local r = svgdoc.new({arc_tol = o.arc_tol or o.tol, hidden = o.hidden, arcs = o.arcs,
-    stroked = o.stroked, max_depth = o.max_depth or MAX_DEPTH, uses = uses,
+    stroked = o.stroked, strict = o.strict, max_depth = o.max_depth or MAX_DEPTH, uses = uses,
     unit_px = o.units ~= "user" and UNITS[o.units] or 0, stream = true})
   if scan then
     for _ = 1, huge do
@@ -165,8 +165,8 @@ local function stream(o, name, next_chunk, uses, scan, on_element, size)
 end
 
 -- The options of read, parse and each: tol, arc_tol, method, units,
--- hidden, stroked, measure, max_depth, arcs, max_elements, progress; each's
--- name.
+-- hidden, stroked, strict (the reader's warnings are errors), measure,
+-- max_depth, arcs, max_elements, progress; each's name.
 -- n: the options' argument position.
 local function read_opts(opts, fname, cap, n)
   n = n or 2
@@ -188,7 +188,7 @@ local function read_opts(opts, fname, cap, n)
       end
     elseif k == "arcs" then
       if v ~= "conics" and v ~= "cubics" then argerror4(2, fname, 'arcs must be "conics" or "cubics"') end
-    elseif k == "hidden" or k == "stroked" or k == "measure" then
+    elseif k == "hidden" or k == "stroked" or k == "measure" or k == "strict" then
       if type(v) ~= "boolean" then argerror4(2, fname, k .. " must be a boolean") end
     elseif k == "max_depth" then
       if type(v) ~= "number" or v ~= floor(v) or v < 1 or v > MAX_DEPTH then

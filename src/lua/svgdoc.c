@@ -4,7 +4,8 @@
 ** libexpat, which arclen.core does without.  arclen.svg is its user.
 **   svgdoc.new(opts) -> reader    opts: arc_tol, unit_px (0: user units),
 **                                 hidden, stroked, max_depth, uses, stream,
-**                                 max_held (the queue behind a forward use)
+**                                 max_held (the queue behind a forward use),
+**                                 strict (warnings are errors)
 **   reader:scan(s)                optional, before feed: the whole document
 **                                 once, for the ids <use> refers to
 **   reader:feed(s) -> elements    the next bytes of the document; with
@@ -93,6 +94,7 @@ static int l_new(lua_State *L) {
   o.stroked = opt_boolean(L, "stroked");
   o.uses = opt_boolean(L, "uses");
   o.stream = opt_boolean(L, "stream");
+  o.strict = opt_boolean(L, "strict");
   held = opt_number(L, "max_held", SVGDOC_MAX_HELD);
   luaL_argcheck(L, held >= 1 && held <= SVGDOC_MAX_HELD, 1, "max_held out of range");
   o.max_held = (size_t)held;

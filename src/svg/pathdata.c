@@ -98,6 +98,7 @@ typedef struct reader {
   const double *T;
   long sp;                  /* the open subpath, -1 when none */
   int overflow;             /* a mapped point beyond the doubles */
+  size_t at;                /* where the command being read starts */
 } reader;
 
 static int fail(reader *r, int kind, size_t i) {
@@ -106,6 +107,7 @@ static int fail(reader *r, int kind, size_t i) {
   e->pos = i + 1;
   e->at_end = i >= r->n;
   e->byte = i < r->n ? (unsigned char)r->d[i] : 0;
+  e->start = r->at < i ? r->at : i;
   return kind;
 }
 
@@ -598,15 +600,17 @@ int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
   size_t i;
   r.pd = pd; r.d = d; r.n = n; r.arc_tol = arc_tol; r.T = T; r.sp = -1;
   r.overflow = 0;
+  r.at = 0;
   pd->ncubics = pd->nsubpaths = 0;
   pd->err.kind = ARCLEN_PD_OK;
-  pd->err.pos = 0;
+  pd->err.pos = pd->err.start = 0;
   i = skip_space(&r, 0);
   if (i >= n) return fail(&r, ARCLEN_PD_EMPTY, 0);
   while (i < n) {
     unsigned char c = (unsigned char)d[i];
     char up = upper(c);
     size_t cmdpos = i;
+    r.at = cmdpos;
     if (is_alpha(c) && arg_count(up) >= 0) {
       if (cmd == 0 && up != 'M') return fail(&r, ARCLEN_PD_NO_MOVETO, i);
       cmd = up;
@@ -648,8 +652,10 @@ int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
     }
     i = skip_sep(&r, i);
     /* a trailing comma must be followed by another argument list */
-    if (d[i - 1] == ',' && (i >= n || is_alpha((unsigned char)d[i])))
+    if (d[i - 1] == ',' && (i >= n || is_alpha((unsigned char)d[i]))) {
+      r.at = i - 1;           /* the command before the comma is complete */
       return fail(&r, ARCLEN_PD_COMMA, i - 1);
+    }
   }
   return T != NULL ? transform(pd, T, r.overflow) : ARCLEN_PD_OK;
 }

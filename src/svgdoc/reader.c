@@ -107,11 +107,12 @@ static void *grow(svgdoc *D, void *a, size_t *room, size_t used,
 }
 
 /* A warning, its message copied into the document's own pool (msg may
-** be in the open element's). */
+** be in the open element's); under o.strict, an error. */
 static void warn(svgdoc *D, unsigned long line, unsigned long col,
                  const char *msg) {
   svgdoc_warning *w;
   svgdoc_arena *was = D->arena;
+  if (D->o.strict) svgdoc_fail(D, line, col, "%s", msg);
   if (D->nwarnings >= SVGDOC_MAX_WARNINGS) return;
   if (D->warnings == NULL) {
     D->warnings = malloc(SVGDOC_MAX_WARNINGS * sizeof *D->warnings);
@@ -122,6 +123,15 @@ static void warn(svgdoc *D, unsigned long line, unsigned long col,
   D->arena = was;
   w = &D->warnings[D->nwarnings++];
   w->line = line, w->col = col, w->msg = msg;
+}
+
+/* An error a renderer passes over (a missing reference, bad path data):
+** a warning "what; consequence" and the reading goes on, or under
+** o.strict the error "what". */
+static void lenient(svgdoc *D, unsigned long line, unsigned long col,
+                    const char *what, const char *consequence) {
+  if (D->o.strict) svgdoc_fail(D, line, col, "%s", what);
+  warn(D, line, col, svgdoc_format(D, "%s; %s", what, consequence));
 }
 
 /* ---- ids of kept elements, ids referred to ------------------------------ */
@@ -322,6 +332,19 @@ static const char *shape_size_message(svgdoc *D, const arclen_pathdata *pd,
                        "beyond the largest double", what, b->len ? b->s : "");
 }
 
+/* Is an error of path data one of its grammar (what SVG 2 section 9.5.4
+** renders up to), not a number beyond the doubles or a failed arc? */
+static int syntax_error(int kind) {
+  switch (kind) {
+    case ARCLEN_PD_NO_MOVETO: case ARCLEN_PD_AFTER_Z: case ARCLEN_PD_UNKNOWN:
+    case ARCLEN_PD_CLOSE_FIRST: case ARCLEN_PD_NUMBER: case ARCLEN_PD_EXPONENT:
+    case ARCLEN_PD_FLAG: case ARCLEN_PD_COMMA:
+      return 1;
+    default:
+      return 0;
+  }
+}
+
 /* A drawn shape: its path data into cubics under the CTM. */
 static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
                  const char *d, const char **atts, unsigned long line,
@@ -339,14 +362,39 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
   arclen_pathdata_init(&pd);
   if (svgdoc_shape_parse(D, &pd, tag, d, identity ? NULL : C) !=
       ARCLEN_PD_OK) {
-    const char *m = shape_size_message(D, &pd, tag, atts);
+    const char *m = shape_size_message(D, &pd, tag, atts), *what;
+    size_t good = pd.err.start;
     if (m == NULL) {
       m = pathdata_message(D, &pd, d);
       if (strcmp(tag, "path") == 0) m = svgdoc_format(D, "d: %s", m);
     }
-    arclen_pathdata_free(&pd);
-    svgdoc_fail(D, line, col, "<%s%s%s%s>: %s", tag, id ? " id='" : "",
-                id ? id : "", id ? "'" : "", m);
+    what = svgdoc_format(D, "<%s%s%s%s>: %s", tag, id ? " id='" : "",
+                         id ? id : "", id ? "'" : "", m);
+    if (!syntax_error(pd.err.kind) || strcmp(tag, "path") != 0) {
+      arclen_pathdata_free(&pd);
+      svgdoc_fail(D, line, col, "%s", what);
+    }
+    /* SVG 2 section 9.5.4 (SVG 1.1 F.2): the path is rendered up to the
+    ** command that holds the error, which is where the data read so far
+    ** ends (a separator left before it is dropped) */
+    while (good > 0 && (svgdoc_space((unsigned char)d[good - 1]) ||
+                        d[good - 1] == ','))
+      good--;
+    if (good == 0) {
+      arclen_pathdata_free(&pd);
+      lenient(D, line, col, what, "nothing drawn");
+      return;
+    }
+    lenient(D, line, col, what,
+            svgdoc_format(D, "drawn up to position %lu", (unsigned long)good));
+    d = svgdoc_strdup(D, d, good);
+    if (svgdoc_shape_parse(D, &pd, tag, d, identity ? NULL : C) !=
+        ARCLEN_PD_OK) {               /* only a range error can be left */
+      m = pathdata_message(D, &pd, d);
+      arclen_pathdata_free(&pd);
+      svgdoc_fail(D, line, col, "<%s%s%s%s>: d: %s", tag, id ? " id='" : "",
+                  id ? id : "", id ? "'" : "", m);
+    }
   }
   {
     /* a control point beyond the doubles (a line from -1e308 to 1e308
@@ -579,9 +627,12 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
   svgdoc_frame *stack;
   svgdoc_shadow root_sh, sh;
   const char **chain;
-  if (!find_id(&D->ids, u->href, strlen(u->href), &start))
-    svgdoc_fail(D, u->line, u->col, "<use> of '#%s': no element has that id",
-                u->href);
+  if (!find_id(&D->ids, u->href, strlen(u->href), &start)) {
+    /* SVG 2 section 5.6: a use with an invalid reference is not rendered */
+    lenient(D, u->line, u->col, svgdoc_format(D, "<use> of '#%s': no element "
+            "has that id", u->href), "nothing drawn");
+    return;
+  }
   for (k = 0; k < u->nchain; k++) {
     if (strcmp(u->chain[k], u->href) == 0) {
       svgdoc_buffer *b = &D->scratch;

@@ -38,6 +38,8 @@ typedef struct svgdoc_options {
   int uses;             /* the document may contain <use>: keep subtrees */
   int stream;           /* hand the elements over per feed, keep none */
   size_t max_held;      /* behind a forward use; 0: SVGDOC_MAX_HELD */
+  int strict;           /* warnings are errors (a missing reference, an
+                        ** error in path data: doc/svg.md) */
 } svgdoc_options;
 
 /* A drawn element.  Its strings live with it (NULL: none). */
