@@ -18,6 +18,7 @@
 **                           elements are the ones completed at the end)
 **   svgdoc.isatty([which]) -> boolean  is stderr (or "stdout") a terminal
 **                                 (the command line's progress line)
+**   svgdoc.gzip, svgdoc.gunzip    gzip input (svgdoc_gzip.c)
 ** A located error is raised as {line =, col =, msg =}; arclen.svg names
 ** the document in it.  Each element is {id, tag, layer, line, col,
 ** stroked, use, d, ctm = {a, b, c, d, e, f}, subpaths} (subpaths as
@@ -41,6 +42,8 @@
 #endif
 
 #define READER "arclen.svgdoc.reader"
+
+void arclenL_open_gzip(lua_State *L);    /* svgdoc_gzip.c */
 
 static svgdoc **check_reader(lua_State *L) {
   svgdoc **D = (svgdoc **)luaL_checkudata(L, 1, READER);
@@ -279,5 +282,6 @@ int luaopen_arclen_svgdoc(lua_State *L) {
   }
   lua_pop(L, 1);
   luaL_newlib(L, funcs);
+  arclenL_open_gzip(L);          /* gzip input (svgdoc_gzip.c) */
   return 1;
 }
