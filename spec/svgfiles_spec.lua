@@ -84,3 +84,153 @@ describe("errors a renderer passes over #svgdoc", function()
     assert.matches("strict must be a boolean", select(2, pcall(svg.parse, text, {strict = 1})))
   end)
 end)
+
+describe("documents as users have them #svgdoc", function()
+  local DIR = "spec/data/svgfiles/"
+  local svgdoc = require("arclen.svgdoc")
+  local input = require("arclen.svginput")
+
+  local function read_all(name)
+    local f = assert(io.open(name, "rb"))
+    local s = f:read("*a")
+    f:close()
+    return s
+  end
+
+  -- A function source giving text in chunks of n bytes.
+  local function chunks(text, n)
+    local pos = 1
+    return function()
+      if pos > #text then return nil end
+      local c = text:sub(pos, pos + n - 1)
+      pos = pos + n
+      return c
+    end
+  end
+
+  local function signature(doc)
+    local t = {}
+    for i, e in ipairs(doc.elements) do
+      t[i] = table.concat({tostring(e.id), e.tag, e.line, e.col, ("%.17g"):format(e.length), e.d}, " ")
+    end
+    return t
+  end
+
+  it("errors.svg: what renderers pass over, measured by hand (0 + 50 + 40 + 60 + 7 + 7)", function()
+    local doc = svg.read(DIR .. "errors.svg")
+    assert.are.same({0, 90, 60, 7, 7}, lengths(doc))
+    assert.are.equal(164, doc.total)
+    local where = {}
+    for i, w in ipairs(doc.warnings) do where[i] = w:match("^[^:]*:(%d+:%d+): ") end
+    table.sort(where)
+    assert.are.same({"4:3", "5:3", "6:3", "8:13", "8:13"}, where)
+    assert.matches("errors%.svg:4:3: <use> of '#path%-in%-another%-file': no element has that id", table.concat(doc.warnings, "\n"))
+    -- strict: the first error met (the use waits for the end of the
+    -- document, its target could still come)
+    assert.matches("^" .. DIR:gsub("%p", "%%%0") .. "errors%.svg:5:3: <path id='ocal'>: d: expected sweep%-flag",
+      select(2, pcall(svg.read, DIR .. "errors.svg", {strict = true})))
+  end)
+
+  it(".svgz (two gzip members) reads as the document it holds, by name, as text and as a stream", function()
+    if not svgdoc.gzip then return pending("arclen.svgdoc built without zlib") end
+    local plain = svg.read(DIR .. "errors.svg")
+    local z = svg.read(DIR .. "errors.svgz")
+    assert.are.same(signature(plain), signature(z))
+    assert.are.equal(#plain.warnings, #z.warnings)
+    assert.matches("^" .. DIR:gsub("%p", "%%%0") .. "errors%.svgz:%d+:%d+: ", z.warnings[1])
+    local text = read_all(DIR .. "errors.svgz")
+    assert.are.same(signature(plain), signature(svg.parse(text)))
+    for _, n in ipairs({1, 7, 100}) do
+      local got = {}
+      svg.each(chunks(text, n), function(e) got[#got + 1] = e end)
+      assert.are.same(signature(plain), signature({elements = got}))
+    end
+    -- zeros after the last member are padding (gzip(1) ignores them too)
+    assert.are.equal(164, svg.parse(text .. ("\0"):rep(50)).total)
+  end)
+
+  it("broken gzip: truncated, corrupt, or followed by other data: an error naming the file", function()
+    if not svgdoc.gzip then return pending("arclen.svgdoc built without zlib") end
+    local text = read_all(DIR .. "errors.svgz")
+    local function err(s) return select(2, pcall(svg.parse, s, nil, "z.svgz")) end
+    assert.matches("^z%.svgz: truncated gzip data: the file ends inside the compressed stream %(byte 100 ",
+      err(text:sub(1, 100)))
+    assert.matches("^z%.svgz: corrupt gzip data %(byte %d+ of the compressed data: ",
+      err(text:sub(1, 30) .. ("x"):rep(40) .. text:sub(71)))
+    assert.matches("^z%.svgz: data after the end of the gzip stream %(byte " .. #text .. " ",
+      err(text .. "garbage"))
+  end)
+
+  it("a gzip bomb (64 MiB of spaces in 64 KiB) is read in bounded memory", function()
+    if not svgdoc.gzip then return pending("arclen.svgdoc built without zlib") end
+    assert.are.equal(5, svg.read(DIR .. "bomb.svgz").total)
+    local status = io.open("/proc/self/status")
+    if not status then return end              -- the peak below is Linux's
+    status:close()
+    local helpers = require("helpers")
+    local script = [[
+      local svg = require("arclen.svg")
+      assert(svg.read("spec/data/svgfiles/bomb.svgz").total == 5)
+      for line in io.lines("/proc/self/status") do
+        local kb = line:match("^VmHWM:%s*(%d+)")
+        if kb then print(kb) end
+      end]]
+    local p = assert(io.popen(("LUA_PATH=%s LUA_CPATH=%s %s -e %s"):format(helpers.shquote(package.path),
+      helpers.shquote(package.cpath), helpers.interpreter(), helpers.shquote(script))))
+    local kb = tonumber(p:read("*a"))
+    p:close()
+    assert.is_number(kb)
+    assert.is_true(kb < 32 * 1024, "peak resident memory " .. tostring(kb) .. " KiB for 64 MiB inflated")
+  end)
+
+  it("without zlib, gzip input says what to do", function()
+    local it_ = input.chunks({gzip = false}, "a.svgz", chunks("\31\139\8\0\0\0\0\0", 4))
+    local ok, e = pcall(it_)
+    assert.is_false(ok)
+    assert.matches("^a%.svgz: gzip%-compressed %(%.svgz%): this arclen%.svgdoc was built without zlib; "
+      .. "install zlib's headers %(Debian zlib1g%-dev", e)
+  end)
+
+  it("other formats are named by their magic numbers, at 1:1", function()
+    local cases = {
+      {"\137PNG\r\n\26\n\0\0\0\rIHDR", "a PNG image"},
+      {"%PDF-1.7\n", "a PDF document"},
+      {"\255\216\255\224\0\16JFIF", "a JPEG image"},
+      {"GIF89a\1\0", "a GIF image"},
+      {"PK\3\4\20\0", "a ZIP archive"},
+      {"RIFF\0\0\0\0WEBPVP8 ", "a WebP image"},
+    }
+    for _, c in ipairs(cases) do
+      assert.are.equal("x.bin:1:1: not an SVG document (it looks like " .. c[2] .. ")",
+        select(2, pcall(svg.parse, c[1], nil, "x.bin")))
+      -- in chunks of one byte too (the first bytes gathered)
+      assert.are.equal("x.bin:1:1: not an SVG document (it looks like " .. c[2] .. ")",
+        select(2, pcall(svg.each, chunks(c[1], 1), function() end, {name = "x.bin"})))
+    end
+    -- text is the reader's: a BOM, a short document
+    assert.are.equal(1, svg.parse("\239\187\191" .. H .. '<line x2="1"/></svg>').total)
+    assert.are.equal(0, svg.parse("<svg/>").total)
+  end)
+
+  it("a file that cannot be read says why: no such file, is a directory, permission denied", function()
+    assert.are.equal(DIR .. "nope.svg: no such file", select(2, pcall(svg.read, DIR .. "nope.svg")))
+    local e = select(2, pcall(svg.read, "spec/data"))
+    if package.config:sub(1, 1) == "/" then
+      assert.are.equal("spec/data: is a directory", e)
+    else                                          -- Windows refuses to open it
+      assert.matches("^spec/data: [ip]", e)
+    end
+    local name = os.tmpname()
+    local f = assert(io.open(name, "w"))
+    f:write(H .. "</svg>")
+    f:close()
+    if package.config:sub(1, 1) == "/" and os.execute("chmod 000 " .. name) then
+      local g = io.open(name, "rb")
+      if g then g:close()                         -- root reads it anyway
+      else
+        assert.are.equal(name .. ": permission denied", select(2, pcall(svg.read, name)))
+      end
+    end
+    os.remove(name)
+  end)
+end)

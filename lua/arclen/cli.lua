@@ -308,8 +308,8 @@ end
 -- svg.each, on_element(e) per drawn element; its warnings go to stderr.
 -- prints: on_element writes to stdout (when stdout is the terminal too,
 -- the progress line is cleared first, lest they mix).  Returns the document without its
--- elements.
-local function each_svg(src, name, opts, on_element, prints)
+-- elements; when it fails, exits, or with soft returns nil and the message.
+local function each_svg(src, name, opts, on_element, prints, soft)
   local svg = svg_lib()
   local o = svg_opts(opts)
   local P = progress_for(name, opts)
@@ -326,6 +326,7 @@ local function each_svg(src, name, opts, on_element, prints)
   if type(src) ~= "string" then o.name = name end
   local ok, doc = pcall(svg.each, src, fn, o)
   if P then P.clear() end
+  if not ok and soft then return nil, message(doc) end
   if not ok then fail(message(doc)) end
   for _, w in ipairs(doc.warnings) do io.stderr:write("arclen: warning: ", w, "\n") end
   return doc
@@ -357,7 +358,10 @@ local function targets(args, from, opts, what)
   if a == "-" then
     text, source = read_file("-"), "stdin"
   elseif not a:find("^%s*[Mm]") then
-    local f = io.open(a, "rb")
+    local f, err, code = io.open(a, "rb")
+    if not f and code ~= 2 then     -- not ENOENT: permission denied...
+      fail(a .. ": " .. require("arclen.svginput").reason(err))
+    end
     if not f then fail(a .. ": no such file (and not SVG path data, which starts with M)") end
     f:close()
     text, source = "<", a       -- read by the document reader itself
@@ -502,12 +506,10 @@ function commands.stat(opts, args)
   local svg = svg_lib()
   if #args < 2 then fail("stat: no file (one or more SVG files)", 2) end
   local files, all = {}, {length = 0, travel = 0, paths = 0, elements = 0, segments = 0}
-  local units
-  for i = 2, #args do
-    local acc = svg.stats()     -- one row per layer, whatever the file's size
-    local doc = each_svg(args[i], args[i], opts, function(e) acc:add(e) end)
-    units = doc.units
-    local st = acc:result()
+  local units, failed = svg_opts(opts).units or "user", {}
+  -- a file that fails is reported (its place in the message) and the
+  -- others are still measured; the exit status says that one failed
+  local function add(file, st)
     for _, k in ipairs({"length", "travel", "paths", "elements", "segments"}) do
       all[k] = all[k] + st.total[k]
     end
@@ -520,11 +522,27 @@ function commands.stat(opts, args)
         a[3], a[4] = math.max(a[3], b[3]), math.max(a[4], b[4])
       end
     end
-    files[#files + 1] = {file = args[i], layers = st.layers, total = st.total}
+    files[#files + 1] = {file = file, layers = st.layers, total = st.total}
+  end
+  for i = 2, #args do
+    local acc = svg.stats()     -- one row per layer, whatever the file's size
+    local doc, err = each_svg(args[i], args[i], opts, function(e) acc:add(e) end, false, true)
+    if doc == nil then
+      io.stderr:write("arclen: ", err, "\n")
+      failed[#failed + 1] = {file = args[i], error = err}
+    else
+      units = doc.units
+      add(args[i], acc:result())
+    end
+  end
+  local function done()
+    if #failed == 0 then return end
+    io.stderr:write(format("arclen: stat: %d of %d files failed\n", #failed, #args - 1))
+    os.exit(1)
   end
   if opts.json then
-    print(json({files = files, total = all, units = units}))
-    return
+    print(json({files = files, total = all, units = units, failed = failed[1] and failed or nil}))
+    return done()
   end
   for _, f in ipairs(files) do
     for _, line in ipairs(stat_lines(f.file, f, units)) do print(line) end
@@ -534,6 +552,7 @@ function commands.stat(opts, args)
       if not line:match("Layer count") then print(line) end
     end
   end
+  done()
 end
 
 function commands.time(opts, args)

@@ -249,19 +249,6 @@ local function collect(o, name, next_chunk, uses, scan, size)
   return doc
 end
 
--- svg.parse(text [, opts [, name]]) -> doc.  name (default "<string>")
--- names the document in messages.
-function M.parse(text, opts, name)
-  if type(text) ~= "string" then argerror(1, "arclen.svg.parse", "SVG text (a string) expected, got " .. type(text)) end
-  local o = read_opts(opts, "arclen.svg.parse", MAX_ELEMENTS)
-  if name ~= nil and type(name) ~= "string" then argerror(3, "arclen.svg.parse", "name must be a string") end
-  name = name or "<string>"
-  local uses = may_use(text) and true or false
-  return located_call(name, function()
-    return collect(o, name, text_chunks(text), uses, uses and text_chunks(text) or nil, #text)
-  end)
-end
-
 -- Chunks (inflated when the file is gzip): do they contain what could be
 -- a <use> element?
 local function chunks_may_use(next_chunk)
@@ -272,6 +259,22 @@ local function chunks_may_use(next_chunk)
     if may_use(tail .. sub(c, 1, 8)) or may_use(c) then return true end
     tail = sub(c, -8)
   end
+end
+
+-- svg.parse(text [, opts [, name]]) -> doc.  name (default "<string>")
+-- names the document in messages.
+function M.parse(text, opts, name)
+  if type(text) ~= "string" then argerror(1, "arclen.svg.parse", "SVG text (a string) expected, got " .. type(text)) end
+  local o = read_opts(opts, "arclen.svg.parse", MAX_ELEMENTS)
+  if name ~= nil and type(name) ~= "string" then argerror(3, "arclen.svg.parse", "name must be a string") end
+  name = name or "<string>"
+  return located_call(name, function()
+    local uses = may_use(text) and true or false
+    if not uses and input.sniff(sub(text, 1, 12)) == "gzip" then   -- what it inflates to
+      uses = chunks_may_use((input.chunks(svgdoc, name, text_chunks(text))))
+    end
+    return collect(o, name, text_chunks(text), uses, uses and text_chunks(text) or nil, #text)
+  end)
 end
 
 -- The stream of a file by name: three passes when it may contain <use>

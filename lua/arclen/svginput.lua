@@ -20,7 +20,7 @@ local MAGIC = {
   {"\40\181\47\253", "zstd-compressed data"},
   {"wOFF", "a WOFF font"}, {"wOF2", "a WOFF2 font"},
 }
-local HEAD = 8                        -- bytes looked at
+local HEAD = 12                       -- bytes looked at (WebP: 12)
 
 -- What head (the first bytes) is: "gzip", a description of a format that
 -- is not SVG, or nil (text: the reader decides).
