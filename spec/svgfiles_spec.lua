@@ -77,6 +77,29 @@ describe("errors a renderer passes over #svgdoc", function()
     assert.matches("^u%.svg:%d+:%d+: <use> of '#[a-z]+': no element has that id$", e)
   end)
 
+  it("after a scan, a <use> of a missing id holds nothing back (a stream goes on)", function()
+    local svgdoc = require("arclen.svgdoc")
+    local text = H .. '<use href="#nope"/>\n' .. ('<path d="M0 0 L1 0"/>\n'):rep(50) .. "</svg>"
+    for _, scanned in ipairs({true, false}) do
+      local r = svgdoc.new({uses = true, stream = true})
+      if scanned then r:scan(text) end
+      local early = 0
+      for k = 1, #text, 100 do
+        local list = r:feed(text:sub(k, k + 99))
+        if list and k + 99 < #text then early = early + #list end
+      end
+      local res = r:finish("n.svg")
+      if scanned then
+        assert.is_true(early >= 45, "handed over before the end: " .. early)
+      else                           -- the target could still come
+        assert.are.equal(0, early)
+        assert.are.equal(50, #res.elements)
+      end
+      assert.are.same({"n.svg:1:" .. COL .. ": <use> of '#nope': no element has that id; nothing drawn"},
+        res.warnings)
+    end
+  end)
+
   it("strict turns every warning into an error, and is a boolean", function()
     local text = H .. '<path transform="scale(0)" d="M0 0 L1 0"/></svg>'
     assert.are.equal(1, #svg.parse(text).warnings)
@@ -125,10 +148,20 @@ describe("documents as users have them #svgdoc", function()
     table.sort(where)
     assert.are.same({"4:3", "5:3", "6:3", "8:13", "8:13"}, where)
     assert.matches("errors%.svg:4:3: <use> of '#path%-in%-another%-file': no element has that id", table.concat(doc.warnings, "\n"))
-    -- strict: the first error met (the use waits for the end of the
-    -- document, its target could still come)
-    assert.matches("^" .. DIR:gsub("%p", "%%%0") .. "errors%.svg:5:3: <path id='ocal'>: d: expected sweep%-flag",
-      select(2, pcall(svg.read, DIR .. "errors.svg", {strict = true})))
+    assert.are.same(where, (function()     -- in document order (the scan knows the ids)
+      local t = {}
+      for i, w in ipairs(doc.warnings) do t[i] = w:match("^[^:]*:(%d+:%d+): ") end
+      return t
+    end)())
+    -- strict: the first error met
+    assert.matches("^" .. DIR:gsub("%p", "%%%0") .. "errors%.svg:4:3: <use> of '#path%-in%-another%-file': "
+      .. "no element has that id$", select(2, pcall(svg.read, DIR .. "errors.svg", {strict = true})))
+    -- from a stream, not scanned, the use waits for the end: the path first
+    local f = assert(io.open(DIR .. "errors.svg", "rb"))
+    local ok, e = pcall(svg.each, f, function() end, {strict = true, name = "s"})
+    f:close()
+    assert.is_false(ok)
+    assert.matches("^s:5:3: <path id='ocal'>: d: expected sweep%-flag", e)
   end)
 
   it(".svgz (two gzip members) reads as the document it holds, by name, as text and as a stream", function()

@@ -705,6 +705,7 @@ static int ready(svgdoc *D, const char *id, size_t n, size_t depth,
   size_t start, i;
   svgdoc_event *ev;
   if (!find_id(&D->ids, id, n, &start) || D->events[start].close == 0) {
+    if (svgdoc_bloom_absent(D, id, n)) return 1;   /* expanding warns */
     *waiting = id, *wlen = n;
     return 0;
   }
@@ -781,6 +782,7 @@ static void use_at_top(svgdoc *D, svgdoc_use *u) {
   char *at;
   size_t budget = SVGDOC_MAX_REPLAYED;
   if (!D->record ||               /* nothing kept: the missing id, now */
+      svgdoc_bloom_absent(D, u->href, strlen(u->href)) ||
       (!holding(D) && ready(D, u->href, strlen(u->href), 0, &budget,
                             &D->waiting, &D->waiting_len))) {
     expand_top(D, u);
@@ -1081,6 +1083,7 @@ void svgdoc_free(svgdoc *D) {
   free(D->stack), free(D->open_ev), free(D->events);
   free(D->ids.keys), free(D->ids.vals), free(D->refs.keys), free(D->refs.vals);
   free(D->held_q), free(D->batch), free(D->warnings), free(D->err_msg);
+  free(D->id_bloom);
   free(D);
 }
 
@@ -1088,6 +1091,10 @@ void svgdoc_free(svgdoc *D) {
 
 static void end_scan(svgdoc *D) {
   if (D->scanner == NULL) return;
+  /* the whole document scanned (well-formed to its end): its ids known */
+  if (!D->scan_lost && XML_Parse((XML_Parser)D->scanner, NULL, 0, 1) ==
+      XML_STATUS_OK)
+    D->ids_known = 1;
   XML_ParserFree((XML_Parser)D->scanner);
   D->scanner = NULL;
 }
@@ -1099,6 +1106,9 @@ static void XMLCALL on_scan_start(void *ud, const XML_Char *qname,
   size_t n;
   jmp_buf jb;
   tag = tag ? tag + 1 : qname;
+  if ((id = svgdoc_attr(atts, "id")) != NULL &&
+      svgdoc_bloom_add(D, id, strlen(id)) != 0)
+    D->scan_lost = 1;                    /* out of memory: ids unknown */
   if (strcmp(tag, "use") != 0) return;
   href = svgdoc_attr(atts, "href");
   if (href == NULL) href = svgdoc_attr(atts, XLINK_HREF);
@@ -1108,6 +1118,7 @@ static void XMLCALL on_scan_start(void *ud, const XML_Char *qname,
     D->arena = &D->keep;
     add_id(D, &D->refs, svgdoc_strdup(D, id, n), 0);
   } else {                               /* out of memory: keep every id */
+    D->scan_lost = 1;
     D->failed = 0;
     free(D->err_msg);
     D->err_msg = NULL;
@@ -1156,6 +1167,7 @@ void svgdoc_scan(svgdoc *D, const char *s, size_t n) {
     if (XML_Parse(p, s, len, 0) != XML_STATUS_OK) {
       /* malformed (the reading says where) or stopped: what was seen is
       ** what the reading can reach before the same place */
+      D->scan_lost = 1;
       end_scan(D);
       return;
     }
