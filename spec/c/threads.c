@@ -681,6 +681,7 @@ static void job_svgdoc(sink *s) {
       o.uses = 1;
       o.stream = 0;                    /* collected: put_doc reads them all */
       o.max_held = 0;
+      o.strict = 0;
       o.arcs = ARCLEN_PD_ARCS_CUBICS;     /* measured below as cubics */
       put_s(s, docs[i].name);
       D = svgdoc_new(&o);
@@ -764,6 +765,7 @@ static int build_shared(void) {
     so.uses = 1;
     so.stream = 0;
     so.max_held = 0;
+    so.strict = 0;
     so.arcs = ARCLEN_PD_ARCS_CUBICS;
     shared_doc = svgdoc_new(&so);
     if (shared_doc == NULL || svgdoc_feed(shared_doc, DOCS[0], strlen(DOCS[0])) != 0 ||

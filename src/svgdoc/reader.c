@@ -380,14 +380,15 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
     while (good > 0 && (svgdoc_space((unsigned char)d[good - 1]) ||
                         d[good - 1] == ','))
       good--;
+    arclen_pathdata_free(&pd);          /* lenient may jump (strict) */
     if (good == 0) {
-      arclen_pathdata_free(&pd);
       lenient(D, line, col, what, "nothing drawn");
       return;
     }
     lenient(D, line, col, what,
             svgdoc_format(D, "drawn up to position %lu", (unsigned long)good));
     d = svgdoc_strdup(D, d, good);
+    arclen_pathdata_init(&pd);
     if (svgdoc_shape_parse(D, &pd, tag, d, identity ? NULL : C) !=
         ARCLEN_PD_OK) {               /* only a range error can be left */
       m = pathdata_message(D, &pd, d);
