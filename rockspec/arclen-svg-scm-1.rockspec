@@ -20,6 +20,7 @@ build = {
         "src/lua/subpaths.c",
         "src/svgdoc/attrs.c",
         "src/svgdoc/gzip.c",
+        "src/svgdoc/idbloom.c",
         "src/svgdoc/memory.c",
         "src/svgdoc/reader.c",
         "src/svgdoc/shapes.c",
