@@ -79,7 +79,8 @@ describe("arclen.svg: bad documents, each a clear error naming the file and plac
      "transform='translate%(1%) skewY%(%-90%)': skewY%(%-90%) is undefined .* at character 14$"},
     {"skewX(270)", H .. '<g transform="skewX(270)"/></svg>', "skewX%(270%) is undefined"},
   }
-  -- a renderer passes over these two (doc/svg.md, "Errors"): errors only
+  -- a renderer passes over these two (doc/svg.md, "Files, and errors a
+  -- renderer passes over"): errors only
   -- under strict, warnings otherwise (spec/svgfiles_spec.lua)
   local STRICT = {["bad path data, with its position"] = true, ["a use of a missing id"] = true}
   for _, c in ipairs(cases) do

@@ -33,7 +33,8 @@ commands:
                                -                        SVG file or path data on stdin
   stat FILE.svg ...          per layer (Inkscape layers, else top-level groups) and in
                              total: length, pen-up travel, paths (subpaths), elements,
-                             segments, bounding box -- what vpype stat prints
+                             segments, bounding box -- what vpype stat prints; a file
+                             that fails is reported and the others measured (exit 1)
   time S WHAT                path time at distance S (MetaPost's convention: segment
                              index + parameter; for one cubic, t in [0, 1])
   point S WHAT               the point and unit tangent at distance S
@@ -64,7 +65,9 @@ options:
 WHAT of several paths (a file) is measured element by element; time, point
 and resample need a single path.  SVG documents are read as a renderer draws
 them: basic shapes, transforms, viewports, <use>; lengths in the root's user
-units unless --units says otherwise.  length and stat read a document as a
+units unless --units says otherwise.  Gzip-compressed documents (.svgz) are
+read as the document they hold.  A <use> of a missing id and an error in
+path data are warnings (the path drawn up to the error), errors with --strict.  length and stat read a document as a
 stream: each element is measured (and length prints its row) as soon as it
 is read, so that their memory does not grow with the file.
 
