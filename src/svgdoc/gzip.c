@@ -21,6 +21,8 @@ struct svgdoc_gunzip {
   z_stream z;
   int live;                  /* inflateInit2 succeeded */
   int ended;                 /* the last member's trailer was read */
+  int more;                  /* the last inflate filled its room: it may
+                             ** hold output for input it has taken already */
   int failed;
   char *in;
   size_t in_len, in_at, in_room;
@@ -72,12 +74,14 @@ long svgdoc_gunzip_read(svgdoc_gunzip *g, char *out, size_t room) {
   int calls;
   if (g->failed) return -1;
   if (room > MAX_STEP) room = MAX_STEP;
-  for (calls = 0; calls < MAX_CALLS && made < room && g->in_at < g->in_len;
+  for (calls = 0; calls < MAX_CALLS && made < room &&
+                  (g->in_at < g->in_len || g->more);
        calls++) {
     size_t avail, used;
     int rc;
     if (g->ended) {
       /* RFC 1952 section 2.2: another member may follow; zeros pad */
+      g->more = 0;
       while (g->in_at < g->in_len && g->in[g->in_at] == 0)
         g->in_at++, g->consumed++;
       if (g->in_at == g->in_len) break;
@@ -96,6 +100,8 @@ long svgdoc_gunzip_read(svgdoc_gunzip *g, char *out, size_t room) {
     rc = inflate(&g->z, Z_NO_FLUSH);
     used = avail - g->z.avail_in;
     g->in_at += used, g->consumed += used;
+    /* a full room: inflate may hold more output for the bits it took */
+    g->more = g->z.avail_out == 0 && rc == Z_OK;
     made = room - g->z.avail_out;
     if (rc == Z_STREAM_END) {
       g->ended = 1;
