@@ -706,7 +706,8 @@ static int ready(svgdoc *D, const char *id, size_t n, size_t depth,
   size_t start, i;
   svgdoc_event *ev;
   if (!find_id(&D->ids, id, n, &start) || D->events[start].close == 0) {
-    if (svgdoc_bloom_absent(D, id, n)) return 1;   /* expanding warns */
+    if (!find_id(&D->ids, id, n, NULL) && svgdoc_bloom_absent(D, id, n))
+      return 1;                          /* never comes: expanding warns */
     *waiting = id, *wlen = n;
     return 0;
   }
@@ -783,7 +784,8 @@ static void use_at_top(svgdoc *D, svgdoc_use *u) {
   char *at;
   size_t budget = SVGDOC_MAX_REPLAYED;
   if (!D->record ||               /* nothing kept: the missing id, now */
-      svgdoc_bloom_absent(D, u->href, strlen(u->href)) ||
+      (svgdoc_bloom_absent(D, u->href, strlen(u->href)) &&
+       !find_id(&D->ids, u->href, strlen(u->href), NULL)) ||
       (!holding(D) && ready(D, u->href, strlen(u->href), 0, &budget,
                             &D->waiting, &D->waiting_len))) {
     expand_top(D, u);
