@@ -337,7 +337,7 @@ check-threads:
 #                  (Debian gcc-mingw-w64-x86-64), no warnings allowed,
 #                  against lua54.dll (tools/windows-lua.sh) and a static
 #                  expat (tools/windows-expat.sh), both built from Debian's
-#                  source packages.  tools/check-windows.sh runs the specs
+#                  source packages, and Debian's static zlib for MinGW.  tools/check-windows.sh runs the specs
 #                  under Wine.
 WIN_CC ?= x86_64-w64-mingw32-gcc
 WIN_AR ?= x86_64-w64-mingw32-ar
@@ -347,8 +347,12 @@ WIN_EXPAT ?= $(WIN_OUT)/expat
 WIN_FLAGS = $(WARN) -Werror -Wvla -ffp-contract=off -fno-math-errno
 WIN_CORE_OBJ = $(patsubst src/%.c,$(WIN_OUT)/obj/%.o,$(CORE_SRC))
 WIN_BIND_OBJ = $(patsubst src/%.c,$(WIN_OUT)/obj/%.o,$(BIND_SRC))
-# (without zlib: gzip input says that this build cannot read it)
 WIN_DOC_OBJ = $(patsubst src/%.c,$(WIN_OUT)/obj/%.o,$(DOC_SRC) src/lua/svgdoc.c src/lua/svgdoc_gzip.c)
+# zlib for gzip input: Debian's libz-mingw-w64-dev, linked static (its
+# libz.a; tools/check-windows.sh installs it).  Without it the DLL is
+# built without gzip, which says so when it meets a .svgz.
+WIN_ZLIB ?= /usr/x86_64-w64-mingw32/lib/libz.a
+WIN_ZLIB_LIB = $(wildcard $(WIN_ZLIB))
 .PHONY: windows
 windows: $(WIN_OUT)/arclen/core.dll $(WIN_OUT)/arclen/svgdoc.dll
 
@@ -361,6 +365,7 @@ $(WIN_EXPAT)/lib/libexpat.a:
 # The document reader's files see expat's header, for a static libexpat
 $(WIN_DOC_OBJ): WIN_DOC_FLAGS = -DXML_STATIC -I$(WIN_EXPAT)/include
 $(WIN_DOC_OBJ): $(WIN_EXPAT)/lib/libexpat.a
+$(WIN_OUT)/obj/svgdoc/gzip.o: WIN_DOC_FLAGS = $(if $(WIN_ZLIB_LIB),-DARCLEN_HAVE_ZLIB)
 
 $(WIN_OUT)/obj/%.o: src/%.c $(HEADERS) $(WIN_LUA)/lua54.dll
 	@mkdir -p $(dir $@)
@@ -378,4 +383,4 @@ $(WIN_OUT)/arclen/core.dll: $(WIN_CORE_OBJ) $(WIN_BIND_OBJ)
 
 $(WIN_OUT)/arclen/svgdoc.dll: $(WIN_DOC_OBJ) $(WIN_OUT)/obj/lua/subpaths.o $(WIN_OUT)/libarclen.a
 	@mkdir -p $(dir $@)
-	$(WIN_CC) -shared -o $@ $^ $(WIN_EXPAT)/lib/libexpat.a $(WIN_LUA)/lua54.dll
+	$(WIN_CC) -shared -o $@ $^ $(WIN_EXPAT)/lib/libexpat.a $(WIN_ZLIB_LIB) $(WIN_LUA)/lua54.dll
