@@ -376,6 +376,13 @@ describe("arclen CLI: files as users have them (issue 32) #svgdoc", function()
     local out, err, status = run({"length", "--quiet", DIR .. "errors.svgz"})
     assert.are.equal(0, status, err)
     assert.matches("\ntotal\t164\n$", out)
+    -- on stdin too (gzip bytes need not contain '<')
+    local p = assert(io.popen(("LUA_PATH=%s LUA_CPATH=%s %s %s length - < %s 2>/dev/null"):format(
+      shquote(package.path), shquote(package.cpath), interpreter(), shquote(MAIN),
+      shquote(DIR .. "errors.svgz"))))
+    out = p:read("*a")
+    p:close()
+    assert.matches("\ntotal\t164\n$", out)
   end)
 
   it("stat of several files: each that fails is reported, the others measured, exit 1", function()

@@ -335,6 +335,12 @@ local function each_svg(src, name, opts, on_element, prints, soft)
   return doc
 end
 
+-- Is text (stdin's first chunk) a document rather than path data: markup,
+-- gzip, or another format's magic bytes (which the reader names)?
+local function markup(text)
+  return text:find("<") ~= nil or require("arclen.svginput").sniff(text:sub(1, 12)) ~= nil
+end
+
 -- The paths named by args[from..]: {{label =, path =}...}, or a cubic.
 local function targets(args, from, opts, what)
   local arclen = require("arclen")
@@ -372,7 +378,7 @@ local function targets(args, from, opts, what)
   if text == nil then
     return {{label = "path", path = call(1, arclen.path.svg, a, o)}}
   end
-  if not text:find("<") then   -- path data on stdin
+  if not markup(text) then     -- path data on stdin
     return {{label = "path", path = call(1, arclen.path.svg, text, o)}}
   end
   local doc = read_svg(source, a == "-" and text or nil, opts)
@@ -440,7 +446,7 @@ local function document_arg(args, from)
   if tonumber(a) then return nil end
   if a == "-" then
     local first = stdin_peek()
-    if not first:find("<") then return nil end
+    if not markup(first) then return nil end
     local given = false
     return function()
       if not given then given = true return first end
