@@ -71,7 +71,7 @@ OUT = $(BUILD)/$(LUA)
 # doc/architecture.md for the areas and the one-way order between them.
 AREAS = curve roots gauss elliptic metapost fit conic baseline segment svg methods
 CORE_SRC = $(foreach a,$(AREAS),$(wildcard src/$(a)/*.c))
-BIND_SRC = $(filter-out src/lua/svgdoc.c,$(wildcard src/lua/*.c))
+BIND_SRC = $(filter-out src/lua/svgdoc%.c,$(wildcard src/lua/*.c))
 CORE_OBJ = $(patsubst src/%.c,$(BUILD)/core/%.o,$(CORE_SRC))
 BIND_OBJ = $(patsubst src/%.c,$(OUT)/%.o,$(BIND_SRC))
 HEADERS = $(wildcard src/*.h src/*/*.h)
@@ -94,6 +94,23 @@ ifndef EXPAT_LIBS
   endif
 endif
 HAVE_EXPAT := $(shell printf '\043include <expat.h>\n' | $(CC) $(EXPAT_CFLAGS) -E - >/dev/null 2>&1 && echo yes)
+# zlib, optional too: gzip-compressed documents (.svgz) are read when the
+# reader is built with it (Debian zlib1g-dev; ZLIB_CFLAGS, ZLIB_LIBS
+# override), and said to need it otherwise.
+ifndef ZLIB_LIBS
+  ifeq ($(shell pkg-config --exists zlib 2>/dev/null && echo yes),yes)
+    ZLIB_CFLAGS := $(shell pkg-config --cflags zlib)
+    ZLIB_LIBS := $(shell pkg-config --libs zlib)
+  else
+    ZLIB_LIBS := -lz
+  endif
+endif
+HAVE_ZLIB := $(shell printf '\043include <zlib.h>\n' | $(CC) $(ZLIB_CFLAGS) -E - >/dev/null 2>&1 && echo yes)
+ifeq ($(HAVE_ZLIB),yes)
+  ZLIB_DEFS = -DARCLEN_HAVE_ZLIB
+else
+  ZLIB_LIBS :=
+endif
 ifeq ($(HAVE_EXPAT),yes)
   ALL_MODULES = $(MODULE) $(DOC_MODULE)
 else
@@ -119,6 +136,14 @@ check-layers: $(CORE_OBJ) $(DOC_OBJ)
 
 # The document reader's files see expat's header (XFLAGS: per target).
 $(DOC_OBJ) $(OUT)/lua/svgdoc.o: XFLAGS = $(EXPAT_CFLAGS)
+# zlib's header for the inflater only (the object records whether it had
+# zlib: a stamp of the choice rebuilds it when that changes)
+$(BUILD)/core/svgdoc/gzip.o: XFLAGS = $(ZLIB_CFLAGS) $(ZLIB_DEFS)
+$(BUILD)/core/svgdoc/gzip.o: $(BUILD)/zlib-$(if $(ZLIB_DEFS),yes,no)
+$(BUILD)/zlib-yes $(BUILD)/zlib-no:
+	@mkdir -p $(BUILD)
+	@rm -f $(BUILD)/zlib-yes $(BUILD)/zlib-no
+	@touch $@
 
 $(BUILD)/core/%.o: src/%.c $(HEADERS)
 	@mkdir -p $(dir $@)
@@ -136,9 +161,9 @@ $(MODULE): $(CORE_OBJ) $(BIND_OBJ)
 	@mkdir -p $(dir $@)
 	$(CC) $(MODULE_LDFLAGS) -o $@ $^ -lm
 
-$(DOC_MODULE): $(OUT)/lua/svgdoc.o $(OUT)/lua/subpaths.o $(DOC_OBJ) $(BUILD)/libarclen.a
+$(DOC_MODULE): $(OUT)/lua/svgdoc.o $(OUT)/lua/svgdoc_gzip.o $(OUT)/lua/subpaths.o $(DOC_OBJ) $(BUILD)/libarclen.a
 	@mkdir -p $(dir $@)
-	$(CC) $(MODULE_LDFLAGS) -o $@ $^ $(EXPAT_LIBS) -lm
+	$(CC) $(MODULE_LDFLAGS) -o $@ $^ $(EXPAT_LIBS) $(ZLIB_LIBS) -lm
 
 # The test command builds the module for every Lua on the machine (5.4 and,
 # where installed, 5.1, 5.2, 5.3 -- also LuaTeX's texlua -- and LuaJIT).
@@ -312,7 +337,7 @@ check-threads:
 #                  (Debian gcc-mingw-w64-x86-64), no warnings allowed,
 #                  against lua54.dll (tools/windows-lua.sh) and a static
 #                  expat (tools/windows-expat.sh), both built from Debian's
-#                  source packages.  tools/check-windows.sh runs the specs
+#                  source packages, and Debian's static zlib for MinGW.  tools/check-windows.sh runs the specs
 #                  under Wine.
 WIN_CC ?= x86_64-w64-mingw32-gcc
 WIN_AR ?= x86_64-w64-mingw32-ar
@@ -322,7 +347,12 @@ WIN_EXPAT ?= $(WIN_OUT)/expat
 WIN_FLAGS = $(WARN) -Werror -Wvla -ffp-contract=off -fno-math-errno
 WIN_CORE_OBJ = $(patsubst src/%.c,$(WIN_OUT)/obj/%.o,$(CORE_SRC))
 WIN_BIND_OBJ = $(patsubst src/%.c,$(WIN_OUT)/obj/%.o,$(BIND_SRC))
-WIN_DOC_OBJ = $(patsubst src/%.c,$(WIN_OUT)/obj/%.o,$(DOC_SRC) src/lua/svgdoc.c)
+WIN_DOC_OBJ = $(patsubst src/%.c,$(WIN_OUT)/obj/%.o,$(DOC_SRC) src/lua/svgdoc.c src/lua/svgdoc_gzip.c)
+# zlib for gzip input: Debian's libz-mingw-w64-dev, linked static (its
+# libz.a; tools/check-windows.sh installs it).  Without it the DLL is
+# built without gzip, which says so when it meets a .svgz.
+WIN_ZLIB ?= /usr/x86_64-w64-mingw32/lib/libz.a
+WIN_ZLIB_LIB = $(wildcard $(WIN_ZLIB))
 .PHONY: windows
 windows: $(WIN_OUT)/arclen/core.dll $(WIN_OUT)/arclen/svgdoc.dll
 
@@ -335,6 +365,7 @@ $(WIN_EXPAT)/lib/libexpat.a:
 # The document reader's files see expat's header, for a static libexpat
 $(WIN_DOC_OBJ): WIN_DOC_FLAGS = -DXML_STATIC -I$(WIN_EXPAT)/include
 $(WIN_DOC_OBJ): $(WIN_EXPAT)/lib/libexpat.a
+$(WIN_OUT)/obj/svgdoc/gzip.o: WIN_DOC_FLAGS = $(if $(WIN_ZLIB_LIB),-DARCLEN_HAVE_ZLIB)
 
 $(WIN_OUT)/obj/%.o: src/%.c $(HEADERS) $(WIN_LUA)/lua54.dll
 	@mkdir -p $(dir $@)
@@ -352,4 +383,4 @@ $(WIN_OUT)/arclen/core.dll: $(WIN_CORE_OBJ) $(WIN_BIND_OBJ)
 
 $(WIN_OUT)/arclen/svgdoc.dll: $(WIN_DOC_OBJ) $(WIN_OUT)/obj/lua/subpaths.o $(WIN_OUT)/libarclen.a
 	@mkdir -p $(dir $@)
-	$(WIN_CC) -shared -o $@ $^ $(WIN_EXPAT)/lib/libexpat.a $(WIN_LUA)/lua54.dll
+	$(WIN_CC) -shared -o $@ $^ $(WIN_EXPAT)/lib/libexpat.a $(WIN_ZLIB_LIB) $(WIN_LUA)/lua54.dll

@@ -13,7 +13,8 @@
 ** the same records, bit for bit (streaming and chunks change nothing).
 ** The stream builds basic shapes from their numbers, the collected reading
 ** parses their path data as text (shape_text): the same records and errors.
-** The second byte's lowest bit also chooses arcs as conics or cubics.
+** The second byte's lowest bit also chooses arcs as conics or cubics, its
+** highest strict (without a scan).
 */
 #include <string.h>
 
@@ -141,6 +142,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   o.max_depth = (data[0] >> 6) == 3 ? 8 : SVGDOC_MAX_DEPTH;
   scan = (data[0] >> 6) == 2;
   o.max_held = 0;                        /* the default cap */
+  /* strict (warnings are errors) where both readings meet them in the
+  ** same order: without the scan (its ids pass a missing use over early) */
+  o.strict = scan ? 0 : (data[1] >> 7) & 1;
   o.arcs = (data[1] & 1) ? ARCLEN_PD_ARCS_CUBICS : ARCLEN_PD_ARCS_CONICS;
   cut = n ? data[1] * n / 256 : 0;
   o.stream = 1;

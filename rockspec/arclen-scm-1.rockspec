@@ -91,6 +91,7 @@ build = {
     ["arclen.repro.svgplot"] = "lua/arclen/repro/svgplot.lua",
     ["arclen.sty"] = "lua/arclen/sty.lua",
     ["arclen.svg"] = "lua/arclen/svg.lua",
+    ["arclen.svginput"] = "lua/arclen/svginput.lua",
     ["arclen.svgpath"] = "lua/arclen/svgpath.lua",
   },
   install = { bin = { arclen = "bin/arclen" } },

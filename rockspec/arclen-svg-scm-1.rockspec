@@ -8,17 +8,21 @@ description = {
   license = "MIT",
 }
 dependencies = { "lua >= 5.1", "arclen" }
-external_dependencies = { EXPAT = { header = "expat.h" } }
+external_dependencies = { EXPAT = { header = "expat.h" },
+  platforms = { unix = { ZLIB = { header = "zlib.h" } } } }
 build = {
   type = "builtin",
   modules = {
     ["arclen.svgdoc"] = {
       sources = {
         "src/lua/svgdoc.c",
+        "src/lua/svgdoc_gzip.c",
         "src/lua/subpaths.c",
         "src/svgdoc/attrs.c",
         "src/svgdoc/cond.c",
         "src/svgdoc/css.c",
+        "src/svgdoc/gzip.c",
+        "src/svgdoc/idbloom.c",
         "src/svgdoc/memory.c",
         "src/svgdoc/paint.c",
         "src/svgdoc/reader.c",
@@ -73,7 +77,10 @@ build = {
   platforms = {
     unix = {
       modules = {
-        ["arclen.svgdoc"] = { libraries = { "expat", "m" } },
+        ["arclen.svgdoc"] = { libraries = { "expat", "z", "m" },
+          defines = { "_POSIX_C_SOURCE=200809L", "ARCLEN_HAVE_ZLIB" },
+          incdirs = { "src", "$(EXPAT_INCDIR)", "$(ZLIB_INCDIR)" },
+          libdirs = { "$(EXPAT_LIBDIR)", "$(ZLIB_LIBDIR)" } },
       },
     },
   },

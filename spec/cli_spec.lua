@@ -350,7 +350,66 @@ describe("arclen CLI: errors (stderr, exit 2 for usage, 1 for failures)", functi
     assert.are.same({"", 1}, {out1, status1})
     assert.matches(want, err1)
     assert.are.equal(1, status2)
-    assert.matches(want, err2)
+    -- the batch goes on: the good file measured, the failures counted
+    assert.matches(want:sub(1, -2) .. "arclen: stat: 1 of 2 files failed\n$", err2)
+    assert.matches("^== " .. good:gsub("%p", "%%%0") .. " .*\n  Length: 1\n", out2)
+  end)
+end)
+
+describe("arclen CLI: files as users have them (issue 32) #svgdoc", function()
+  local DIR = "spec/data/svgfiles/"
+  it("errors a renderer passes over: warnings with their place; --strict makes them errors", function()
+    local out, err, status = run({"length", DIR .. "errors.svg"})
+    assert.are.equal(0, status, err)
+    assert.matches("\ntotal\t164\n$", out)
+    assert.matches("arclen: warning: " .. DIR:gsub("%p", "%%%0") .. "errors%.svg:4:3: <use> of '#path%-in%-another%-file': "
+      .. "no element has that id; nothing drawn\n", err)
+    assert.matches("errors%.svg:5:3: <path id='ocal'>: d: expected sweep%-flag %(0 or 1%) at position 45; "
+      .. "drawn up to position 19\n", err)
+    out, err, status = run({"length", "--strict", DIR .. "errors.svg"})
+    assert.are.same({1, ""}, {status, out})
+    assert.are.equal("arclen: " .. DIR .. "errors.svg:4:3: <use> of '#path-in-another-file': no element has that id\n", err)
+  end)
+
+  it("a .svgz is read as the document it holds", function()
+    if not require("arclen.svgdoc").gzip then return pending("built without zlib") end
+    local out, err, status = run({"length", "--quiet", DIR .. "errors.svgz"})
+    assert.are.equal(0, status, err)
+    assert.matches("\ntotal\t164\n$", out)
+    -- on stdin too (gzip bytes need not contain '<')
+    local p = assert(io.popen(("LUA_PATH=%s LUA_CPATH=%s %s %s length - < %s 2>/dev/null"):format(
+      shquote(package.path), shquote(package.cpath), interpreter(), shquote(MAIN),
+      shquote(DIR .. "errors.svgz"))))
+    out = p:read("*a")
+    p:close()
+    assert.matches("\ntotal\t164\n$", out)
+  end)
+
+  it("stat of several files: each that fails is reported, the others measured, exit 1", function()
+    local png = os.tmpname()
+    local f = assert(io.open(png, "wb"))
+    f:write("\137PNG\r\n\26\n\0\0\0\rIHDR")
+    f:close()
+    local good = DIR .. "errors.svg"
+    local out, err, status = run({"stat", good, png, "spec/data", good})
+    os.remove(png)
+    assert.are.equal(1, status)
+    assert.matches("^== " .. good:gsub("%p", "%%%0") .. " %(units: user%)\n", out)
+    assert.matches("== 2 files", out)
+    assert.matches("\n  Length: 328\n", out)                   -- the two good ones
+    assert.matches("arclen: " .. png:gsub("%p", "%%%0") .. ":1:1: not an SVG document %(it looks like a PNG image%)\n", err)
+    assert.matches("arclen: spec/data: is a directory\n", err)
+    assert.matches("arclen: stat: 2 of 4 files failed\n$", err)
+    out, err, status = run({"stat", "--json", good, "spec/data"})
+    assert.are.equal(1, status)
+    local v = require("dkjson").decode(out)
+    assert.are.equal(164, v.total.length)
+    assert.are.same({{file = "spec/data", error = "spec/data: is a directory"}}, v.failed)
+  end)
+
+  it("length of a directory says so", function()
+    local _, err, status = run({"length", "spec/data"})
+    assert.are.same({1, "arclen: spec/data: is a directory\n"}, {status, err})
   end)
 end)
 

@@ -36,7 +36,8 @@ describe("rockspec/*.rockspec", function()
       assert.truthy(s:find('["arclen.svg"] = "lua/arclen/svg.lua"', 1, true), file)
     end
     local s = read(("rockspec/arclen-svg-%s-1.rockspec"):format(RELEASE))
-    assert.truthy(s:find('external_dependencies = { EXPAT = { header = "expat.h" } }', 1, true))
+    assert.truthy(s:find('external_dependencies = { EXPAT = { header = "expat.h" },', 1, true))
+    assert.truthy(s:find('platforms = { unix = { ZLIB = { header = "zlib.h" } } } }', 1, true))
     assert.truthy(s:find('"arclen == ' .. RELEASE .. '"', 1, true))
     assert.truthy(s:find('["arclen.svgdoc"]', 1, true))
     assert.is_nil(s:find('["arclen.core"]', 1, true))   -- one module, one rock

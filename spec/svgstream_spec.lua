@@ -138,7 +138,7 @@ describe("svg.each: the same elements as svg.read, as they complete #svgdoc", fu
     assert.matches("max_held out of range", select(2, pcall(svgdoc.new, {max_held = 0})))
   end)
 
-  it("a backward <use> is expanded at once; a missing target fails at the end, with the use's place", function()
+  it("a backward <use> is expanded at once; a missing target (strict) fails at the end, with the use's place", function()
     local text = H .. '<path id="a" d="M0 0 L1 0"/>\n<use href="#a"/>\n' ..
       ("<!-- padding -->\n"):rep(40) .. "</svg>"
     local source, given = chunks(text, 64)
@@ -147,9 +147,14 @@ describe("svg.each: the same elements as svg.read, as they complete #svgdoc", fu
     assert.are.equal(2, #at)
     assert.is_true(at[2] * 64 < #text / 2)
     local ok, e = pcall(svg.each, (chunks(H .. '\n<use href="#nope"/>\n<path d="M0 0 L1 0"/></svg>', 10)),
-      function() end, {name = "m.svg"})
+      function() end, {name = "m.svg", strict = true})
     assert.is_false(ok)
     assert.are.equal("m.svg:2:1: <use> of '#nope': no element has that id", e)
+    local n = 0
+    local doc = svg.each((chunks(H .. '\n<use href="#nope"/>\n<path d="M0 0 L1 0"/></svg>', 10)),
+      function() n = n + 1 end, {name = "m.svg"})
+    assert.are.equal(1, n)
+    assert.are.same({"m.svg:2:1: <use> of '#nope': no element has that id; nothing drawn"}, doc.warnings)
   end)
 
   it("keeps for <use> only the subtrees that a use refers to (a scan of the file first)", function()

@@ -29,6 +29,8 @@ if printf '#include <expat.h>\n' | $CC -E - >/dev/null 2>&1; then
   for f in src/svgdoc/*.c; do f=${f#src/}; DOC_OBJ="$DOC_OBJ $OUT/core/${f%.c}.o"; done
   DOC_FLAGS="-DTHREADS_SVGDOC"
   DOC_LIBS="-lexpat"
+  # gzip.o has zlib when the Makefile finds its header (the same test)
+  if printf '#include <zlib.h>\n' | $CC -E - >/dev/null 2>&1; then DOC_LIBS="$DOC_LIBS -lz"; fi
   DOC_FILES=$(ls spec/data/svg/hand/*.svg spec/data/svg/graphviz/*.svg \
     spec/data/svg/real/adwaita-preferences-system-parental-controls-symbolic.svg \
     spec/data/svg/real/postgresql-common-dependencies.svg)

@@ -3,7 +3,8 @@
 #   0. no direct fma() in src/ (arclen_fma instead: MinGW's is inexact);
 #   1. `make windows`: core.dll and svgdoc.dll cross-built with MinGW
 #      (-Werror) against a Windows Lua 5.4 and a static expat built from
-#      Debian's source packages (tools/windows-lua.sh, windows-expat.sh);
+#      Debian's source packages (tools/windows-lua.sh, windows-expat.sh),
+#      and Debian's static zlib for MinGW (libz-mingw-w64-dev);
 #   2. their imports: the C runtime (msvcrt or the UCRT), KERNEL32 and
 #      lua54.dll, nothing else (no libgcc_s_seh-1.dll);
 #   3. under Wine: spec/smoke.lua, and every spec but the two that need a
@@ -30,6 +31,8 @@ command -v ${CROSS}gcc >/dev/null || need="$need gcc-mingw-w64-x86-64"
 command -v wine >/dev/null || need="$need wine wine64"
 command -v make >/dev/null || need="$need make"
 command -v dpkg-source >/dev/null || need="$need dpkg-dev"
+# zlib for the reader's gzip input, linked static (Makefile, WIN_ZLIB)
+[ -f /usr/x86_64-w64-mingw32/lib/libz.a ] || need="$need libz-mingw-w64-dev"
 if [ -n "$need" ]; then
   if [ "$(id -u)" != 0 ]; then
     echo "check-windows.sh: missing$need; as root: apt-get install$need" >&2

@@ -13,13 +13,14 @@
 #           layers, locales with de_DE.UTF-8 and tr_TR.UTF-8 made by
 #           localedef for spec/locale_spec.lua and spec/ctype_spec.lua
 #           (base has libexpat1-dev for the SVG document reader,
-#           arclen.svgdoc, and lua-dkjson for --json)
+#           arclen.svgdoc, zlib1g-dev for its gzip input (.svgz), and
+#           lua-dkjson for --json)
 #   refs    regenerate spec/data (python3-mpmath, real MetaPost;
 #           python3-svgelements: tools/ref_svg.py's second opinion;
 #           python3-tinycss2, python3-cssselect2: its style sheets)
 # Without dpkg and apt-get (macOS, Alpine, Fedora, Arch, FreeBSD, MSYS2) it
 # prints what to install there for base -- a C compiler, make, Lua 5.4 with
-# its headers, busted, expat, pkg-config -- and fails unless the commands are
+# its headers, busted, expat, zlib, pkg-config -- and fails unless the commands are
 # all found (headers are not checked: make says what it misses).
 set -e
 
@@ -40,25 +41,25 @@ other_system() {
   echo "tools/deps.sh: no dpkg/apt-get here; for 'make' and the specs install:" >&2
   if [ $sys = brew ] || [ $sys = all ]; then
     echo "  macOS:   xcode-select --install; brew install lua luarocks pkg-config" >&2
-    echo "           (expat is in the SDK); luarocks install busted" >&2
+    echo "           (expat and zlib are in the SDK); luarocks install busted" >&2
   fi
   if [ $sys = apk ] || [ $sys = all ]; then
-    echo "  Alpine:  apk add build-base pkgconf lua5.4 lua5.4-dev expat-dev luarocks5.4;" >&2
+    echo "  Alpine:  apk add build-base pkgconf lua5.4 lua5.4-dev expat-dev zlib-dev luarocks5.4;" >&2
     echo "           luarocks-5.4 install busted" >&2
   fi
   if [ $sys = dnf ] || [ $sys = all ]; then
-    echo "  Fedora:  dnf install gcc make pkgconf-pkg-config lua lua-devel expat-devel luarocks;" >&2
+    echo "  Fedora:  dnf install gcc make pkgconf-pkg-config lua lua-devel expat-devel zlib-devel luarocks;" >&2
     echo "           luarocks install busted" >&2
   fi
   if [ $sys = pacman ] || [ $sys = all ]; then
-    echo "  Arch:    pacman -S --needed base-devel lua expat luarocks; luarocks install busted" >&2
+    echo "  Arch:    pacman -S --needed base-devel lua expat zlib luarocks; luarocks install busted" >&2
   fi
   if [ $sys = freebsd ] || [ $sys = all ]; then
-    echo "  FreeBSD: pkg install lua54 lua54-luarocks expat gmake pkgconf;" >&2
+    echo "  FreeBSD: pkg install lua54 lua54-luarocks expat gmake pkgconf (zlib is in base);" >&2
     echo "           luarocks54 install busted (then gmake, not make)" >&2
   fi
   if [ $sys = msys2 ] || [ $sys = all ]; then
-    echo "  MSYS2 (UCRT64): pacman -S --needed make mingw-w64-ucrt-x86_64-{gcc,lua,lua-luarocks,expat,pkgconf};" >&2
+    echo "  MSYS2 (UCRT64): pacman -S --needed make mingw-w64-ucrt-x86_64-{gcc,lua,lua-luarocks,expat,zlib,pkgconf};" >&2
     echo "           luarocks install busted" >&2
   fi
   echo "  optional: luarocks install dkjson (arclen --json)" >&2
@@ -78,7 +79,7 @@ other_system() {
   [ -x "$(command -v lua5.4)" ] || echo "tools/deps.sh: Lua 5.4 is '$lua54': make LUA_BIN=$lua54 demo" >&2
   return 0
 }
-BASE="gcc make libc6-dev lua5.4 liblua5.4-dev lua-busted libexpat1-dev lua-dkjson"
+BASE="gcc make libc6-dev lua5.4 liblua5.4-dev lua-busted libexpat1-dev zlib1g-dev lua-dkjson"
 MATRIX="lua5.1 liblua5.1-0-dev lua5.2 liblua5.2-dev lua5.3 liblua5.3-dev luajit libluajit-5.1-dev texlive-binaries texlive-base texlive-luatex texlive-latex-base texlive-metapost luarocks poppler-utils python3 locales git zip texlive-pictures"
 REFS="python3 python3-mpmath python3-svgelements python3-tinycss2 python3-cssselect2 texlive-binaries texlive-base python3-fonttools fonts-urw-base35"
 case "${1:-base}" in

@@ -74,7 +74,7 @@ local function rockspec(package, version, url)
   end
   -- The areas of the core and the binding: every .c under src/ but the
   -- document reader's (src/svgdoc/ and its binding), a module of its own.
-  local csrc = ls("find src -name '*.c' ! -path 'src/svgdoc/*' ! -name svgdoc.c")
+  local csrc = ls("find src -name '*.c' ! -path 'src/svgdoc/*' ! -name 'svgdoc*.c'")
   local core = ls("find src -name '*.c' ! -path 'src/svgdoc/*' ! -path 'src/lua/*'")
   local docsrc = ls("find src/svgdoc -name '*.c'")
   local lmods = ls("find lua/arclen -name '*.lua'")
@@ -87,7 +87,10 @@ local function rockspec(package, version, url)
   else
     lines[#lines + 1] = ('dependencies = { "lua >= 5.1", "%s" }'):format(
       scm and "arclen" or ("arclen == " .. base))
-    lines[#lines + 1] = 'external_dependencies = { EXPAT = { header = "expat.h" } }'
+    -- zlib (gzip input, .svgz) where it is at home: on Unix; a Windows
+    -- build reads uncompressed documents and says so of gzip ones
+    lines[#lines + 1] = 'external_dependencies = { EXPAT = { header = "expat.h" },'
+    lines[#lines + 1] = '  platforms = { unix = { ZLIB = { header = "zlib.h" } } } }'
   end
   lines[#lines + 1] = 'build = {'
   lines[#lines + 1] = '  type = "builtin",'
@@ -101,7 +104,8 @@ local function rockspec(package, version, url)
     lines[#lines + 1] = '  },'
     lines[#lines + 1] = '  install = { bin = { arclen = "bin/arclen" } },'
   else
-    c_module(lines, "arclen.svgdoc", {{"src/lua/svgdoc.c", "src/lua/subpaths.c"}, docsrc, core},
+    c_module(lines, "arclen.svgdoc", {{"src/lua/svgdoc.c", "src/lua/svgdoc_gzip.c", "src/lua/subpaths.c"},
+      docsrc, core},
       '"expat"', '"src", "$(EXPAT_INCDIR)"', '"$(EXPAT_LIBDIR)"')
     lines[#lines + 1] = '  },'
   end
@@ -114,7 +118,10 @@ local function rockspec(package, version, url)
   if package == "arclen" then
     lines[#lines + 1] = '        ["arclen.core"] = { libraries = { "m" } },'
   else
-    lines[#lines + 1] = '        ["arclen.svgdoc"] = { libraries = { "expat", "m" } },'
+    lines[#lines + 1] = '        ["arclen.svgdoc"] = { libraries = { "expat", "z", "m" },'
+    lines[#lines + 1] = '          defines = { "_POSIX_C_SOURCE=200809L", "ARCLEN_HAVE_ZLIB" },'
+    lines[#lines + 1] = '          incdirs = { "src", "$(EXPAT_INCDIR)", "$(ZLIB_INCDIR)" },'
+    lines[#lines + 1] = '          libdirs = { "$(EXPAT_LIBDIR)", "$(ZLIB_LIBDIR)" } },'
   end
   lines[#lines + 1] = '      },'
   lines[#lines + 1] = '    },'

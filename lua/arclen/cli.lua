@@ -33,7 +33,8 @@ commands:
                                -                        SVG file or path data on stdin
   stat FILE.svg ...          per layer (Inkscape layers, else top-level groups) and in
                              total: length, pen-up travel, paths (subpaths), elements,
-                             segments, bounding box -- what vpype stat prints
+                             segments, bounding box -- what vpype stat prints; a file
+                             that fails is reported and the others measured (exit 1)
   time S WHAT                path time at distance S (MetaPost's convention: segment
                              index + parameter; for one cubic, t in [0, 1])
   point S WHAT               the point and unit tangent at distance S
@@ -57,6 +58,8 @@ options:
   --lang L        SVG documents: the user languages systemLanguage is matched
                   against (default en; a list: de,en-US)
   --hidden        SVG documents: also display:none and visibility:hidden shapes
+  --strict        SVG documents: warnings are errors (a <use> of a missing id,
+                  an error in path data: by default the rest is measured)
   --quiet         no progress line (length and stat show one on a terminal
                   when a document takes more than a second)
   --arcs A        SVG documents: conics (default: segments as drawn, arcs exact)
@@ -67,7 +70,9 @@ options:
 WHAT of several paths (a file) is measured element by element; time, point
 and resample need a single path.  SVG documents are read as a renderer draws
 them: basic shapes, transforms, viewports, <use>; lengths in the root's user
-units unless --units says otherwise.  length and stat read a document as a
+units unless --units says otherwise.  Gzip-compressed documents (.svgz) are
+read as the document they hold.  A <use> of a missing id and an error in
+path data are warnings (the path drawn up to the error), errors with --strict.  length and stat read a document as a
 stream: each element is measured (and length prints its row) as soon as it
 is read, so that their memory does not grow with the file.
 
@@ -95,7 +100,7 @@ end
 local VALUED = {["--method"] = true, ["--tol"] = true, ["--step"] = true, ["--n"] = true,
                 ["--units"] = true, ["--arcs"] = true, ["--lang"] = true}
 local FLAGS = {["--json"] = "json", ["--stroked"] = "stroked", ["--hidden"] = "hidden",
-               ["--quiet"] = "quiet", ["--painted"] = "painted"}
+                ["--quiet"] = "quiet", ["--painted"] = "painted", ["--strict"] = "strict"}
 
 -- Split argv into options and positional arguments.
 local function parse(argv)
@@ -229,6 +234,7 @@ local function svg_opts(opts)
     end
     o.lang = opts.lang
   end
+  if opts.strict then o.strict = true end
   if opts.arcs then
     if opts.arcs ~= "conics" and opts.arcs ~= "cubics" then
       fail(format("--arcs: '%s' is neither conics nor cubics", opts.arcs), 2)
@@ -318,8 +324,8 @@ end
 -- svg.each, on_element(e) per drawn element; its warnings go to stderr.
 -- prints: on_element writes to stdout (when stdout is the terminal too,
 -- the progress line is cleared first, lest they mix).  Returns the document without its
--- elements.
-local function each_svg(src, name, opts, on_element, prints)
+-- elements; when it fails, exits, or with soft returns nil and the message.
+local function each_svg(src, name, opts, on_element, prints, soft)
   local svg = svg_lib()
   local o = svg_opts(opts)
   local P = progress_for(name, opts)
@@ -336,9 +342,16 @@ local function each_svg(src, name, opts, on_element, prints)
   if type(src) ~= "string" then o.name = name end
   local ok, doc = pcall(svg.each, src, fn, o)
   if P then P.clear() end
+  if not ok and soft then return nil, message(doc) end
   if not ok then fail(message(doc)) end
   for _, w in ipairs(doc.warnings) do io.stderr:write("arclen: warning: ", w, "\n") end
   return doc
+end
+
+-- Is text (stdin's first chunk) a document rather than path data: markup,
+-- gzip, or another format's magic bytes (which the reader names)?
+local function markup(text)
+  return text:find("<") ~= nil or require("arclen.svginput").sniff(text:sub(1, 12)) ~= nil
 end
 
 -- The paths named by args[from..]: {{label =, path =}...}, or a cubic.
@@ -367,7 +380,10 @@ local function targets(args, from, opts, what)
   if a == "-" then
     text, source = read_file("-"), "stdin"
   elseif not a:find("^%s*[Mm]") then
-    local f = io.open(a, "rb")
+    local f, err, code = io.open(a, "rb")
+    if not f and code ~= 2 then     -- not ENOENT: permission denied...
+      fail(a .. ": " .. require("arclen.svginput").reason(err))
+    end
     if not f then fail(a .. ": no such file (and not SVG path data, which starts with M)") end
     f:close()
     text, source = "<", a       -- read by the document reader itself
@@ -375,7 +391,7 @@ local function targets(args, from, opts, what)
   if text == nil then
     return {{label = "path", path = call(1, arclen.path.svg, a, o)}}
   end
-  if not text:find("<") then   -- path data on stdin
+  if not markup(text) then     -- path data on stdin
     return {{label = "path", path = call(1, arclen.path.svg, text, o)}}
   end
   local doc = read_svg(source, a == "-" and text or nil, opts)
@@ -443,7 +459,7 @@ local function document_arg(args, from)
   if tonumber(a) then return nil end
   if a == "-" then
     local first = stdin_peek()
-    if not first:find("<") then return nil end
+    if not markup(first) then return nil end
     local given = false
     return function()
       if not given then given = true return first end
@@ -512,12 +528,10 @@ function commands.stat(opts, args)
   local svg = svg_lib()
   if #args < 2 then fail("stat: no file (one or more SVG files)", 2) end
   local files, all = {}, {length = 0, travel = 0, paths = 0, elements = 0, segments = 0}
-  local units
-  for i = 2, #args do
-    local acc = svg.stats()     -- one row per layer, whatever the file's size
-    local doc = each_svg(args[i], args[i], opts, function(e) acc:add(e) end)
-    units = doc.units
-    local st = acc:result()
+  local units, failed = svg_opts(opts).units or "user", {}
+  -- a file that fails is reported (its place in the message) and the
+  -- others are still measured; the exit status says that one failed
+  local function add(file, st)
     for _, k in ipairs({"length", "travel", "paths", "elements", "segments"}) do
       all[k] = all[k] + st.total[k]
     end
@@ -530,11 +544,27 @@ function commands.stat(opts, args)
         a[3], a[4] = math.max(a[3], b[3]), math.max(a[4], b[4])
       end
     end
-    files[#files + 1] = {file = args[i], layers = st.layers, total = st.total}
+    files[#files + 1] = {file = file, layers = st.layers, total = st.total}
+  end
+  for i = 2, #args do
+    local acc = svg.stats()     -- one row per layer, whatever the file's size
+    local doc, err = each_svg(args[i], args[i], opts, function(e) acc:add(e) end, false, true)
+    if doc == nil then
+      io.stderr:write("arclen: ", err, "\n")
+      failed[#failed + 1] = {file = args[i], error = err}
+    else
+      units = doc.units
+      add(args[i], acc:result())
+    end
+  end
+  local function done()
+    if #failed == 0 then return end
+    io.stderr:write(format("arclen: stat: %d of %d files failed\n", #failed, #args - 1))
+    os.exit(1)
   end
   if opts.json then
-    print(json({files = files, total = all, units = units}))
-    return
+    print(json({files = files, total = all, units = units, failed = failed[1] and failed or nil}))
+    return done()
   end
   for _, f in ipairs(files) do
     for _, line in ipairs(stat_lines(f.file, f, units)) do print(line) end
@@ -544,6 +574,7 @@ function commands.stat(opts, args)
       if not line:match("Layer count") then print(line) end
     end
   end
+  done()
 end
 
 function commands.time(opts, args)

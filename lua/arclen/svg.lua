@@ -27,6 +27,7 @@
 -- doc/svg.md lists the semantic choices made where the specification leaves
 -- room.
 local path = require("arclen.path")
+local input = require("arclen.svginput")
 local svgpath = require("arclen.svgpath")
 local core = require("arclen.engine")
 
@@ -119,8 +120,13 @@ end
 -- when o.measure) and given to on_element as soon as the reader hands it
 -- over.  Returns the document without its elements.
 local function stream(o, name, next_chunk, uses, scan, on_element, size)
+  -- gzip inflated, other formats refused by their first bytes (svginput)
+  local info
+  next_chunk, info = input.chunks(svgdoc, name, next_chunk)
+  if scan then scan = input.chunks(svgdoc, name, scan) end
   local r = svgdoc.new({arc_tol = o.arc_tol or o.tol, hidden = o.hidden, arcs = o.arcs,
-    stroked = o.stroked, painted = o.painted, lang = o.lang, max_depth = o.max_depth or MAX_DEPTH, uses = uses,
+    stroked = o.stroked, painted = o.painted, lang = o.lang, strict = o.strict,
+    max_depth = o.max_depth or MAX_DEPTH, uses = uses,
     unit_px = o.units ~= "user" and UNITS[o.units] or 0, stream = true})
   if scan then
     for _ = 1, huge do
@@ -163,7 +169,7 @@ local function stream(o, name, next_chunk, uses, scan, on_element, size)
     bytes = bytes + #chunk
     local list = r:feed(chunk)
     if list then take(list) end
-    if progress then progress(bytes, size, count) end
+    if progress then progress(bytes, not info.gzip and size or nil, count) end  -- inflated bytes
   end
   local res = r:finish(name)
   take(res.elements)
@@ -173,8 +179,8 @@ local function stream(o, name, next_chunk, uses, scan, on_element, size)
 end
 
 -- The options of read, parse and each: tol, arc_tol, method, units,
--- hidden, stroked, painted, lang, measure, max_depth, arcs, max_elements, progress; each's
--- name.
+-- hidden, stroked, painted, lang, strict (the reader's warnings are errors),
+-- measure, max_depth, arcs, max_elements, progress; each's name.
 -- n: the options' argument position.
 local function read_opts(opts, fname, cap, n)
   n = n or 2
@@ -196,7 +202,8 @@ local function read_opts(opts, fname, cap, n)
       end
     elseif k == "arcs" then
       if v ~= "conics" and v ~= "cubics" then argerror4(2, fname, 'arcs must be "conics" or "cubics"') end
-    elseif k == "hidden" or k == "stroked" or k == "painted" or k == "measure" then
+    elseif k == "hidden" or k == "stroked" or k == "painted" or k == "measure"
+        or k == "strict" then
       if type(v) ~= "boolean" then argerror4(2, fname, k .. " must be a boolean") end
       if (k == "stroked" and v and opts.painted) or (k == "painted" and v and opts.stroked) then
         argerror4(2, fname, "stroked and painted exclude each other")
@@ -259,6 +266,18 @@ local function collect(o, name, next_chunk, uses, scan, size)
   return doc
 end
 
+-- Chunks (inflated when the file is gzip): do they contain what could be
+-- a <use> element?
+local function chunks_may_use(next_chunk)
+  local tail = ""
+  for _ = 1, huge do
+    local c = next_chunk()
+    if c == nil then return false end
+    if may_use(tail .. sub(c, 1, 8)) or may_use(c) then return true end
+    tail = sub(c, -8)
+  end
+end
+
 -- svg.parse(text [, opts [, name]]) -> doc.  name (default "<string>")
 -- names the document in messages.
 function M.parse(text, opts, name)
@@ -266,44 +285,40 @@ function M.parse(text, opts, name)
   local o = read_opts(opts, "arclen.svg.parse", MAX_ELEMENTS)
   if name ~= nil and type(name) ~= "string" then argerror(3, "arclen.svg.parse", "name must be a string") end
   name = name or "<string>"
-  local uses = may_use(text) and true or false
   return located_call(name, function()
+    local uses = may_use(text) and true or false
+    if not uses and input.sniff(sub(text, 1, 12)) == "gzip" then   -- what it inflates to
+      uses = chunks_may_use((input.chunks(svgdoc, name, text_chunks(text))))
+    end
     return collect(o, name, text_chunks(text), uses, uses and text_chunks(text) or nil, #text)
   end)
 end
 
--- An open file: does it contain what could be a <use> element (a byte
--- scan from where it is, which it returns to)?
-local function file_may_use(f)
-  local at, tail, uses = f:seek(), "", false
-  for _ = 1, huge do
-    local c = f:read(CHUNK)
-    if c == nil then break end
-    if may_use(tail .. sub(c, 1, 8)) or may_use(c) then uses = true break end
-    tail = sub(c, -8)
-  end
-  f:seek("set", at)
-  return uses
-end
-
 -- The stream of a file by name: three passes when it may contain <use>
--- (the byte scan, the scan for the ids, the reading), else two.
+-- (the byte scan, the scan for the ids, the reading), else two; each
+-- from the file's start (and through the inflater, a gzip file).
 local function stream_file(o, filename, on_element)
-  local f, err = io.open(filename, "rb")
-  if not f then error(tostring(err), 0) end
+  local f = input.open(filename)        -- "NAME: permission denied" ...
   local size = f:seek("end")
-  f:seek("set", 0)
-  local uses = file_may_use(f)
-  local scan
-  if uses then
-    scan = function()
-      local c = f:read(CHUNK)
-      if c == nil then f:seek("set", 0) end    -- the reading starts over
-      return c
-    end
+  local function from_start()
+    f:seek("set", 0)
+    return function() return f:read(CHUNK) end
   end
-  local ok, res = pcall(stream, o, filename, function() return f:read(CHUNK) end, uses, scan,
-    on_element, size)
+  local ok, res = pcall(function()
+    local uses = chunks_may_use((input.chunks(svgdoc, filename, from_start())))
+    -- the scan reads the whole file first, then the reading: each starts
+    -- over at its first call
+    local scanning, reading
+    local function scan()
+      if scanning == nil then scanning = from_start() end
+      return scanning()
+    end
+    local function next_chunk()
+      if reading == nil then reading = from_start() end
+      return reading()
+    end
+    return stream(o, filename, next_chunk, uses, uses and scan or nil, on_element, size)
+  end)
   f:close()
   if not ok then error(located(filename, res), 0) end
   return res

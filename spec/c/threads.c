@@ -687,6 +687,7 @@ static void job_svgdoc(sink *s) {
       o.stream = 0;                    /* collected: put_doc reads them all */
       o.max_held = 0;
       o.shape_text = 0;
+      o.strict = 0;
       o.arcs = ARCLEN_PD_ARCS_CUBICS;     /* measured below as cubics */
       put_s(s, docs[i].name);
       D = svgdoc_new(&o);
@@ -772,6 +773,7 @@ static int build_shared(void) {
     so.stream = 0;
     so.max_held = 0;
     so.shape_text = 0;
+    so.strict = 0;
     so.arcs = ARCLEN_PD_ARCS_CUBICS;
     shared_doc = svgdoc_new(&so);
     if (shared_doc == NULL || svgdoc_feed(shared_doc, DOCS[0], strlen(DOCS[0])) != 0 ||

@@ -8,7 +8,8 @@
 **                                 "en"), max_depth, uses, stream,
 **                                 max_held (the queue behind a forward use),
 **                                 shape_text (for the specs: basic shapes
-**                                 written as path data and that parsed)
+**                                 written as path data and that parsed),
+**                                 strict (warnings are errors)
 **   reader:scan(s)                optional, before feed: the whole document
 **                                 once, for the ids <use> refers to
 **   reader:feed(s) -> elements    the next bytes of the document; with
@@ -21,6 +22,7 @@
 **                           elements are the ones completed at the end)
 **   svgdoc.isatty([which]) -> boolean  is stderr (or "stdout") a terminal
 **                                 (the command line's progress line)
+**   svgdoc.gzip, svgdoc.gunzip    gzip input (svgdoc_gzip.c)
 ** A located error is raised as {line =, col =, msg =}; arclen.svg names
 ** the document in it.  Each element is {id, tag, layer, line, col,
 ** stroked, filled, use, d, ctm = {a, b, c, d, e, f}, subpaths} (subpaths as
@@ -46,6 +48,8 @@
 #endif
 
 #define READER "arclen.svgdoc.reader"
+
+void arclenL_open_gzip(lua_State *L);    /* svgdoc_gzip.c */
 
 static svgdoc **check_reader(lua_State *L) {
   svgdoc **D = (svgdoc **)luaL_checkudata(L, 1, READER);
@@ -109,6 +113,7 @@ static int l_new(lua_State *L) {
   o.uses = opt_boolean(L, "uses");
   o.stream = opt_boolean(L, "stream");
   o.shape_text = opt_boolean(L, "shape_text");   /* for the specs */
+  o.strict = opt_boolean(L, "strict");
   held = opt_number(L, "max_held", SVGDOC_MAX_HELD);
   luaL_argcheck(L, held >= 1 && held <= SVGDOC_MAX_HELD, 1, "max_held out of range");
   o.max_held = (size_t)held;
@@ -354,5 +359,6 @@ int luaopen_arclen_svgdoc(lua_State *L) {
   }
   lua_pop(L, 1);
   luaL_newlib(L, funcs);
+  arclenL_open_gzip(L);          /* gzip input (svgdoc_gzip.c) */
   return 1;
 }

@@ -99,6 +99,7 @@ static int fail(reader *r, int kind, size_t i) {
   e->pos = r->d != NULL ? i + 1 : 0;         /* the builder has no text */
   e->at_end = i >= r->n;
   e->byte = i < r->n ? (unsigned char)r->d[i] : 0;
+  e->start = r->at < i ? r->at : i;
   return kind;
 }
 
@@ -610,7 +611,7 @@ static void start(reader *r, arclen_pathdata *pd, const char *d, size_t n,
   r->pd = pd; r->d = d; r->n = n; r->arc_tol = arc_tol; r->T = T; r->sp = -1;
   pd->ncubics = pd->nsubpaths = 0;
   pd->err.kind = ARCLEN_PD_OK;
-  pd->err.pos = 0;
+  pd->err.pos = pd->err.start = 0;
 }
 
 static int finish(reader *r) {
@@ -634,6 +635,7 @@ int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
     unsigned char c = (unsigned char)d[i];
     char up = upper(c);
     size_t cmdpos = i;
+    r.at = cmdpos;
     if (is_alpha(c) && arg_count(up) >= 0) {
       if (cmd == 0 && up != 'M') return fail(&r, ARCLEN_PD_NO_MOVETO, i);
       cmd = up;
@@ -656,8 +658,10 @@ int arclen_pathdata_parse(arclen_pathdata *pd, const char *d, size_t n,
     if (cmd == 'M') cmd = 'L';  /* further pairs are implicit linetos */
     i = skip_sep(&r, i);
     /* a trailing comma must be followed by another argument list */
-    if (d[i - 1] == ',' && (i >= n || is_alpha((unsigned char)d[i])))
+    if (d[i - 1] == ',' && (i >= n || is_alpha((unsigned char)d[i]))) {
+      r.at = i - 1;           /* the command before the comma is complete */
       return fail(&r, ARCLEN_PD_COMMA, i - 1);
+    }
   }
   return finish(&r);
 }

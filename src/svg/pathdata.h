@@ -80,6 +80,9 @@ typedef struct arclen_pathdata_error {
   size_t tok, toklen;   /* RANGE: the number's text, d[tok .. tok+toklen-1] */
   int arc, code;        /* ARC: why (ARCLEN_PD_ARC_*), an error code */
   double bound;         /* ARC_LEVEL: the bound at the last level */
+  size_t start;         /* 0-based offset of the command (or its implicit
+                        ** repetition) that holds the error: the data before
+                        ** it is correct, what SVG 2 section 9.5.4 renders */
 } arclen_pathdata_error;
 
 typedef struct arclen_pathdata {
@@ -126,6 +129,7 @@ typedef struct arclen_pathbuild {
   const double *T;
   long sp;                  /* the open subpath, -1 when none */
   int overflow;             /* a mapped point beyond the doubles */
+  size_t at;                /* where the command being read starts */
   int begun;                /* a first command seen */
   double cx, cy, sx, sy;    /* the current point, the subpath's start */
   double lcx, lcy, lqx, lqy;  /* the last cubic's and quadratic's control */

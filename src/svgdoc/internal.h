@@ -88,6 +88,9 @@ struct svgdoc {
   ** subtrees are kept) */
   svgdoc_idtable refs;
   int refs_given;
+  /* every id of the document, when the scan read all of it (idbloom.c) */
+  unsigned char *id_bloom;
+  int ids_known, scan_lost;
   void *scanner;                         /* XML_Parser of svgdoc_scan */
   /* elements and uses waiting behind a <use> whose target is not read
   ** yet (a queue from held_head), and the id it waits for */
@@ -213,6 +216,13 @@ double svgdoc_font_size(svgdoc *D, unsigned long line, unsigned long col,
 /* A warning at a place (reader.c). */
 void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
                  const char *msg);
+
+/* ---- the ids of the scan (idbloom.c) ---- */
+
+/* id s[0 .. n-1] into the filter (0, or -1 without memory). */
+int svgdoc_bloom_add(svgdoc *D, const char *s, size_t n);
+/* Is it certain that no element has that id (the scan saw them all)? */
+int svgdoc_bloom_absent(const svgdoc *D, const char *s, size_t n);
 
 /* ---- shapes (shapes.c) ---- */
 

@@ -112,11 +112,12 @@ static void *grow(svgdoc *D, void *a, size_t *room, size_t used,
 }
 
 /* A warning, its message copied into the document's own pool (msg may
-** be in the open element's). */
+** be in the open element's); under o.strict, an error. */
 static void warn(svgdoc *D, unsigned long line, unsigned long col,
                  const char *msg) {
   svgdoc_warning *w;
   svgdoc_arena *was = D->arena;
+  if (D->o.strict) svgdoc_fail(D, line, col, "%s", msg);
   if (D->nwarnings >= SVGDOC_MAX_WARNINGS) return;
   if (D->warnings == NULL) {
     D->warnings = malloc(SVGDOC_MAX_WARNINGS * sizeof *D->warnings);
@@ -132,6 +133,15 @@ static void warn(svgdoc *D, unsigned long line, unsigned long col,
 void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
                  const char *msg) {
   warn(D, line, col, msg);
+}
+
+/* An error a renderer passes over (a missing reference, bad path data):
+** a warning "what; consequence" and the reading goes on, or under
+** o.strict the error "what". */
+static void lenient(svgdoc *D, unsigned long line, unsigned long col,
+                    const char *what, const char *consequence) {
+  if (D->o.strict) svgdoc_fail(D, line, col, "%s", what);
+  warn(D, line, col, svgdoc_format(D, "%s; %s", what, consequence));
 }
 
 /* ---- ids of kept elements, ids referred to ------------------------------ */
@@ -332,6 +342,19 @@ static const char *shape_size_message(svgdoc *D, const arclen_pathdata *pd,
                        "beyond the largest double", what, b->len ? b->s : "");
 }
 
+/* Is an error of path data one of its grammar (what SVG 2 section 9.5.4
+** renders up to), not a number beyond the doubles or a failed arc? */
+static int syntax_error(int kind) {
+  switch (kind) {
+    case ARCLEN_PD_NO_MOVETO: case ARCLEN_PD_AFTER_Z: case ARCLEN_PD_UNKNOWN:
+    case ARCLEN_PD_CLOSE_FIRST: case ARCLEN_PD_NUMBER: case ARCLEN_PD_EXPONENT:
+    case ARCLEN_PD_FLAG: case ARCLEN_PD_COMMA:
+      return 1;
+    default:
+      return 0;
+  }
+}
+
 /* A drawn shape: its segments under the CTM. */
 static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
                  const svgdoc_shape *shape, const char **atts,
@@ -343,6 +366,7 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
   int identity = C[0] == 1 && C[1] == 0 && C[2] == 0 && C[3] == 1 &&
                  C[4] == 0 && C[5] == 0;
   const char *d;
+  svgdoc_shape cut;
   arclen_pathdata pd;
   svgdoc_element *e;
   char *at;
@@ -351,14 +375,42 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
   arclen_pathdata_init(&pd);
   if (svgdoc_shape_parse(D, &pd, shape, identity ? NULL : C, &d) !=
       ARCLEN_PD_OK) {
-    const char *m = shape_size_message(D, &pd, tag, atts);
+    const char *m = shape_size_message(D, &pd, tag, atts), *what;
+    size_t good = pd.err.start;
     if (m == NULL) {
       m = pathdata_message(D, &pd, d);
       if (strcmp(tag, "path") == 0) m = svgdoc_format(D, "d: %s", m);
     }
-    arclen_pathdata_free(&pd);
-    svgdoc_fail(D, line, col, "<%s%s%s%s>: %s", tag, id ? " id='" : "",
-                id ? id : "", id ? "'" : "", m);
+    what = svgdoc_format(D, "<%s%s%s%s>: %s", tag, id ? " id='" : "",
+                         id ? id : "", id ? "'" : "", m);
+    if (!syntax_error(pd.err.kind) || strcmp(tag, "path") != 0) {
+      arclen_pathdata_free(&pd);
+      svgdoc_fail(D, line, col, "%s", what);
+    }
+    /* SVG 2 section 9.5.4 (SVG 1.1 F.2): the path is rendered up to the
+    ** command that holds the error, which is where the data read so far
+    ** ends (a separator left before it is dropped) */
+    while (good > 0 && (svgdoc_space((unsigned char)d[good - 1]) ||
+                        d[good - 1] == ','))
+      good--;
+    arclen_pathdata_free(&pd);          /* lenient may jump (strict) */
+    if (good == 0) {
+      lenient(D, line, col, what, "nothing drawn");
+      return;
+    }
+    lenient(D, line, col, what,
+            svgdoc_format(D, "drawn up to position %lu", (unsigned long)good));
+    cut = *shape;
+    cut.d = svgdoc_strdup(D, d, good);
+    shape = &cut;                       /* the element keeps the data drawn */
+    arclen_pathdata_init(&pd);
+    if (svgdoc_shape_parse(D, &pd, shape, identity ? NULL : C, &d) !=
+        ARCLEN_PD_OK) {               /* only a range error can be left */
+      m = pathdata_message(D, &pd, d);
+      arclen_pathdata_free(&pd);
+      svgdoc_fail(D, line, col, "<%s%s%s%s>: d: %s", tag, id ? " id='" : "",
+                  id ? id : "", id ? "'" : "", m);
+    }
   }
   {
     /* a control point beyond the doubles (a line from -1e308 to 1e308
@@ -601,9 +653,12 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
   svgdoc_frame *stack;
   svgdoc_shadow root_sh, sh;
   const char **chain;
-  if (!find_id(&D->ids, u->href, strlen(u->href), &start))
-    svgdoc_fail(D, u->line, u->col, "<use> of '#%s': no element has that id",
-                u->href);
+  if (!find_id(&D->ids, u->href, strlen(u->href), &start)) {
+    /* SVG 2 section 5.6: a use with an invalid reference is not rendered */
+    lenient(D, u->line, u->col, svgdoc_format(D, "<use> of '#%s': no element "
+            "has that id", u->href), "nothing drawn");
+    return;
+  }
   for (k = 0; k < u->nchain; k++) {
     if (strcmp(u->chain[k], u->href) == 0) {
       svgdoc_buffer *b = &D->scratch;
@@ -676,6 +731,8 @@ static int ready(svgdoc *D, const char *id, size_t n, size_t depth,
   size_t start, i;
   svgdoc_event *ev;
   if (!find_id(&D->ids, id, n, &start) || D->events[start].close == 0) {
+    if (!find_id(&D->ids, id, n, NULL) && svgdoc_bloom_absent(D, id, n))
+      return 1;                          /* never comes: expanding warns */
     *waiting = id, *wlen = n;
     return 0;
   }
@@ -752,6 +809,8 @@ static void use_at_top(svgdoc *D, svgdoc_use *u) {
   char *at;
   size_t budget = SVGDOC_MAX_REPLAYED;
   if (!D->record ||               /* nothing kept: the missing id, now */
+      (svgdoc_bloom_absent(D, u->href, strlen(u->href)) &&
+       !find_id(&D->ids, u->href, strlen(u->href), NULL)) ||
       (!holding(D) && ready(D, u->href, strlen(u->href), 0, &budget,
                             &D->waiting, &D->waiting_len))) {
     expand_top(D, u);
@@ -1090,6 +1149,7 @@ void svgdoc_free(svgdoc *D) {
   free(D->ids.keys), free(D->ids.vals), free(D->refs.keys), free(D->refs.vals);
   free(D->held_q), free(D->batch), free(D->warnings), free(D->err_msg);
   free(D->lang);
+  free(D->id_bloom);
   free(D);
 }
 
@@ -1097,6 +1157,10 @@ void svgdoc_free(svgdoc *D) {
 
 static void end_scan(svgdoc *D) {
   if (D->scanner == NULL) return;
+  /* the whole document scanned (well-formed to its end): its ids known */
+  if (!D->scan_lost && XML_Parse((XML_Parser)D->scanner, NULL, 0, 1) ==
+      XML_STATUS_OK)
+    D->ids_known = 1;
   XML_ParserFree((XML_Parser)D->scanner);
   D->scanner = NULL;
 }
@@ -1108,6 +1172,9 @@ static void XMLCALL on_scan_start(void *ud, const XML_Char *qname,
   size_t n;
   jmp_buf jb;
   tag = tag ? tag + 1 : qname;
+  if ((id = svgdoc_attr(atts, "id")) != NULL &&
+      svgdoc_bloom_add(D, id, strlen(id)) != 0)
+    D->scan_lost = 1;                    /* out of memory: ids unknown */
   if (strcmp(tag, "use") != 0) return;
   href = svgdoc_attr(atts, "href");
   if (href == NULL) href = svgdoc_attr(atts, XLINK_HREF);
@@ -1117,6 +1184,7 @@ static void XMLCALL on_scan_start(void *ud, const XML_Char *qname,
     D->arena = &D->keep;
     add_id(D, &D->refs, svgdoc_strdup(D, id, n), 0);
   } else {                               /* out of memory: keep every id */
+    D->scan_lost = 1;
     D->failed = 0;
     free(D->err_msg);
     D->err_msg = NULL;
@@ -1165,6 +1233,7 @@ void svgdoc_scan(svgdoc *D, const char *s, size_t n) {
     if (XML_Parse(p, s, len, 0) != XML_STATUS_OK) {
       /* malformed (the reading says where) or stopped: what was seen is
       ** what the reading can reach before the same place */
+      D->scan_lost = 1;
       end_scan(D);
       return;
     }

@@ -44,6 +44,8 @@ typedef struct svgdoc_options {
   size_t max_held;      /* behind a forward use; 0: SVGDOC_MAX_HELD */
   int shape_text;       /* for the specs: basic shapes written as path data
                         ** and that parsed, the builder's reference */
+  int strict;           /* warnings are errors (a missing reference, an
+                        ** error in path data: doc/svg.md) */
 } svgdoc_options;
 
 /* What a drawn element is drawn of: a path's d as written, or a basic
