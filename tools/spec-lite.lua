@@ -41,6 +41,12 @@ local checks = {
   is_nil = function(v, msg) if v ~= nil then fail(msg, "expected nil, got " .. show(v)) end end,
   is_not_nil = function(v, msg) if v == nil then fail(msg, "expected a value, got nil") end end,
   is_truthy = function(v, msg) if not v then fail(msg, "expected truthy, got " .. show(v)) end end,
+  is_table = function(v, msg)
+    if type(v) ~= "table" then fail(msg, "expected a table, got " .. show(v)) end
+  end,
+  is_boolean = function(v, msg)
+    if type(v) ~= "boolean" then fail(msg, "expected a boolean, got " .. show(v)) end
+  end,
   is_string = function(v, msg)
     if type(v) ~= "string" then fail(msg, "expected a string, got " .. show(v)) end
   end,
@@ -62,6 +68,7 @@ local checks = {
 -- itself is still Lua's
 local A = setmetatable({}, {__call = function(_, ...) return real_assert(...) end})
 for k, f in pairs(checks) do A[k] = f end
+A.truthy = checks.is_truthy
 A.are, A.is, A.has = A, A, A
 A.has_no = {errors = checks.no_errors}
 A.has_errors = checks.has_error
@@ -81,6 +88,12 @@ end
 
 function pending() end
 
+-- setup and teardown of a describe: run around the file's tests (the
+-- specs' blocks only make and remove temporary files)
+local setups, teardowns = {}, {}
+function setup(f) setups[#setups + 1] = f end
+function teardown(f) teardowns[#teardowns + 1] = f end
+
 assert = A
 -- Each file with the modules as they were before the first (busted's
 -- insulation): a module's state, such as mpost's warning given once,
@@ -91,7 +104,7 @@ for _, file in ipairs(arg) do
   for name in pairs(package.loaded) do
     if preloaded[name] == nil then package.loaded[name] = nil end
   end
-  tests = {}
+  tests, path, setups, teardowns = {}, {}, {}, {}
   local chunk, err = loadfile(file)
   local ok = chunk ~= nil
   if ok then ok, err = xpcall(chunk, debug.traceback) end
@@ -99,6 +112,7 @@ for _, file in ipairs(arg) do
     failed = failed + 1
     print("FAIL " .. file .. " (loading): " .. tostring(err))
   end
+  for _, f in ipairs(setups) do f() end
   for _, t in ipairs(tests) do
     local tok, terr = xpcall(t[2], debug.traceback)
     if tok then
@@ -108,6 +122,7 @@ for _, file in ipairs(arg) do
       print("FAIL " .. file .. ": " .. t[1] .. "\n" .. tostring(terr))
     end
   end
+  for _, f in ipairs(teardowns) do pcall(f) end
 end
 print(("%d passed, %d failed"):format(passed, failed))
 os.exit(failed == 0 and 0 or 1)
