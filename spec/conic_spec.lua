@@ -870,6 +870,27 @@ describe("conic_length at the ends of the double range", function()
   end)
 end)
 
+describe("conic_length of nearly flat triangles near w = 1", function()
+  -- References: tools/ref_conic.py flat (the same clustered quadrature,
+  -- 40 and 50 digits agreeing to 1e-28).  The legs a = p1 - p0, c = p2 - p1
+  -- and the chord p2 - p0 are each one rounding and do not close; the area
+  -- and the semi-diameters must come from one triangle, or w = 1 -+ 2^-k
+  -- (al = w/(1 - w^2) up to 2^52) multiplies that ulp: 1.2e-11 on the issue's
+  -- case, 3.4e-10 at an apex 1.2e-7 off the chord.  Bar as for every conic.
+  it("<= 1e-14 relative against mpmath (conic_length_flat.tsv)", function()
+    local worst, rows = helpers.worst(), 0
+    for _, row in ipairs(helpers.tsv("conic_length_flat.tsv")) do
+      local p = pts(row)
+      local L = arclen.conic_length({p[1], p[2]}, {p[3], p[4]}, {p[5], p[6]}, tonumber(row.w))
+      worst:add(helpers.relerr(L, tonumber(row.length)), row.name)
+      rows = rows + 1
+    end
+    assert.is_true(rows >= 200)
+    print(("\n  conic_length flat: worst relative error %.2e (%s)"):format(worst.err, worst.id))
+    assert.is_true(worst.err <= 1e-14, worst.id .. ": " .. worst.err)
+  end)
+end)
+
 describe("cubics and arcs near DBL_MAX", function()
   local function conic_of(p, w, o) return arclen.conic({p[1], p[2]}, {p[3], p[4]}, {p[5], p[6]}, w, o) end
   it("a conic scaled by 2^1020 (and 1.5 * 2^1022, whose legs are halved) gives the scaled cubics exactly", function()
