@@ -193,11 +193,19 @@ int arclen_conic_legs(const double p[6], double v[6]) {
 }
 
 int arclen_conic_degenerate(const double p[6]) {
-  double v[6], l1, l2, s;
-  int i;
+  double v[6], l1, l2, s, mx = 0;
+  int i, e;
   for (i = 0; i < 6; i++)
     if (!isfinite(p[i])) return 1;
   arclen_conic_legs(p, v);   /* a half scale leaves the directions alone */
+  /* scaled by a power of two to a largest component in [1/2, 1): a leg
+  ** of components near DBL_MAX has a length beyond it (hypot = inf made
+  ** the sine 0, and a valid conic "collinear"), a subnormal one loses
+  ** digits */
+  for (i = 0; i < 4; i++)
+    if (fabs(v[i]) > mx) mx = fabs(v[i]);
+  frexp(mx, &e);
+  for (i = 0; i < 4; i++) v[i] = ldexp(v[i], -e);
   l1 = hypot(v[0], v[1]); l2 = hypot(v[2], v[3]);
   if (!(l1 > 0) || !(l2 > 0)) return 1;
   /* sine of the turning angle at p1; below a few rounding errors the
