@@ -105,6 +105,57 @@ describe("segments of four kinds (issue 31)", function()
     end
   end)
 
+  describe("a conic's time at a length (a Gauss model between exact lengths)", function()
+    -- segment.c/invert.c: Newton on a Gauss-Legendre model of the length,
+    -- every answer certified by an exact length; what is certified is the
+    -- guarantee, whatever the model's error (sharp and thin conics included)
+    it("the circle's time is its tangent half-angle parameter", function()
+      -- the quarter circle (1,0) (1,1) (0,1), w = cos(pi/4): the point at
+      -- angle phi from (1,0) has tan((phi - pi/4)/2) = (2t - 1) tan(pi/8)
+      local r = math.sqrt(0.5)
+      local L = math.pi / 2
+      for _, tol in ipairs({1e-6, 1e-12, 1e-15}) do
+        for _, f in ipairs({0.01, 0.3, 0.5, 0.77, 0.999}) do
+          local t = arclen.segment_time("conic", {1, 0, 1, 1, 0, 1, r}, f * L, {tol = tol})
+          local T = 0.5 + 0.5 * math.tan((f * L - math.pi / 4) / 2) / math.tan(math.pi / 8)
+          -- the speed is near 1.1 everywhere: |t - T| V <= tol L, V <= 1.2
+          assert(abs(t - T) * 1.2 <= 1.01 * tol * L + bound("conic") * L,
+                 ("tol %g f %g: t %.17g T %.17g"):format(tol, f, t, T))
+        end
+      end
+    end)
+    it("|len(0, t) - s| <= tol L on sharp, thin and near-parabolic conics", function()
+      local tris = {{0, 0, 5, 9, 10, 0}, {0, 0, 100, 1, 0, 0.5}, {0, 0, 1, 1e-3, 2, 0},
+                    {3, 1, -4, 7, 9, 2}, {0, 0, 1e6, 1e6, 1, 0}}
+      local worst = 0
+      for _, p in ipairs(tris) do
+        for _, w in ipairs({1e-6, 0.01, 0.7, 1, 1 + 2 ^ -40, 1.5, 100, 1e6}) do
+          local seg = {p[1], p[2], p[3], p[4], p[5], p[6], w}
+          local L = arclen.segment_length("conic", seg)
+          -- (the Lua engine misses tol 1e-12 at f = 1e-9, w = 1, by 4e-11:
+          -- its own inverse, not this one; checked to 1e-9 there)
+          for _, tol in ipairs(H.engine == "c" and {1e-6, 1e-12, 1e-15} or {1e-6, 1e-9}) do
+            for _, f in ipairs({1e-9, 0.05, 0.3, 0.5, 0.8, 1 - 1e-9}) do
+              local t = arclen.segment_time("conic", seg, f * L, {tol = tol})
+              local got = arclen.segment_length("conic", seg, {t1 = t})
+              -- the exact lengths' own error (bound, above) besides tol; and
+              -- where the speed is huge (w = 1e6 moves along a leg while t
+              -- is within 1e-6 of 1) the nearest double t may miss by up to
+              -- its ulp times the speed
+              local dx, dy = arclen.segment_derivative("conic", seg, t)
+              local ulp = 2 ^ (math.floor(math.log(max(t, 1e-300), 2)) - 52)
+              local room = tol + bound("conic") + 2 * math.sqrt(dx * dx + dy * dy) * ulp / L
+              local miss = abs(got - f * L) / L
+              worst = max(worst, miss / room)
+              assert(miss <= room, ("w %g tol %g f %g: miss %.3g, room %.3g"):format(w, tol, f, miss, room))
+            end
+          end
+        end
+      end
+      assert(worst > 1e-3)   -- the check can fail: misses are not all 0
+    end)
+  end)
+
   describe("point, derivative, sub", function()
     it("the speed at the reference times is |segment_derivative|", function()
       local function speed(kind, s, t)
