@@ -316,6 +316,39 @@ describe("segments of four kinds (issue 31)", function()
     end)
   end)
 
+  describe("the walk's sweep over one segment's distances", function()
+    -- times.c hands a run of sorted distances to arclen_segment_times_of
+    -- with the path's length of the segment; each search starts at the
+    -- last answer (its time and exact length), each answer certified by an
+    -- exact length of its own: so even a path length 1e-9 off leaves every
+    -- time within tol
+    local cases = {{"conic", "R", {0, 0, 100, 1, 0, 0.5, 30}},
+                   {"conic", "R", {0, 0, 5, 9, 10, 0, 0.01}},
+                   {"conic", "R", {3, 1, -4, 7, 9, 2, 0.7}},
+                   {"quad", "Q", {0, 0, 100, 1, 0, 0.5}}}
+    for _, c in ipairs(cases) do
+      it(c[1] .. " (" .. table.concat(c[3], " ") .. "): 500 distances, tol 1e-15, a length 1e-9 off", function()
+        local L = arclen.segment_length(c[1], c[3])
+        local tol = H.engine == "c" and 1e-15 or 1e-9
+        for _, off in ipairs({1, 1 + 1e-9, 1 - 1e-9}) do
+          local ds = {}
+          for i = 0, 499 do ds[#ds + 1] = L * 0.99 * (i / 499) ^ 2 end
+          local ks, ts = {}, {}
+          arclen._walk_times({c[3]}, {[0] = 0, L * off}, ds, tol, false, ks, ts, c[2])
+          local prev = 0
+          for q, d in ipairs(ds) do
+            local t = ts[q]
+            assert(t >= prev, "times ascend")
+            prev = t
+            local got = arclen.segment_length(c[1], c[3], {t1 = t})
+            assert(abs(got - d) <= (tol + bound(c[1])) * L,
+                   ("off %.9g distance %d: miss %.3g L"):format(off, q, abs(got - d) / L))
+          end
+        end
+      end)
+    end
+  end)
+
   describe("bad input names its argument", function()
     local function err(f, ...) return H.error_of(f, ...) or "no error" end
     local cases = {

@@ -49,16 +49,23 @@ static double model(arclen_seg_speedfn speed, const void *ctx, int n,
 
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
                       const void *ctx, double total, double s, double tol,
-                      double guess, int nodes, double *t, long *evals) {
-  double lo = 0, hi = 1, x0, f0, x, f, d, nx, q;
-  double best = 0, bestf = HUGE_VAL;
+                      double guess, int nodes, double from[2], double *t,
+                      long *evals) {
+  double lo = from[0], hi = 1, x0, f0, x, f, d, nx, q;
+  double best = from[0], bestf = fabs(from[1] - s), bestlen = from[1];
   int i, j, rc;
   if (evals) *evals = 0;
-  if (!(s > 0)) { *t = 0; return ARCLEN_OK; }
-  if (!(s < total)) { *t = 1; return ARCLEN_OK; }
-  x = guess > 0 && guess < 1 ? guess : s / total;
-  /* the first model from the nearer end, both ends' f being exact */
-  if (x <= 0.5) { x0 = 0; f0 = -s; } else { x0 = 1; f0 = total - s; }
+  /* the certified start already answers (a distance within tol of the
+  ** last one), or lies beyond s (unsorted input): start from 0 */
+  if (bestf <= tol) { *t = from[0]; return ARCLEN_OK; }
+  if (from[1] > s) { lo = 0; best = 0; bestf = s; bestlen = 0; }
+  if (!(s > 0)) { *t = from[0] = from[1] = 0; return ARCLEN_OK; }
+  if (!(s < total)) { *t = from[0] = 1; from[1] = total; return ARCLEN_OK; }
+  x = guess > lo && guess < 1 ? guess : lo + (1 - lo) * (s - bestlen) / (total - bestlen);
+  if (!(x > lo && x < 1)) x = lo + (1 - lo) / 2;
+  /* the first model from the nearer certified point: the start, or the
+  ** end (f(1) = total - s, exact too) */
+  if (x - lo <= 1 - x) { x0 = lo; f0 = bestlen - s; } else { x0 = 1; f0 = total - s; }
   for (i = 0; i < MAX_STEPS; i++) {
     /* Newton on the model f0 + int_x0^x speed, inside the bracket */
     q = nodes > 0 ? f0 + model(speed, ctx, nodes, x0, x) : 0;
@@ -75,8 +82,8 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
     rc = len(ctx, x, &f);
     if (evals) (*evals)++;
     if (rc != ARCLEN_OK) return rc;
+    if (fabs(f - s) < bestf) { bestf = fabs(f - s); best = x; bestlen = f; }
     f -= s;
-    if (fabs(f) < bestf) { bestf = fabs(f); best = x; }
     if (fabs(f) <= tol) break;
     if (f < 0) lo = x; else hi = x;
     x0 = x; f0 = f;
@@ -87,6 +94,7 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
     if (nx == x || !(nx > lo && nx < hi)) break;   /* lo, hi adjacent */
     x = nx;
   }
-  *t = best;
+  *t = from[0] = best;
+  from[1] = bestlen;
   return ARCLEN_OK;
 }

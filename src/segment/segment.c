@@ -187,42 +187,79 @@ static double first_guess(int kind, int dim, const double *seg, double u) {
   return u;
 }
 
-/* The time at s on a segment that is not a cubic, whose length is total. */
-static int plain_time(int kind, int dim, const double *seg, double total,
-                      double s, double rtol, double *t, long *evals) {
-  seg_ctx c;
-  double scaled[ARCLEN_SEG_MAXN], mx = 0;
-  int i, n = arclen_segment_count(kind, dim) - (kind == ARCLEN_SEG_CONIC);
-  if (kind == ARCLEN_SEG_LINE) {     /* t uniform: s(t) = t L */
-    *t = !(s > 0) ? 0 : !(s < total) ? 1 : s / total;
-    if (evals) *evals = 0;
-    return ARCLEN_OK;
-  }
-  c.kind = kind; c.dim = dim; c.seg = seg;
+/* invert.c's context for a segment that is not a line or a cubic: seg,
+** or its copy scaled by 2^-e into `scaled` where its points lie far from 1
+** (subnormal lengths come in steps of 2^-1074; exact but for parts below
+** 2^-1022 of the largest), and its legs.  Returns e. */
+static int setup_ctx(int kind, int dim, const double *seg, double *scaled,
+                     seg_ctx *c) {
+  double mx = 0;
+  int i, e = 0, n = arclen_segment_count(kind, dim) - (kind == ARCLEN_SEG_CONIC);
+  c->kind = kind; c->dim = dim; c->seg = seg;
   for (i = 0; i < n; i++) mx = fmax(mx, fabs(seg[i]));
   if (mx > 0 && (mx < 0x1p-500 || mx > 0x1p500)) {
-    /* far from 1 (subnormal lengths come in steps of 2^-1074): the same
-    ** curve scaled by a power of two, exactly but for parts below 2^-1022
-    ** of the largest */
-    int e;
     frexp(mx, &e);
     for (i = 0; i < n; i++) scaled[i] = ldexp(seg[i], -e);
     if (kind == ARCLEN_SEG_CONIC) scaled[n] = seg[n];
-    c.seg = scaled;
-    total = ldexp(total, -e);
-    s = ldexp(s, -e);
+    c->seg = scaled;
   }
   for (i = 0; i < dim; i++) {
-    c.a[i] = c.seg[dim + i] - c.seg[i];
-    c.c[i] = c.seg[2 * dim + i] - c.seg[dim + i];
-    c.k[i] = c.seg[2 * dim + i] - c.seg[i];
+    c->a[i] = c->seg[dim + i] - c->seg[i];
+    c->c[i] = c->seg[2 * dim + i] - c->seg[dim + i];
+    c->k[i] = c->seg[2 * dim + i] - c->seg[i];
   }
-  c.w = kind == ARCLEN_SEG_CONIC ? c.seg[3 * dim] : 1;
+  c->w = kind == ARCLEN_SEG_CONIC ? c->seg[3 * dim] : 1;
+  return e;
+}
+
+/* The time at s on the segment of c (scaled by 2^-e) whose length is
+** total, from the certified point from = (t, len(0, t)) at or before it
+** ({0, 0}: afresh), which becomes the answer's.  A line is t = s / L. */
+static int ctx_time(int kind, const seg_ctx *c, int e, double total,
+                    double s, double rtol, double from[2], double *t,
+                    long *evals) {
+  double guess, at[2];
+  int rc;
+  if (kind == ARCLEN_SEG_LINE) {     /* t uniform: s(t) = t L */
+    *t = !(s > 0) ? 0 : !(s < total) ? 1 : s / total;
+    from[0] = *t; from[1] = *t * total;
+    if (evals) *evals = 0;
+    return ARCLEN_OK;
+  }
+  total = ldexp(total, -e);
+  s = ldexp(s, -e);
+  at[0] = from[0]; at[1] = ldexp(from[1], -e);
+  if (at[0] == 0) {
+    guess = first_guess(kind, c->dim, c->seg, s / total);
+  } else {                           /* Newton's step from the last answer */
+    double d = speed_at(c, at[0]);
+    guess = d > 0 ? at[0] + (s - at[1]) / d : -1;
+  }
   /* the model pays where an exact length costs Carlson's integrals (a
   ** conic, ~600 ns), not beside a quadratic's closed form (~50 ns) */
-  return arclen_seg_invert(len_to, speed_at, &c, total, s, rtol * total,
-                           first_guess(kind, dim, c.seg, s / total),
-                           kind == ARCLEN_SEG_CONIC ? 10 : 0, t, evals);
+  rc = arclen_seg_invert(len_to, speed_at, c, total, s, rtol * total, guess,
+                         kind == ARCLEN_SEG_CONIC ? 10 : 0, at, t, evals);
+  from[0] = at[0]; from[1] = ldexp(at[1], e);
+  return rc;
+}
+
+/* The times of the ascending s[0 .. n-1] on a segment that is not a cubic,
+** whose length is total, in one sweep: each search starts where the last
+** one ended (its time and exact length). */
+static int plain_times(int kind, int dim, const double *seg, double total,
+                       const double *s, long n, double rtol, double *t,
+                       long *evals) {
+  seg_ctx c;
+  double scaled[ARCLEN_SEG_MAXN], from[2] = {0, 0};
+  long i, ev;
+  int e = kind == ARCLEN_SEG_LINE ? 0 : setup_ctx(kind, dim, seg, scaled, &c);
+  if (evals) *evals = 0;
+  for (i = 0; i < n; i++) {
+    int rc = ctx_time(kind, &c, e, total, s[i], rtol, from, t + i, &ev);
+    if (rc != ARCLEN_OK) return rc;
+    if (evals) *evals += ev;
+  }
+  return ARCLEN_OK;
 }
 
 int arclen_segment_time(int kind, int dim, const double *seg, double s,
@@ -248,7 +285,7 @@ int arclen_segment_time(int kind, int dim, const double *seg, double s,
   if (o->t0 != 0 || o->t1 != 1) return ARCLEN_ERANGE;
   rc = plain_length(kind, dim, seg, 0, 1, &total, info);
   if (rc == ARCLEN_OK)
-    rc = plain_time(kind, dim, seg, total, s, o->rtol, t, &evals);
+    rc = plain_times(kind, dim, seg, total, &s, 1, o->rtol, t, &evals);
   if (info) info->pieces = evals;
   if (rc != ARCLEN_OK) *t = NAN;
   return rc;
@@ -257,7 +294,13 @@ int arclen_segment_time(int kind, int dim, const double *seg, double s,
 int arclen_segment_times(int kind, int dim, const double *seg,
                          const double *s, long n, double rtol, double *t,
                          double *pts, double *tan) {
-  double total, prev = -HUGE_VAL;
+  return arclen_segment_times_of(kind, dim, seg, NAN, s, n, rtol, t, pts, tan);
+}
+
+int arclen_segment_times_of(int kind, int dim, const double *seg,
+                            double len, const double *s, long n, double rtol,
+                            double *t, double *pts, double *tan) {
+  double prev = -HUGE_VAL;
   long i;
   int rc = arclen_segment_check(kind, dim, seg);
   if (rc != ARCLEN_OK) return rc;
@@ -273,13 +316,17 @@ int arclen_segment_times(int kind, int dim, const double *seg,
     if (s[i] < prev) return ARCLEN_EDOMAIN;
     prev = s[i];
   }
-  rc = plain_length(kind, dim, seg, 0, 1, &total, NULL);
+  if (n == 0) return ARCLEN_OK;
+  /* the caller's length where it has one (a path's), else measured: the
+  ** searches use it for their scale and first guesses, and certify with
+  ** exact lengths of their own */
+  if (!(len > 0 && isfinite(len))) {
+    rc = plain_length(kind, dim, seg, 0, 1, &len, NULL);
+    if (rc != ARCLEN_OK) return rc;
+  }
+  rc = plain_times(kind, dim, seg, len, s, n, rtol, t, NULL);
   if (rc != ARCLEN_OK) return rc;
   for (i = 0; i < n; i++) {
-    rc = plain_time(kind, dim, seg, total, s[i], rtol, t + i, NULL);
-    if (rc != ARCLEN_OK) return rc;
-    /* each found on its own: keep them ascending as s is */
-    if (i > 0 && t[i] < t[i - 1]) t[i] = t[i - 1];
     if (pts) arclen_segment_point(kind, dim, seg, t[i], pts + dim * i);
     if (tan) arclen_segment_unit_tangent(kind, dim, seg, t[i], tan + dim * i);
   }
