@@ -316,6 +316,23 @@ describe("segments of four kinds (issue 31)", function()
     end)
   end)
 
+  describe("a conic sub-arc whose area is at its legs' rounding level", function()
+    -- found by fuzz/fuzz_segment: the sub-arc [0, 0.066392] of this w = 9e-13
+    -- conic has a + c - k of the order of its area; its area from d x h came
+    -- out 0 (and the length inf) where the flatness test, from a x c, saw a
+    -- conic
+    it("is measured, and the pieces add up to the whole", function()
+      local seg = {-1.5183436525095476e-179, -1.5183436525095476e-179,
+                   -1.5424428511605764e-179, -1.5424428511605768e-179,
+                   3.5044228282074424e-278, 0, 9.0949470177292824e-13}
+      local L = arclen.segment_length("conic", seg)
+      local a = arclen.segment_length("conic", seg, {t1 = 0.066392})
+      local b = arclen.segment_length("conic", seg, {t0 = 0.066392})
+      assert(a > 0 and b > 0)
+      assert(H.relerr(a + b, L) <= (H.engine == "c" and 1e-14 or 1e-12), a + b .. " " .. L)
+    end)
+  end)
+
   describe("the walk's sweep over one segment's distances", function()
     -- times.c hands a run of sorted distances to arclen_segment_times_of
     -- with the path's length of the segment; each search starts at the

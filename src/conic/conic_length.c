@@ -319,11 +319,18 @@ static double exact_length(const double v[6], double w, long *calls) {
     ** to an ulp of k), so the area comes from the sides U -+ V came from:
     ** d x h from a and k (a flat triangle with w = 1 - 2^-53 lost 1.2e-11
     ** to a x c there, issue 31), a x c where a short leg c is exact and k
-    ** carries an ulp of the long one (the thin hyperbolas of umvm) */
-    if (umvm(px1, py1, px2, py2, cx, cy, w, onew, sc, mv))
-      cross = fabs(cross2(px1, py1, cx, cy) / 2 * (w / onew) * sc);
-    else
-      cross = fabs(cross2(dx, dy, hx, hy) * (w / onew) * sc);
+    ** carries an ulp of the long one (the thin hyperbolas of umvm), and
+    ** where the two disagree by more than a factor 2: an area at the
+    ** legs' rounding level, where a x c is what the flatness test saw (d
+    ** x h came out 0 for a sub-arc of w = 9e-13; found by
+    ** fuzz/fuzz_segment) */
+    {
+      double dh = cross2(dx, dy, hx, hy), ac = cross2(px1, py1, cx, cy) / 2;
+      int from_ac = umvm(px1, py1, px2, py2, cx, cy, w, onew, sc, mv);
+      if (from_ac || !(dh * ac > 0 && fabs(dh) < 2 * fabs(ac) && fabs(ac) < 2 * fabs(dh)))
+        dh = ac;
+      cross = fabs(dh * (w / onew) * sc);
+    }
     /* |U|^2 - |V|^2 as (U - V).(U + V) */
     qq = mv[0] * mv[2] + mv[1] * mv[3];
     if (w < 1) {
