@@ -11,11 +11,17 @@
 ** falls as (|x - x0| / rho)^(2 NODES), rho the distance to the speed's
 ** nearest complex singularity) one exact length ends the search; where it
 ** was not, the next model starts from that exact value over a far shorter
-** range.  The answer's guarantee is the certified |f| <= tol alone, never
-** the model.  Certified values keep a bracket [lo, hi] (f(lo) < 0 < f(hi))
+** range.  Where the kind states a bound of the rule's error (a conic:
+** segment.c's conic_rule_error), the model certifies itself when its
+** value, its rules' bounds, its start's own bound and the roundings of
+** the sums leave |f| <= tol: the short steps of a sweep over sorted
+** distances then need no exact length at all, and pass their bound on.
+** The answer's guarantee is always a certified |f| <= tol, never the
+** model's guess.  Certified values keep a bracket [lo, hi] (f(lo) < 0 < f(hi))
 ** that every step stays inside, with bisection where Newton would leave it
 ** or the speed is 0 (a cusp); a cap ends it besides.
 */
+#include <float.h>
 #include <math.h>
 
 #include "arclen.h"
@@ -32,9 +38,12 @@
 ** range the model started with: 5 nodes integrate degree 9 */
 #define STEP_NODES 5
 
-/* int_a^b speed by the n-point Gauss-Legendre rule (signed). */
-static double model(arclen_seg_speedfn speed, const void *ctx, int n,
-                    double a, double b) {
+/* int_a^b speed by the n-point Gauss-Legendre rule (signed); *err (when
+** bound is not NULL) grows by the rule's error bound there plus the
+** rounding of the sum (n positive terms and the speed's few roundings
+** each: 32 eps of it), HUGE_VAL without a bound. */
+static double model(arclen_seg_speedfn speed, arclen_seg_boundfn bound,
+                    const void *ctx, int n, double a, double b, double *err) {
   const arclen_gauss_rule *r = &arclen_gauss_rules[n - 1];
   double m = (a + b) / 2, h = (b - a) / 2, sum = 0;
   int i;
@@ -44,49 +53,68 @@ static double model(arclen_seg_speedfn speed, const void *ctx, int n,
     sum += r->x[i] == 0 ? r->w[i] * speed(ctx, m)
                   : r->w[i] * (speed(ctx, m - x) + speed(ctx, m + x));
   }
+  *err += bound ? bound(ctx, a, b, n) + 32 * DBL_EPSILON * fabs(h * sum)
+                : HUGE_VAL;
   return h * sum;
 }
 
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
-                      const void *ctx, double total, double s, double tol,
-                      double guess, int nodes, double from[2], double *t,
-                      long *evals) {
-  double lo = from[0], hi = 1, x0, f0, x, f, d, nx, q;
+                      arclen_seg_boundfn bound, const void *ctx, double total,
+                      double s, double tol, double guess, int nodes,
+                      double from[3], double *t, long *evals) {
+  double lo = from[0], hi = 1, x0, f0, e0, x, f, d, nx, q, qerr;
   double best = from[0], bestf = fabs(from[1] - s), bestlen = from[1];
+  double besterr = from[2];
   int i, j, rc;
   if (evals) *evals = 0;
   /* the certified start already answers (a distance within tol of the
   ** last one), or lies beyond s (unsorted input): start from 0 */
-  if (bestf <= tol) { *t = from[0]; return ARCLEN_OK; }
-  if (from[1] > s) { lo = 0; best = 0; bestf = s; bestlen = 0; }
-  if (!(s > 0)) { *t = from[0] = from[1] = 0; return ARCLEN_OK; }
-  if (!(s < total)) { *t = from[0] = 1; from[1] = total; return ARCLEN_OK; }
+  if (bestf + besterr <= tol) { *t = from[0]; return ARCLEN_OK; }
+  if (from[1] > s) { lo = 0; best = 0; bestf = s; bestlen = 0; besterr = 0; }
+  if (!(s > 0)) { *t = from[0] = from[1] = from[2] = 0; return ARCLEN_OK; }
+  if (!(s < total)) {
+    *t = from[0] = 1; from[1] = total; from[2] = HUGE_VAL;   /* total: the caller's */
+    return ARCLEN_OK;
+  }
   x = guess > lo && guess < 1 ? guess : lo + (1 - lo) * (s - bestlen) / (total - bestlen);
   if (!(x > lo && x < 1)) x = lo + (1 - lo) / 2;
-  /* the first model from the nearer certified point: the start, or the
-  ** end (f(1) = total - s, exact too) */
-  if (x - lo <= 1 - x) { x0 = lo; f0 = bestlen - s; } else { x0 = 1; f0 = total - s; }
+  /* the first model from the nearer known point: the start, or the end
+  ** (f(1) = total - s, the caller's total: a model only, no certificate) */
+  if (x - lo <= 1 - x) { x0 = lo; f0 = bestlen - s; e0 = besterr; }
+  else { x0 = 1; f0 = total - s; e0 = HUGE_VAL; }
   for (i = 0; i < MAX_STEPS; i++) {
     /* Newton on the model f0 + int_x0^x speed, inside the bracket */
-    q = nodes > 0 ? f0 + model(speed, ctx, nodes, x0, x) : 0;
+    qerr = e0;
+    q = nodes > 0 ? f0 + model(speed, bound, ctx, nodes, x0, x, &qerr) : 0;
     for (j = 0; nodes > 0 && j < MODEL_STEPS && fabs(q) > tol / 4; j++) {
       d = speed(ctx, x);
       if (!(d > 0)) break;
       nx = x - q / d;
       if (!(nx > lo && nx < hi) || nx == x) break;
       /* a long step (a poor guess) gets the first rule's order */
-      q += model(speed, ctx, fabs(nx - x) * 8 < fabs(x - x0) ? STEP_NODES : nodes,
-                 x, nx);
+      q += model(speed, bound, ctx,
+                 fabs(nx - x) * 8 < fabs(x - x0) ? STEP_NODES : nodes, x, nx,
+                 &qerr);
       x = nx;
+    }
+    /* the model certifies itself where its error bound (the rules',
+    ** the start's, the sums' roundings) leaves |f| <= tol; the length
+    ** at x is then s + q within qerr, and the next search starts there */
+    qerr += 2 * DBL_EPSILON * (fabs(s) + fabs(q));
+    if (nodes > 0 && fabs(q) + qerr <= tol) {
+      *t = from[0] = x;
+      from[1] = s + q;
+      from[2] = qerr;
+      return ARCLEN_OK;
     }
     rc = len(ctx, x, &f);
     if (evals) (*evals)++;
     if (rc != ARCLEN_OK) return rc;
-    if (fabs(f - s) < bestf) { bestf = fabs(f - s); best = x; bestlen = f; }
+    if (fabs(f - s) < bestf) { bestf = fabs(f - s); best = x; bestlen = f; besterr = 0; }
     f -= s;
     if (fabs(f) <= tol) break;
     if (f < 0) lo = x; else hi = x;
-    x0 = x; f0 = f;
+    x0 = x; f0 = f; e0 = 0;
     /* the next model's start: Newton's step on the exact value */
     d = speed(ctx, x);
     nx = d > 0 ? x - f / d : lo + (hi - lo) / 2;
@@ -96,5 +124,6 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
   }
   *t = from[0] = best;
   from[1] = bestlen;
+  from[2] = besterr;
   return ARCLEN_OK;
 }
