@@ -333,6 +333,22 @@ describe("segments of four kinds (issue 31)", function()
     end)
   end)
 
+  describe("a conic whose speed's squares underflow", function()
+    -- found by fuzz/fuzz_segment: w = 9e-13 beside legs of 1e-151 (not
+    -- scaled: above 2^-500) made |N|^2 underflow, the speed 0 over a third
+    -- of the arc, and the Gauss model certified a time 0.35% of L off
+    it("its time at a length is within tol", function()
+      local seg = {0, 8.8902337181024104e-162, 6.6146299031785094e-181,
+                   8.5058996478694533e-151, 0, 0, 9.0949470177292824e-13}
+      local L = arclen.segment_length("conic", seg)
+      for _, f in ipairs({0.125, 0.25, 0.5, 0.9}) do
+        local t = arclen.segment_time("conic", seg, f * L)
+        local got = arclen.segment_length("conic", seg, {t1 = t})
+        assert(abs(got - f * L) <= (1e-12 + bound("conic")) * L, f .. ": " .. abs(got - f * L) / L)
+      end
+    end)
+  end)
+
   describe("the walk's sweep over one segment's distances", function()
     -- times.c hands a run of sorted distances to arclen_segment_times_of
     -- with the path's length of the segment; each search starts at the
