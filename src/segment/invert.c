@@ -38,12 +38,9 @@
 ** range the model started with: 5 nodes integrate degree 9 */
 #define STEP_NODES 5
 
-/* int_a^b speed by the n-point Gauss-Legendre rule (signed); *err (when
-** bound is not NULL) grows by the rule's error bound there plus the
-** rounding of the sum (n positive terms and the speed's few roundings
-** each: 32 eps of it), HUGE_VAL without a bound. */
-static double model(arclen_seg_speedfn speed, arclen_seg_boundfn bound,
-                    const void *ctx, int n, double a, double b, double *err) {
+/* int_a^b speed by the n-point Gauss-Legendre rule (signed). */
+static double model(arclen_seg_speedfn speed, const void *ctx, int n,
+                    double a, double b) {
   const arclen_gauss_rule *r = &arclen_gauss_rules[n - 1];
   double m = (a + b) / 2, h = (b - a) / 2, sum = 0;
   int i;
@@ -53,9 +50,27 @@ static double model(arclen_seg_speedfn speed, arclen_seg_boundfn bound,
     sum += r->x[i] == 0 ? r->w[i] * speed(ctx, m)
                   : r->w[i] * (speed(ctx, m - x) + speed(ctx, m + x));
   }
-  *err += bound ? bound(ctx, a, b, n) + 32 * DBL_EPSILON * fabs(h * sum)
-                : HUGE_VAL;
   return h * sum;
+}
+
+/* The pieces of one model: each rule's range, order and value. */
+typedef struct model_piece { double a, b, v; int n; } model_piece;
+
+/* Whether the model's pieces, its start's error e0 and the roundings
+** leave |q| <= tol: each piece's rule bound plus the rounding of its sum
+** (n positive terms and the speed's few roundings each: 32 eps of it),
+** taken in turn and stopped as soon as they exceed the room (the first
+** piece, the long one, is where a model usually fails).  *err: the total
+** when it does. */
+static int model_certifies(arclen_seg_boundfn bound, const void *ctx,
+                           const model_piece *pc, int np, double e0,
+                           double q, double s, double tol, double *err) {
+  double e = e0 + 2 * DBL_EPSILON * (fabs(s) + fabs(q));
+  int i;
+  for (i = 0; i < np && fabs(q) + e <= tol; i++)
+    e += bound(ctx, pc[i].a, pc[i].b, pc[i].n) + 32 * DBL_EPSILON * fabs(pc[i].v);
+  *err = e;
+  return fabs(q) + e <= tol;
 }
 
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
@@ -84,24 +99,31 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
   else { x0 = 1; f0 = total - s; e0 = HUGE_VAL; }
   for (i = 0; i < MAX_STEPS; i++) {
     /* Newton on the model f0 + int_x0^x speed, inside the bracket */
-    qerr = e0;
-    q = nodes > 0 ? f0 + model(speed, bound, ctx, nodes, x0, x, &qerr) : 0;
+    model_piece pc[MODEL_STEPS + 1];
+    int np = 0;
+    if (nodes > 0) {
+      pc[0].a = x0; pc[0].b = x; pc[0].n = nodes;
+      pc[0].v = model(speed, ctx, nodes, x0, x);
+      np = 1;
+    }
+    q = nodes > 0 ? f0 + pc[0].v : 0;
     for (j = 0; nodes > 0 && j < MODEL_STEPS && fabs(q) > tol / 4; j++) {
       d = speed(ctx, x);
       if (!(d > 0)) break;
       nx = x - q / d;
       if (!(nx > lo && nx < hi) || nx == x) break;
       /* a long step (a poor guess) gets the first rule's order */
-      q += model(speed, bound, ctx,
-                 fabs(nx - x) * 8 < fabs(x - x0) ? STEP_NODES : nodes, x, nx,
-                 &qerr);
+      pc[np].a = x; pc[np].b = nx;
+      pc[np].n = fabs(nx - x) * 8 < fabs(x - x0) ? STEP_NODES : nodes;
+      pc[np].v = model(speed, ctx, pc[np].n, x, nx);
+      q += pc[np++].v;
       x = nx;
     }
     /* the model certifies itself where its error bound (the rules',
     ** the start's, the sums' roundings) leaves |f| <= tol; the length
     ** at x is then s + q within qerr, and the next search starts there */
-    qerr += 2 * DBL_EPSILON * (fabs(s) + fabs(q));
-    if (nodes > 0 && fabs(q) + qerr <= tol) {
+    if (nodes > 0 && bound && e0 < tol &&
+        model_certifies(bound, ctx, pc, np, e0, q, s, tol, &qerr)) {
       *t = from[0] = x;
       from[1] = s + q;
       from[2] = qerr;

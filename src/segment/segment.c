@@ -138,7 +138,7 @@ static int len_to(const void *ctx, double t, double *len) {
 ** bisect: every answer is certified by an exact length. */
 static double speed_at(const void *ctx, double t) {
   const seg_ctx *c = (const seg_ctx *)ctx;
-  double s = 1 - t, n2 = 0, x[3], D, mx = 0, wa, ts, wc;
+  double s = 1 - t, n2 = 0, x[3], D, wa, ts, wc;
   int i;
   if (c->kind == ARCLEN_SEG_QUAD) {
     for (i = 0; i < c->dim; i++) x[i] = s * c->a[i] + t * c->c[i];
@@ -155,14 +155,13 @@ static double speed_at(const void *ctx, double t) {
     D = (s * s + t * t) * v + 2 * ts;       /* D / w */
     D *= sqrt(c->w);                        /* D^2 w */
   }
-  for (i = 0; i < c->dim; i++) {
-    if (fabs(x[i]) > mx) mx = fabs(x[i]);
-    n2 += x[i] * x[i];
-  }
+  for (i = 0; i < c->dim; i++) n2 += x[i] * x[i];
   /* the squares leave the normal range (w = 9e-13 beside legs of 1e-151
   ** gave a speed of 0 over a third of the arc, and the Gauss model's
-  ** bound rests on the speed's own few roundings): the norm by hypot */
-  if (mx < 0x1p-480 || mx > 0x1p480)
+  ** bound rests on the speed's own few roundings): the norm by hypot.
+  ** Above 2^-960 the largest square is normal and what underflowed is
+  ** below 2^-60 of it */
+  if (!(n2 > 0x1p-960 && n2 < 0x1p960))
     n2 = c->dim == 2 ? hypot(x[0], x[1]) : hypot(hypot(x[0], x[1]), x[2]);
   else
     n2 = sqrt(n2);
