@@ -870,6 +870,52 @@ describe("conic_length at the ends of the double range", function()
   end)
 end)
 
+describe("conic_length of nearly flat triangles near w = 1", function()
+  -- References: tools/ref_conic.py flat (the same clustered quadrature,
+  -- 40 and 50 digits agreeing to 1e-28).  The legs a = p1 - p0, c = p2 - p1
+  -- and the chord p2 - p0 are each one rounding and do not close; the area
+  -- and the semi-diameters must come from one triangle, or w = 1 -+ 2^-k
+  -- (al = w/(1 - w^2) up to 2^52) multiplies that ulp: 1.2e-11 on the issue's
+  -- case, 3.4e-10 at an apex 1.2e-7 off the chord.  Bar as for every conic.
+  it("<= 1e-14 relative against mpmath (conic_length_flat.tsv)", function()
+    local worst, rows = helpers.worst(), 0
+    for _, row in ipairs(helpers.tsv("conic_length_flat.tsv")) do
+      local p = pts(row)
+      local L = arclen.conic_length({p[1], p[2]}, {p[3], p[4]}, {p[5], p[6]}, tonumber(row.w))
+      worst:add(helpers.relerr(L, tonumber(row.length)), row.name)
+      rows = rows + 1
+    end
+    assert.is_true(rows >= 200)
+    print(("\n  conic_length flat: worst relative error %.2e (%s)"):format(worst.err, worst.id))
+    assert.is_true(worst.err <= 1e-14, worst.id .. ": " .. worst.err)
+  end)
+end)
+
+describe("conics whose legs are longer than the largest double", function()
+  -- p0, p1, p2 = (-0.75, -0.75), (0.75, 0.75), (0.75, -0.75) times 2^1023: the
+  -- leg p1 - p0 has components 1.5 * 2^1023 (finite) but length 1.9e308; the
+  -- flatness test took that length as inf and called the conic collinear.
+  -- References: tools/ref_conic.py's wide_length of the unscaled conic
+  -- (1.556550901124038836689121 at w = 0.1, 1.501245372703549544033561 at
+  -- w = 0.01), times 2^1023 (exact in doubles).
+  local s = 2 ^ 1023
+  local p0, p1, p2 = {-0.75 * s, -0.75 * s}, {0.75 * s, 0.75 * s}, {0.75 * s, -0.75 * s}
+  it("are measured, to 1e-14 relative", function()
+    for w, ref in pairs({[0.1] = 1.556550901124038836689121, [0.01] = 1.501245372703549544033561}) do
+      local L = arclen.conic_length(p0, p1, p2, w)
+      assert.is_true(helpers.relerr(L, ref * s) <= 1e-14, w .. ": " .. L)
+    end
+  end)
+  it("and those of twice that overflow with the overflow named, not a collinear conic", function()
+    assert.matches("#1.*length exceeds the largest double",
+                   helpers.error_of(arclen.conic_length, {-1.5 * s, -1.5 * s}, {1.5 * s, 1.5 * s}, {1.5 * s, -1.5 * s}, 0.1))
+  end)
+  it("a truly collinear triangle of that size is still refused", function()
+    assert.matches("collinear",
+                   helpers.error_of(arclen.conic_length, p0, p1, {0.25 * s, 0.25 * s}, 0.1))
+  end)
+end)
+
 describe("cubics and arcs near DBL_MAX", function()
   local function conic_of(p, w, o) return arclen.conic({p[1], p[2]}, {p[3], p[4]}, {p[5], p[6]}, w, o) end
   it("a conic scaled by 2^1020 (and 1.5 * 2^1022, whose legs are halved) gives the scaled cubics exactly", function()

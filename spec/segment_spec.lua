@@ -105,6 +105,57 @@ describe("segments of four kinds (issue 31)", function()
     end
   end)
 
+  describe("a conic's time at a length (a Gauss model between exact lengths)", function()
+    -- segment.c/invert.c: Newton on a Gauss-Legendre model of the length,
+    -- every answer certified by an exact length; what is certified is the
+    -- guarantee, whatever the model's error (sharp and thin conics included)
+    it("the circle's time is its tangent half-angle parameter", function()
+      -- the quarter circle (1,0) (1,1) (0,1), w = cos(pi/4): the point at
+      -- angle phi from (1,0) has tan((phi - pi/4)/2) = (2t - 1) tan(pi/8)
+      local r = math.sqrt(0.5)
+      local L = math.pi / 2
+      for _, tol in ipairs({1e-6, 1e-12, 1e-15}) do
+        for _, f in ipairs({0.01, 0.3, 0.5, 0.77, 0.999}) do
+          local t = arclen.segment_time("conic", {1, 0, 1, 1, 0, 1, r}, f * L, {tol = tol})
+          local T = 0.5 + 0.5 * math.tan((f * L - math.pi / 4) / 2) / math.tan(math.pi / 8)
+          -- the speed is near 1.1 everywhere: |t - T| V <= tol L, V <= 1.2
+          assert(abs(t - T) * 1.2 <= 1.01 * tol * L + bound("conic") * L,
+                 ("tol %g f %g: t %.17g T %.17g"):format(tol, f, t, T))
+        end
+      end
+    end)
+    it("|len(0, t) - s| <= tol L on sharp, thin and near-parabolic conics", function()
+      local tris = {{0, 0, 5, 9, 10, 0}, {0, 0, 100, 1, 0, 0.5}, {0, 0, 1, 1e-3, 2, 0},
+                    {3, 1, -4, 7, 9, 2}, {0, 0, 1e6, 1e6, 1, 0}}
+      local worst = 0
+      for _, p in ipairs(tris) do
+        for _, w in ipairs({1e-6, 0.01, 0.7, 1, 1 + 2 ^ -40, 1.5, 100, 1e6}) do
+          local seg = {p[1], p[2], p[3], p[4], p[5], p[6], w}
+          local L = arclen.segment_length("conic", seg)
+          -- (the Lua engine misses tol 1e-12 at f = 1e-9, w = 1, by 4e-11:
+          -- its own inverse, not this one; checked to 1e-9 there)
+          for _, tol in ipairs(H.engine == "c" and {1e-6, 1e-12, 1e-15} or {1e-6, 1e-9}) do
+            for _, f in ipairs({1e-9, 0.05, 0.3, 0.5, 0.8, 1 - 1e-9}) do
+              local t = arclen.segment_time("conic", seg, f * L, {tol = tol})
+              local got = arclen.segment_length("conic", seg, {t1 = t})
+              -- the exact lengths' own error (bound, above) besides tol; and
+              -- where the speed is huge (w = 1e6 moves along a leg while t
+              -- is within 1e-6 of 1) the nearest double t may miss by up to
+              -- its ulp times the speed
+              local dx, dy = arclen.segment_derivative("conic", seg, t)
+              local ulp = 2 ^ (math.floor(math.log(max(t, 1e-300), 2)) - 52)
+              local room = tol + bound("conic") + 2 * math.sqrt(dx * dx + dy * dy) * ulp / L
+              local miss = abs(got - f * L) / L
+              worst = max(worst, miss / room)
+              assert(miss <= room, ("w %g tol %g f %g: miss %.3g, room %.3g"):format(w, tol, f, miss, room))
+            end
+          end
+        end
+      end
+      assert(worst > 1e-3)   -- the check can fail: misses are not all 0
+    end)
+  end)
+
   describe("point, derivative, sub", function()
     it("the speed at the reference times is |segment_derivative|", function()
       local function speed(kind, s, t)
@@ -263,6 +314,81 @@ describe("segments of four kinds (issue 31)", function()
         assert(abs(out[q].x - x) <= 1e-12 and abs(out[q].y - y) <= 1e-12)
       end
     end)
+  end)
+
+  describe("a conic sub-arc whose area is at its legs' rounding level", function()
+    -- found by fuzz/fuzz_segment: the sub-arc [0, 0.066392] of this w = 9e-13
+    -- conic has a + c - k of the order of its area; its area from d x h came
+    -- out 0 (and the length inf) where the flatness test, from a x c, saw a
+    -- conic
+    it("is measured, and the pieces add up to the whole", function()
+      local seg = {-1.5183436525095476e-179, -1.5183436525095476e-179,
+                   -1.5424428511605764e-179, -1.5424428511605768e-179,
+                   3.5044228282074424e-278, 0, 9.0949470177292824e-13}
+      local L = arclen.segment_length("conic", seg)
+      local a = arclen.segment_length("conic", seg, {t1 = 0.066392})
+      local b = arclen.segment_length("conic", seg, {t0 = 0.066392})
+      assert(a > 0 and b > 0)
+      assert(H.relerr(a + b, L) <= (H.engine == "c" and 1e-14 or 1e-12), a + b .. " " .. L)
+    end)
+  end)
+
+  describe("a conic whose speed's squares underflow", function()
+    -- found by fuzz/fuzz_segment: w = 9e-13 beside legs of 1e-151 (not
+    -- scaled: above 2^-500) made |N|^2 underflow, the speed 0 over a third
+    -- of the arc, and the Gauss model certified a time 0.35% of L off
+    it("its time at a length is within tol", function()
+      local seg = {0, 8.8902337181024104e-162, 6.6146299031785094e-181,
+                   8.5058996478694533e-151, 0, 0, 9.0949470177292824e-13}
+      local L = arclen.segment_length("conic", seg)
+      for _, f in ipairs({0.125, 0.25, 0.5, 0.9}) do
+        local t = arclen.segment_time("conic", seg, f * L)
+        local got = arclen.segment_length("conic", seg, {t1 = t})
+        assert(abs(got - f * L) <= (1e-12 + bound("conic")) * L, f .. ": " .. abs(got - f * L) / L)
+      end
+    end)
+  end)
+
+  describe("the walk's sweep over one segment's distances", function()
+    -- times.c hands a run of sorted distances to arclen_segment_times_of
+    -- with the path's length of the segment; each search starts at the
+    -- last answer (its time and length), each answer certified by an exact
+    -- length or, on a conic, by the Gauss model's own error bound from the
+    -- last exact one: so even a path length 1e-9 off leaves every time
+    -- within tol
+    local cases = {{"conic", "R", {0, 0, 100, 1, 0, 0.5, 30}},
+                   {"conic", "R", {0, 0, 5, 9, 10, 0, 0.01}},
+                   {"conic", "R", {3, 1, -4, 7, 9, 2, 0.7}},
+                   -- w = 468: the speed steep near t = 1, where a 10-node
+                   -- rule's nodes alone (rounded to t's ulp) cost 5e-14
+                   {"conic", "R", {-3.4321088809520006, 8.1505298055708408, -3.7847012095153332,
+                                   -1.809632945805788, 7.8112630918622017, 4.6219694893807173,
+                                   468.28736855416804}},
+                   {"quad", "Q", {0, 0, 100, 1, 0, 0.5}}}
+    for _, c in ipairs(cases) do
+      it(c[1] .. " (" .. table.concat(c[3], " ") .. "): 500 distances, tol 1e-15, a length 1e-9 off", function()
+        local L = arclen.segment_length(c[1], c[3])
+        local tol = H.engine == "c" and 1e-15 or 1e-9
+        for _, off in ipairs({1, 1 + 1e-9, 1 - 1e-9}) do
+          local ds = {}
+          for i = 0, 499 do ds[#ds + 1] = L * 0.99 * (i / 499) ^ 2 end
+          local ks, ts = {}, {}
+          arclen._walk_times({c[3]}, {[0] = 0, L * off}, ds, tol, false, ks, ts, c[2])
+          local prev = 0
+          for q, d in ipairs(ds) do
+            local t = ts[q]
+            assert(t >= prev, "times ascend")
+            prev = t
+            local got = arclen.segment_length(c[1], c[3], {t1 = t})
+            -- and the nearest double t's reach where the speed is steep
+            local dx, dy = arclen.segment_derivative(c[1], c[3], t)
+            local ulp = 2 ^ (math.floor(math.log(max(t, 1e-300), 2)) - 52)
+            assert(abs(got - d) <= (tol + bound(c[1])) * L + 2 * math.sqrt(dx * dx + dy * dy) * ulp,
+                   ("off %.9g distance %d: miss %.3g L"):format(off, q, abs(got - d) / L))
+          end
+        end
+      end)
+    end
   end)
 
   describe("bad input names its argument", function()

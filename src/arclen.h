@@ -405,6 +405,13 @@ int arclen_segment_time(int kind, int dim, const double *seg, double s,
 int arclen_segment_times(int kind, int dim, const double *seg,
                          const double *s, long n, double rtol, double *t,
                          double *pts, double *tan);
+/* arclen_segment_times with the segment's length len as the caller has it
+** (a path's cumulative lengths; NaN or <= 0: measured): the scale of the
+** tolerance and of the first guesses, each time still certified by an
+** exact length of its own.  Cubics ignore it. */
+int arclen_segment_times_of(int kind, int dim, const double *seg,
+                            double len, const double *s, long n, double rtol,
+                            double *t, double *pts, double *tan);
 /* Point, derivative (of the curve in t; a conic's is the rational one) and
 ** unit tangent at t in [0, 1] (where the derivative vanishes, the limit
 ** direction; a segment that is a point gets zeros): dim numbers each. */

@@ -12,6 +12,8 @@ Writes
       range (legs 1e-300 beside O(1), w = 1e+-300, points near DBL_MAX, the
       fuzz findings), by quadrature on panels clustered at the speed's
       singularities (wide_length); `ref_conic.py extreme` alone: ~12 min.
+  spec/data/conic_length_flat.tsv  nearly flat triangles with w = 1 +- 2^-k
+      (flat_cases), by wide_length; `ref_conic.py flat` alone: ~1.5 min.
 
 Independent of the C code: the schemes are the paper's formulas as printed
 (with the corrections of doc/papers.md), at 30 digits.
@@ -452,6 +454,51 @@ def write_extreme():
             print(name, mp.nstr(L, 20), file=sys.stderr)
 
 
+def flat_cases():
+    """Nearly flat triangles with w near 1 (a near-parabolic conic hugging
+    its chord): the first is the case where conic_length was off by 1.2e-11
+    (the triangle's area taken from a x c while the semi-diameters came
+    from a and p2 - p0, a rounding apart); around it w = 1 +- 2^-k and
+    apexes 10^-j off the chord, with ends a few ulps off the line so that
+    the legs' roundings differ (an apex over the chord's middle is where
+    the old code lost up to 3e-11)."""
+    out = [("w=1-2^-53, apex 2.4e-6 off the chord (issue 31)",
+            (-1, -1.0000000000000018), (0, 2.3818574845790863e-06),
+            (1, 0.99999999999999989), 0.99999999999999989)]
+    ends = [((-1, -1.0000000000000018), (1, 0.99999999999999989)),
+            ((-3, 1.0000000000000004), (5, -2.9999999999999996)),
+            ((0.1, 0.30000000000000004), (0.7000000000000001, 0.9))]
+    weights = [("1-2^-53", 1 - 2.0 ** -53), ("1-2^-50", 1 - 2.0 ** -50),
+               ("1-2^-40", 1 - 2.0 ** -40), ("1-2^-26", 1 - 2.0 ** -26),
+               ("1-2^-12", 1 - 2.0 ** -12), ("1", 1.0),
+               ("1+2^-52", 1 + 2.0 ** -52), ("1+2^-40", 1 + 2.0 ** -40),
+               ("1+2^-26", 1 + 2.0 ** -26), ("1+2^-12", 1 + 2.0 ** -12)]
+    for e, (p0, p2) in enumerate(ends):
+        mx, my = (p0[0] + p2[0]) / 2, (p0[1] + p2[1]) / 2
+        nx, ny = -(p2[1] - p0[1]), p2[0] - p0[0]     # a normal of the chord
+        for j in (3, 5, 6, 7):      # 1e-8 and below: sandwich() answers
+            off = 1.2360679774997898 * 10.0 ** -j
+            for sh in (0, 0.3819660112501051):   # apex over the middle or not
+                p1 = (mx + off * nx + sh * (p2[0] - p0[0]),
+                      my + off * ny + sh * (p2[1] - p0[1]))
+                for wname, w in weights:
+                    out.append(("flat %d, apex 1.2e-%d off, shift %.2f, w=%s"
+                                % (e, j, sh, wname), p0, p1, p2, w))
+    return out
+
+
+def write_flat():
+    path = os.path.join(DATA, "conic_length_flat.tsv")
+    with open(path, "w") as f:
+        f.write("name\tx0\ty0\tx1\ty1\tx2\ty2\tw\tlength\n")
+        for name, a, b, c, w in flat_cases():
+            L = wide_length((a, b, c), w)
+            f.write("%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n" % (
+                name, *[repr(float(x)) for x in a + b + c], repr(float(w)),
+                s(L)))
+            f.flush()
+
+
 def write_perimeters():
     """Ellipse perimeters 4 a E(1 - b^2/a^2) (mpmath's ellipe takes m)."""
     path = os.path.join(DATA, "conic_perimeter.tsv")
@@ -507,12 +554,14 @@ def write_fullcircle_mpost():
 
 
 if __name__ == "__main__":
-    what = sys.argv[1:] or ["lengths", "extreme", "mpost", "hausdorff"]
+    what = sys.argv[1:] or ["lengths", "extreme", "flat", "mpost", "hausdorff"]
     if "lengths" in what:
         write_lengths()
         write_perimeters()
     if "extreme" in what:
         write_extreme()
+    if "flat" in what:
+        write_flat()
     if "mpost" in what:
         write_fullcircle_mpost()
     if "hausdorff" in what:

@@ -193,11 +193,19 @@ int arclen_conic_legs(const double p[6], double v[6]) {
 }
 
 int arclen_conic_degenerate(const double p[6]) {
-  double v[6], l1, l2, s;
+  double v[6], l1, l2, s, mx = 0;
   int i;
   for (i = 0; i < 6; i++)
     if (!isfinite(p[i])) return 1;
   arclen_conic_legs(p, v);   /* a half scale leaves the directions alone */
+  /* a leg of components near DBL_MAX has a length beyond it (hypot = inf
+  ** made the sine 0, and a valid conic "collinear"): such legs scaled by
+  ** 2^-64 (exact but for parts 2^-1000 of the largest, far below the
+  ** test's 16 eps) */
+  for (i = 0; i < 4; i++)
+    if (fabs(v[i]) > mx) mx = fabs(v[i]);
+  if (mx > 0x1p1000)
+    for (i = 0; i < 4; i++) v[i] *= 0x1p-64;
   l1 = hypot(v[0], v[1]); l2 = hypot(v[2], v[3]);
   if (!(l1 > 0) || !(l2 > 0)) return 1;
   /* sine of the turning angle at p1; below a few rounding errors the

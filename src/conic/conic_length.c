@@ -215,27 +215,36 @@ static double parabola(double ax, double ay, double ex, double ey,
 }
 
 /* U - V (mv[0..1]) and U + V (mv[2..3]) for U = al d, V = s h, al =
-** w/(1-w^2), s = |1-w^2|^(-1/2), with p0 at the origin.  For w >> 1, al
-** and -s agree to 1/(2 w^2) relative, so U - V formed directly loses all
-** digits when a leg is short; d + h = a = p1 - p0, d - h = -c = p1 - p2
-** (x2 y2 = p2 - p0 and cx cy = c, each one rounding of the inputs)
-** and g = -(al + s) = 1/((w^2-1)(w + sqrt(w^2-1))) give it exactly. */
-static void umvm(double x1, double y1, double x2, double y2, double cx,
-                 double cy, double w, double onew, double s, double mv[4]) {
+** w/(1-w^2), s = |1-w^2|^(-1/2), with p0 at the origin, h = k/2 (x2 y2 =
+** k = p2 - p0) and d = a - h (x1 y1 = a = p1 - p0): from d and h, as U, V
+** and the triangle's area are, so that all of them describe one triangle.
+** (The legs a, c, k are each one rounding of the inputs, so a + c - k is
+** up to an ulp of k; near w = 1 al ~ 2^52 turned that into 3e-10 of a
+** flat triangle's U + V when U + V was formed from c.)  For w > 1 and a
+** short leg, al and -s agree to 1/(2 w^2) relative and one of the sums
+** cancels; there d + h = a = p1 - p0, h - d = c = p2 - p1 (each one
+** rounding of the inputs) and g = -(al + s) = 1/((w^2-1)(w +
+** sqrt(w^2-1))) give it without cancellation.  Returns 1 when U -+ V
+** came from a and c, else 0. */
+static int umvm(double x1, double y1, double x2, double y2, double cx,
+                double cy, double w, double onew, double s, double mv[4]) {
   double al = w / onew, hx = x2 / 2, hy = y2 / 2;
-  if (w > 1) {
+  double dx = x1 - hx, dy = y1 - hy, sz;
+  mv[0] = dx * al - hx * s; mv[1] = dy * al - hy * s;
+  mv[2] = dx * al + hx * s; mv[3] = dy * al + hy * s;
+  sz = fabs(al) * hypot(dx, dy) + s * hypot(hx, hy);
+  if (w > 1 && (hypot(mv[0], mv[1]) < 0.25 * sz ||
+                hypot(mv[2], mv[3]) < 0.25 * sz)) {
     /* U - V = al a + g h,  U + V = -al c - g h */
     double g = 1 / ((-onew) * (w + sqrt(-onew)));
     mv[0] = al * x1 + g * hx; mv[1] = al * y1 + g * hy;
     mv[2] = -al * cx - g * hx; mv[3] = -al * cy - g * hy;
     /* A thin hyperbola (nearly parallel legs, |a| ~ E^2 |c| or |c| ~ E^2
-    ** |a|, E = w + sqrt(w^2 - 1)) makes one of the sums cancel to 1e-9 of
-    ** its terms (a sub-arc of w = 6.77 lost 1e-12 relative; found by
-    ** fuzz/fuzz_segment).  There, with h = (a + c)/2 and E^2 = 2 w E - 1:
-    ** U - V = (c - E^2 a)/den, U + V = (E^2 c - a)/den, den = 2 E (w^2 - 1),
-    ** E^2 in double-double and each product exact.  Elsewhere (near w = 1
-    ** in particular, where U and V are large and must agree with the U, V
-    ** formed from h above) the plain sums stay. */
+    ** |a|, E = w + sqrt(w^2 - 1)) makes one of these sums cancel to 1e-9
+    ** of its terms too (a sub-arc of w = 6.77 lost 1e-12 relative; found
+    ** by fuzz/fuzz_segment).  There, with h = (a + c)/2 and E^2 = 2 w E -
+    ** 1: U - V = (c - E^2 a)/den, U + V = (E^2 c - a)/den, den = 2 E (w^2
+    ** - 1), E^2 in double-double and each product exact. */
     if (hypot(mv[0], mv[1]) < 0x1p-10 * (fabs(al) * hypot(x1, y1) + g * hypot(hx, hy)) ||
         hypot(mv[2], mv[3]) < 0x1p-10 * (fabs(al) * hypot(cx, cy) + g * hypot(hx, hy))) {
       arclen_dd E = exp_acosh(w), E2;
@@ -247,11 +256,9 @@ static void umvm(double x1, double y1, double x2, double y2, double cx,
       mv[2] = e2u_minus_v(E2, cx, x1) / den;
       mv[3] = e2u_minus_v(E2, cy, y1) / den;
     }
-  } else {
-    double dx = x1 - hx, dy = y1 - hy;
-    mv[0] = dx * al - hx * s; mv[1] = dy * al - hy * s;
-    mv[2] = dx * al + hx * s; mv[3] = dy * al + hy * s;
+    return 1;
   }
+  return 0;
 }
 
 /* Floater's subdivision (eq. 4) at t = 1/2 puts the arc inside the
@@ -306,11 +313,24 @@ static double exact_length(const double v[6], double w, long *calls) {
     sc = 1 / sqrt(fabs(onew));
     vx = hx * sc; vy = hy * sc;
     uv = ux * vx + uy * vy;
-    /* U x V = (w / (1 - w^2)) |1 - w^2|^(-1/2) d x h and d x h = a x c / 2
-    ** (a = p1 - p0, c = p2 - p1): the triangle's area, not a difference of
-    ** the nearly parallel U, V of a short leg */
-    cross = fabs(cross2(px1, py1, cx, cy) / 2 * (w / onew) * sc);
-    umvm(px1, py1, px2, py2, cx, cy, w, onew, sc, mv);
+    /* U x V = (w / (1 - w^2)) |1 - w^2|^(-1/2) d x h, d x h = a x c / 2:
+    ** the triangle's area, not a difference of the nearly parallel U, V of
+    ** a short leg.  The rounded legs a, c, k do not close (a + c - k is up
+    ** to an ulp of k), so the area comes from the sides U -+ V came from:
+    ** d x h from a and k (a flat triangle with w = 1 - 2^-53 lost 1.2e-11
+    ** to a x c there, issue 31), a x c where a short leg c is exact and k
+    ** carries an ulp of the long one (the thin hyperbolas of umvm), and
+    ** where the two disagree by more than a factor 2: an area at the
+    ** legs' rounding level, where a x c is what the flatness test saw (d
+    ** x h came out 0 for a sub-arc of w = 9e-13; found by
+    ** fuzz/fuzz_segment) */
+    {
+      double dh = cross2(dx, dy, hx, hy), ac = cross2(px1, py1, cx, cy) / 2;
+      int from_ac = umvm(px1, py1, px2, py2, cx, cy, w, onew, sc, mv);
+      if (from_ac || !(dh * ac > 0 && fabs(dh) < 2 * fabs(ac) && fabs(ac) < 2 * fabs(dh)))
+        dh = ac;
+      cross = fabs(dh * (w / onew) * sc);
+    }
     /* |U|^2 - |V|^2 as (U - V).(U + V) */
     qq = mv[0] * mv[2] + mv[1] * mv[3];
     if (w < 1) {

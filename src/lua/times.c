@@ -126,8 +126,10 @@ static void times_of(lua_State *L, const segment_run *r, const double *s,
   if (r->kind == ARCLEN_SEG_CUBIC)
     rc = arclen_times(r->c, r->dim, s + a, b - a, r->rtol, t + a, NULL, NULL);
   else
-    rc = arclen_segment_times(r->kind, r->dim, r->c, s + a, b - a, r->rtol,
-                              t + a, NULL, NULL);
+    /* the path's length of the segment (its cumulative lengths'
+    ** difference) spares a measurement: each time is certified anyway */
+    rc = arclen_segment_times_of(r->kind, r->dim, r->c, r->seglen, s + a,
+                                 b - a, r->rtol, t + a, NULL, NULL);
   if (rc != ARCLEN_OK) arclenL_argcode(L, 2, rc);
   for (q = 0; q < m && (p || v); q++) {
     if (p) arclen_segment_point(r->kind, r->dim, r->c, t[q], p + r->dim * q);

@@ -5,6 +5,7 @@
 ** to the method asked for (the default method unless told), the other
 ** kinds to line.c, quad.c and conic_seg.c, their times to invert.c.
 */
+#include <float.h>
 #include <math.h>
 #include <string.h>
 
@@ -114,51 +115,222 @@ int arclen_segment_length(int kind, int dim, const double *seg,
   return rc;
 }
 
-/* What invert.c needs of a segment. */
-typedef struct seg_ctx { int kind, dim; const double *seg; } seg_ctx;
+/* What invert.c needs of a segment: the segment, and for the speed its
+** legs a = P1 - P0, c = P2 - P1, k = P2 - P0 and weight (plain_time has
+** brought the points within 2^+-500, so no leg overflows and no square
+** of one leaves the double range). */
+typedef struct seg_ctx {
+  int kind, dim;
+  const double *seg;
+  double a[3], c[3], k[3], w;
+} seg_ctx;
 
 static int len_to(const void *ctx, double t, double *len) {
   const seg_ctx *c = (const seg_ctx *)ctx;
   return plain_length(c->kind, c->dim, c->seg, 0, t, len, NULL);
 }
 
-/* The speed for Newton's step: the kind's derivative itself (plain_time
-** has brought the points within 2^+-500 already, so nothing overflows). */
+/* The speed |C'(t)| for Newton's step and invert.c's model: a quadratic's
+** 2 |(1-t) a + t c|; a conic's 2 |w (1-t)^2 a + t (1-t) k + w t^2 c| / D^2,
+** D = (1-t)^2 + 2 w t (1-t) + t^2 (the quotient rule, t^3 terms
+** cancelled), both divided by w when w > 1 so that w a stays finite.  A
+** speed that overflows anyway (w near DBL_MAX) only makes invert.c
+** bisect: every answer is certified by an exact length. */
 static double speed_at(const void *ctx, double t) {
   const seg_ctx *c = (const seg_ctx *)ctx;
-  double d[3];
-  if (c->kind == ARCLEN_SEG_QUAD) arclen_quad_derivative(c->seg, c->dim, t, d);
-  else arclen_rquad_derivative(c->seg, c->dim, t, d);
-  return arclen_seg_norm(d, c->dim);
+  double s = 1 - t, n2 = 0, x[3], D, wa, ts, wc;
+  int i;
+  if (c->kind == ARCLEN_SEG_QUAD) {
+    for (i = 0; i < c->dim; i++) x[i] = s * c->a[i] + t * c->c[i];
+    D = 1;
+  } else if (c->w <= 1) {
+    wa = c->w * s * s; ts = t * s; wc = c->w * t * t;
+    for (i = 0; i < c->dim; i++) x[i] = wa * c->a[i] + ts * c->k[i] + wc * c->c[i];
+    D = s * s + 2 * c->w * ts + t * t;
+  } else {
+    double v = 1 / c->w;
+    ts = t * s;
+    for (i = 0; i < c->dim; i++)
+      x[i] = s * s * c->a[i] + ts * v * c->k[i] + t * t * c->c[i];
+    D = (s * s + t * t) * v + 2 * ts;       /* D / w */
+    D *= sqrt(c->w);                        /* D^2 w */
+  }
+  for (i = 0; i < c->dim; i++) n2 += x[i] * x[i];
+  /* the squares leave the normal range (w = 9e-13 beside legs of 1e-151
+  ** gave a speed of 0 over a third of the arc, and the Gauss model's
+  ** bound rests on the speed's own few roundings): the norm by hypot.
+  ** Above 2^-960 the largest square is normal and what underflowed is
+  ** below 2^-60 of it */
+  if (!(n2 > 0x1p-960 && n2 < 0x1p960))
+    n2 = c->dim == 2 ? hypot(x[0], x[1]) : hypot(hypot(x[0], x[1]), x[2]);
+  else
+    n2 = sqrt(n2);
+  return 2 * n2 / (D * D);
 }
 
-/* The time at s on a segment that is not a cubic, whose length is total. */
-static int plain_time(int kind, int dim, const double *seg, double total,
-                      double s, double rtol, double *t, long *evals) {
-  seg_ctx c;
-  double scaled[ARCLEN_SEG_MAXN], mx = 0;
-  int i, n = arclen_segment_count(kind, dim) - (kind == ARCLEN_SEG_CONIC);
-  if (kind == ARCLEN_SEG_LINE) {     /* t uniform: s(t) = t L */
-    *t = !(s > 0) ? 0 : !(s < total) ? 1 : s / total;
-    if (evals) *evals = 0;
-    return ARCLEN_OK;
+/* The n-point Gauss-Legendre rule's error for a conic's speed over [a, b]
+** (Trefethen, "Approximation Theory and Approximation Practice", Thm
+** 19.3, whose rule has n + 1 points): |E| <= (64/15) h M rho^-2n / (1 -
+** rho^-2), h = (b - a)/2, for a speed analytic in the Bernstein ellipse
+** E_rho of [a, b] and bounded by M there.  E_rho lies in the disc |z - m| <= r (m the middle) when its
+** semi-major axis h (rho + 1/rho)/2 is r.  The speed is 2 sqrt(Q)/D^2
+** (over w when w > 1, as speed_at), Q = N.N with N(t) = w a + (k - 2 w a) t
+** + (w (a + c) - k) t^2 and D = 1 + 2 (w - 1) t (1 - t); from their Taylor
+** coefficients at m, r is taken where sum_k>=1 |Q_k| r^k <= |Q_0| / 2 and
+** sum_k>=1 |D_k| r^k <= |D_0| / 2 (each term at most its share): in the
+** disc Q and D stay within half of their values at m, so neither
+** vanishes (sqrt(Q) analytic, the disc simply connected) and M <= 2
+** sqrt(3/2 Q_0) / (D_0/2)^2.  HUGE_VAL where r <= h (no ellipse) or the
+** speed is 0 at m.  Plus the rounding of the nodes (below).  Conics
+** only (ctx: segment.c's seg_ctx). */
+static double conic_rule_error(const void *ctx, double a, double b, int n) {
+  const seg_ctx *c = (const seg_ctx *)ctx;
+  double m = (a + b) / 2, h = fabs(b - a) / 2, w = c->w, v = w > 1 ? 1 / w : 1;
+  double q[5] = {0, 0, 0, 0, 0}, dd[3], r = HUGE_VAL, x, rho, M;
+  int i, k;
+  if (h == 0) return 0;
+  for (i = 0; i < c->dim; i++) {
+    /* N's Taylor coefficients at m (divided by w when w > 1) from its
+    ** Bernstein form, as speed_at: the monomial coefficients cancel near
+    ** t = 1 (their sum is c, beside a and k/w) */
+    double wa = w * v * c->a[i], wc = w * v * c->c[i], k = v * c->k[i];
+    double sm = 1 - m;
+    double N0 = sm * sm * wa + m * sm * k + m * m * wc;
+    double N1 = -2 * sm * wa + (sm - m) * k + 2 * m * wc, N2 = wa + wc - k;
+    q[0] += N0 * N0; q[1] += 2 * N0 * N1; q[2] += N1 * N1 + 2 * N0 * N2;
+    q[3] += 2 * N1 * N2; q[4] += N2 * N2;
   }
-  c.kind = kind; c.dim = dim; c.seg = seg;
+  /* D (over w when w > 1) at m: d0 + d1 z + d2 z^2 */
+  x = 2 * (w - 1) * v;
+  dd[0] = v + x * m * (1 - m); dd[1] = x * (1 - 2 * m); dd[2] = -x;
+  /* squares out of the normal range (tiny or huge legs, w near 0 or
+  ** DBL_MAX) leave Q's coefficients without their digits: no bound */
+  if (!(q[0] > 0x1p-900 && q[0] < 0x1p900) || !(dd[0] > 0x1p-400)) return HUGE_VAL;
+  /* four terms, each <= Q_0 / 8; two, each <= D_0 / 4 (roots, not pow:
+  ** this runs for every step of a walk) */
+  if (q[1] != 0) r = fmin(r, q[0] / (8 * fabs(q[1])));
+  if (q[2] != 0) r = fmin(r, sqrt(q[0] / (8 * fabs(q[2]))));
+  if (q[3] != 0) r = fmin(r, cbrt(q[0] / (8 * fabs(q[3]))));
+  if (q[4] != 0) r = fmin(r, sqrt(sqrt(q[0] / (8 * fabs(q[4])))));
+  if (dd[1] != 0) r = fmin(r, dd[0] / (4 * fabs(dd[1])));
+  if (dd[2] != 0) r = fmin(r, sqrt(dd[0] / (4 * fabs(dd[2]))));
+  if (!(r > h * 1.0001)) return HUGE_VAL;
+  if (r > 1e6 * h) r = 1e6 * h;     /* rho^-2n is 0 long before */
+  x = r / h;
+  rho = x + sqrt((x - 1) * (x + 1));
+  M = 2 * sqrt(1.5 * q[0]) / (dd[0] * dd[0] / 4) / (w > 1 ? w : 1);
+  /* besides the truncation, the nodes' rounding: each m +- h x_i is off
+  ** by up to eps (|m| + h), where the speed's slope is at most M / (r -
+  ** h) (Cauchy's estimate in the disc); the weights sum to 2 (w = 468
+  ** near t = 1: 5e-14 relative of a 10-node rule over 1.8e-4, the
+  ** truncation 1e-19) */
+  for (x = 1, k = 0; k < n; k++) x /= rho * rho;    /* rho^-2n */
+  return 64.0 / 15 * h * M * x / ((1 - 1 / rho) * (1 + 1 / rho))
+         + 2 * h * M / (r - h) * DBL_EPSILON * (fabs(m) + h);
+}
+
+/* The first t tried for the length fraction u: the conic's parameter
+** angle.  The rational quadratic (P0, P1, P2; w = cos al) traces a circle
+** of half-angle al as tan(phi/2) = (2t - 1) tan(al/2), phi in [-al, al]
+** (the tangent half-angle form), so for a circle the length fraction u
+** gives phi = al (2u - 1) and t exactly; an ellipse is an affine image of
+** such a circle and a hyperbola (w = cosh be) its tanh analogue, where the
+** same angle is a fair guess.  Quadratics (and w near 1): u itself. */
+static double first_guess(int kind, int dim, const double *seg, double u) {
+  double w, v = 2 * u - 1;
+  if (kind != ARCLEN_SEG_CONIC) return u;
+  w = seg[3 * dim];
+  if (w < 1 - 0x1p-20) {
+    double al = acos(w);
+    return 0.5 + 0.5 * tan(al * v / 2) / tan(al / 2);
+  }
+  if (w > 1 + 0x1p-20 && w < 1e300) {
+    double be = acosh(w);
+    return 0.5 + 0.5 * tanh(be * v / 2) / tanh(be / 2);
+  }
+  return u;
+}
+
+/* invert.c's context for a segment that is not a line or a cubic: seg,
+** or its copy scaled by 2^-e into `scaled` where its points lie far from 1
+** (subnormal lengths come in steps of 2^-1074; exact but for parts below
+** 2^-1022 of the largest), and its legs.  Returns e. */
+static int setup_ctx(int kind, int dim, const double *seg, double *scaled,
+                     seg_ctx *c) {
+  double mx = 0;
+  int i, e = 0, n = arclen_segment_count(kind, dim) - (kind == ARCLEN_SEG_CONIC);
+  c->kind = kind; c->dim = dim; c->seg = seg;
   for (i = 0; i < n; i++) mx = fmax(mx, fabs(seg[i]));
   if (mx > 0 && (mx < 0x1p-500 || mx > 0x1p500)) {
-    /* far from 1 (subnormal lengths come in steps of 2^-1074): the same
-    ** curve scaled by a power of two, exactly but for parts below 2^-1022
-    ** of the largest */
-    int e;
     frexp(mx, &e);
     for (i = 0; i < n; i++) scaled[i] = ldexp(seg[i], -e);
     if (kind == ARCLEN_SEG_CONIC) scaled[n] = seg[n];
-    c.seg = scaled;
+    c->seg = scaled;
+  }
+  for (i = 0; i < dim; i++) {
+    c->a[i] = c->seg[dim + i] - c->seg[i];
+    c->c[i] = c->seg[2 * dim + i] - c->seg[dim + i];
+    c->k[i] = c->seg[2 * dim + i] - c->seg[i];
+  }
+  c->w = kind == ARCLEN_SEG_CONIC ? c->seg[3 * dim] : 1;
+  return e;
+}
+
+/* The time at s on the segment of c (scaled by 2^-e) whose length is
+** total, from the known point from = (t, len(0, t), its error bound) at
+** or before it ({0, 0, 0}: afresh), which becomes the answer's.  A line
+** is t = s / L. */
+static int ctx_time(int kind, const seg_ctx *c, int e, double total,
+                    double s, double rtol, double from[3], double *t,
+                    long *evals) {
+  double guess, at[3];
+  int rc;
+  if (kind == ARCLEN_SEG_LINE) {     /* t uniform: s(t) = t L */
+    *t = !(s > 0) ? 0 : !(s < total) ? 1 : s / total;
+    from[0] = *t; from[1] = *t * total; from[2] = 0;
+    if (evals) *evals = 0;
+    return ARCLEN_OK;
+  }
+  at[0] = from[0]; at[1] = from[1]; at[2] = from[2];
+  if (e != 0) {
     total = ldexp(total, -e);
     s = ldexp(s, -e);
+    at[1] = ldexp(at[1], -e); at[2] = ldexp(at[2], -e);
   }
-  return arclen_seg_invert(len_to, speed_at, &c, total, s, rtol * total, t,
-                           evals);
+  if (at[0] == 0) {
+    guess = first_guess(kind, c->dim, c->seg, s / total);
+  } else {                           /* Newton's step from the last answer */
+    double d = speed_at(c, at[0]);
+    guess = d > 0 ? at[0] + (s - at[1]) / d : -1;
+  }
+  /* the model pays where an exact length costs Carlson's integrals (a
+  ** conic, ~600 ns), not beside a quadratic's closed form (~50 ns) */
+  rc = arclen_seg_invert(len_to, speed_at,
+                         kind == ARCLEN_SEG_CONIC ? conic_rule_error : NULL,
+                         c, total, s, rtol * total, guess,
+                         kind == ARCLEN_SEG_CONIC ? 10 : 0, at, t, evals);
+  from[0] = at[0]; from[1] = e ? ldexp(at[1], e) : at[1];
+  from[2] = e ? ldexp(at[2], e) : at[2];
+  return rc;
+}
+
+/* The times of the ascending s[0 .. n-1] on a segment that is not a cubic,
+** whose length is total, in one sweep: each search starts where the last
+** one ended (its time and exact length). */
+static int plain_times(int kind, int dim, const double *seg, double total,
+                       const double *s, long n, double rtol, double *t,
+                       long *evals) {
+  seg_ctx c;
+  double scaled[ARCLEN_SEG_MAXN], from[3] = {0, 0, 0};
+  long i, ev;
+  int e = kind == ARCLEN_SEG_LINE ? 0 : setup_ctx(kind, dim, seg, scaled, &c);
+  if (evals) *evals = 0;
+  for (i = 0; i < n; i++) {
+    int rc = ctx_time(kind, &c, e, total, s[i], rtol, from, t + i, &ev);
+    if (rc != ARCLEN_OK) return rc;
+    if (evals) *evals += ev;
+  }
+  return ARCLEN_OK;
 }
 
 int arclen_segment_time(int kind, int dim, const double *seg, double s,
@@ -184,7 +356,7 @@ int arclen_segment_time(int kind, int dim, const double *seg, double s,
   if (o->t0 != 0 || o->t1 != 1) return ARCLEN_ERANGE;
   rc = plain_length(kind, dim, seg, 0, 1, &total, info);
   if (rc == ARCLEN_OK)
-    rc = plain_time(kind, dim, seg, total, s, o->rtol, t, &evals);
+    rc = plain_times(kind, dim, seg, total, &s, 1, o->rtol, t, &evals);
   if (info) info->pieces = evals;
   if (rc != ARCLEN_OK) *t = NAN;
   return rc;
@@ -193,7 +365,13 @@ int arclen_segment_time(int kind, int dim, const double *seg, double s,
 int arclen_segment_times(int kind, int dim, const double *seg,
                          const double *s, long n, double rtol, double *t,
                          double *pts, double *tan) {
-  double total, prev = -HUGE_VAL;
+  return arclen_segment_times_of(kind, dim, seg, NAN, s, n, rtol, t, pts, tan);
+}
+
+int arclen_segment_times_of(int kind, int dim, const double *seg,
+                            double len, const double *s, long n, double rtol,
+                            double *t, double *pts, double *tan) {
+  double prev = -HUGE_VAL;
   long i;
   int rc = arclen_segment_check(kind, dim, seg);
   if (rc != ARCLEN_OK) return rc;
@@ -209,13 +387,17 @@ int arclen_segment_times(int kind, int dim, const double *seg,
     if (s[i] < prev) return ARCLEN_EDOMAIN;
     prev = s[i];
   }
-  rc = plain_length(kind, dim, seg, 0, 1, &total, NULL);
+  if (n == 0) return ARCLEN_OK;
+  /* the caller's length where it has one (a path's), else measured: the
+  ** searches use it for their scale and first guesses, and certify with
+  ** exact lengths of their own */
+  if (!(len > 0 && isfinite(len))) {
+    rc = plain_length(kind, dim, seg, 0, 1, &len, NULL);
+    if (rc != ARCLEN_OK) return rc;
+  }
+  rc = plain_times(kind, dim, seg, len, s, n, rtol, t, NULL);
   if (rc != ARCLEN_OK) return rc;
   for (i = 0; i < n; i++) {
-    rc = plain_time(kind, dim, seg, total, s[i], rtol, t + i, NULL);
-    if (rc != ARCLEN_OK) return rc;
-    /* each found on its own: keep them ascending as s is */
-    if (i > 0 && t[i] < t[i - 1]) t[i] = t[i - 1];
     if (pts) arclen_segment_point(kind, dim, seg, t[i], pts + dim * i);
     if (tan) arclen_segment_unit_tangent(kind, dim, seg, t[i], tan + dim * i);
   }

@@ -37,14 +37,26 @@ void arclen_rquad_sub(const double *p, int dim, double t0, double t1,
                       double *out);
 
 /* invert.c: the t in [0, 1] with |len(0, t) - s| <= tol, for len(0, t)
-** increasing with derivative speed(t) >= 0: Newton's method kept inside
-** a shrinking bracket, bisection when a step leaves it (capped).  total
-** is len(0, 1).  Returns 0 or the length function's error code; *evals
-** (may be NULL) counts length evaluations. */
+** increasing with derivative speed(t) >= 0: Newton's method on a
+** Gauss-Legendre model of the length, certified by an exact length or
+** by the model's own error bound (bound: the n-point rule's error over
+** [a, b], HUGE_VAL where it has none; NULL: exact lengths only), kept
+** inside a shrinking bracket, bisection when a step leaves it (capped).
+** total is len(0, 1) as the caller has it; guess the first t tried
+** (outside the bracket: by the length fraction); nodes the model's first
+** rule (0: no model, each Newton step on an exact length, for lengths as
+** cheap as the model).  from: a known point (t, len(0, t), the bound of
+** that length's error) at or before the answer ({0, 0, 0} to start
+** afresh), which a sweep over ascending distances passes on: it comes
+** back as the answer's.  Returns 0 or the length function's error code;
+** *evals (may be NULL) counts length evaluations. */
 typedef int (*arclen_seg_lenfn)(const void *ctx, double t, double *len);
 typedef double (*arclen_seg_speedfn)(const void *ctx, double t);
+typedef double (*arclen_seg_boundfn)(const void *ctx, double a, double b,
+                                     int n);
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
-                      const void *ctx, double total, double s, double tol,
-                      double *t, long *evals);
+                      arclen_seg_boundfn bound, const void *ctx, double total,
+                      double s, double tol, double guess, int nodes,
+                      double from[3], double *t, long *evals);
 
 #endif
