@@ -540,14 +540,35 @@ function M.fallback_direction(kind, c, d, t)
   return v
 end
 
+-- A conic far from 1 in size, scaled by a power of two (exact: the
+-- lengths scale with it) so that the squares of its speed neither
+-- underflow nor overflow; returns the conic to measure and the factor
+-- its lengths carry.  Ordinary sizes are left as they are.
+local function conic_scaled(c, d)
+  local m = 0
+  for j = 1, 3 * d do
+    local v = abs(c[j])
+    if v > m then m = v end
+  end
+  if m == 0 or (m > 2 ^ -200 and m < 2 ^ 200) then return c, 1 end
+  local f = 2 ^ -floor(log(m) / LN2)
+  local out = {}
+  for j = 1, 3 * d do out[j] = c[j] * f end
+  out[3 * d + 1] = c[3 * d + 1]
+  return out, f
+end
+
 -- The length; the second result counts the speed evaluations.
 function M.length(kind, c, d, rtol)
   if rtol > CONIC_RTOL then rtol = CONIC_RTOL end
   if kind == "line" then return line_length(c, d), 1 end
   if kind == "quad" then return quad_length(quad_setup(c, d), 0, 1), 1 end
+  local f
+  c, f = conic_scaled(c, d)
   local k = conic_setup(c, d)
-  if k.quad then return quad_length(k.quad, 0, 1), 1 end
-  return conic_length_th(k, -k.al, k.al, rtol)
+  if k.quad then return quad_length(k.quad, 0, 1) / f, 1 end
+  local v, e = conic_length_th(k, -k.al, k.al, rtol)
+  return v / f, e
 end
 
 -- The length from t0 to t1 (t0 < t1); the second result counts the
@@ -556,9 +577,12 @@ function M.length_range(kind, c, d, rtol, t0, t1)
   if rtol > CONIC_RTOL then rtol = CONIC_RTOL end
   if kind == "line" then return (t1 - t0) * line_length(c, d), 1 end
   if kind == "quad" then return quad_length(quad_setup(c, d), t0, t1), 1 end
+  local f
+  c, f = conic_scaled(c, d)
   local k = conic_setup(c, d)
-  if k.quad then return quad_length(k.quad, t0, t1), 1 end
-  return conic_length_th(k, th_of_t(k, t0), th_of_t(k, t1), rtol)
+  if k.quad then return quad_length(k.quad, t0, t1) / f, 1 end
+  local v, e = conic_length_th(k, th_of_t(k, t0), th_of_t(k, t1), rtol)
+  return v / f, e
 end
 
 -- The times of the ascending distances s[1..] (each in [0, L], L the
@@ -574,6 +598,15 @@ function M.times(kind, c, d, L, s, rtol)
     return ts, #s
   end
   local len, speed, lo0, hi0, to_t
+  if kind == "conic" then                 -- in the scaled conic's units
+    local f
+    c, f = conic_scaled(c, d)
+    if f ~= 1 then
+      local scaled = {}
+      for q = 1, #s do scaled[q] = s[q] * f end
+      s, L = scaled, L * f
+    end
+  end
   local goal_tol = 0.5 * rtol * L
   if kind == "quad" or (kind == "conic" and c[3 * d + 1] == 1) then
     local q = quad_setup(c, d)
