@@ -214,10 +214,16 @@ describe("documents as users have them #svgdoc", function()
           local kb = line:match("^VmHWM:%%s*(%%d+)")
           if kb then print(kb) end
         end]]):format(file)
-      local p = assert(io.popen(("LUA_PATH=%s LUA_CPATH=%s %s -e %s"):format(helpers.shquote(package.path),
-        helpers.shquote(package.cpath), helpers.interpreter(), helpers.shquote(script))))
+      -- a script file, not -e: texlua takes no -e
+      local name = os.tmpname()
+      local sf = assert(io.open(name, "w"))
+      sf:write(script)
+      sf:close()
+      local p = assert(io.popen(("LUA_PATH=%s LUA_CPATH=%s %s %s"):format(helpers.shquote(package.path),
+        helpers.shquote(package.cpath), helpers.interpreter(), helpers.shquote(name))))
       local kb = tonumber(p:read("*a"))
       p:close()
+      os.remove(name)
       assert.is_true(type(kb) == "number", "no VmHWM")
       return kb
     end

@@ -4,7 +4,7 @@
 -- --painted: none, alpha 0, opacities 0, stroke-width 0).  Each rule has a
 -- hand-written document, read in the three modes; the expected ids are
 -- what the specifications cited say a renderer draws.
-local svg = require("arclen.svg")
+local svg = require("helpers").optional("arclen.svg")   -- #svgdoc specs need it
 
 local HEAD = '<svg xmlns="http://www.w3.org/2000/svg" viewBox="0 0 100 100">'
 
@@ -31,7 +31,7 @@ local function line(id, attrs)
   return ('<path id="%s" d="M0 0 L10 0" %s/>'):format(id, attrs or "")
 end
 
-describe("conditional processing (SVG 2 section 5.8)", function()
+describe("conditional processing (SVG 2 section 5.8) #svgdoc", function()
   it("<switch> draws its first child element whose tests pass, nothing after it", function()
     local body = '<switch>' .. line("fr", 'systemLanguage="fr"') .. line("en-us", 'systemLanguage="en-US"')
       .. line("en", 'systemLanguage="en"') .. line("any") .. '</switch>'
@@ -119,7 +119,7 @@ describe("conditional processing (SVG 2 section 5.8)", function()
   end)
 end)
 
-describe("paint that shows (stroked, painted)", function()
+describe("paint that shows (stroked, painted) #svgdoc", function()
   -- every shape under a stroke; those whose stroke paints nothing say so
   local STROKES = '<g stroke="black" fill="none">'
     .. line("black") .. line("none", 'stroke="none"') .. line("transparent", 'stroke="transparent"')
@@ -283,7 +283,7 @@ end)
 -- The command line through a POSIX shell: not on Windows (tools/check-windows.sh).
 local describe_sh = package.config:sub(1, 1) == "/" and describe or function() end
 
-describe_sh("the command line: --painted, --stroked, --lang", function()
+describe_sh("the command line: --painted, --stroked, --lang #svgdoc", function()
   local helpers = require("helpers")
   local MAIN = os.tmpname()   -- arclen.cli from this Lua's search paths
   local f = assert(io.open(MAIN, "w"))

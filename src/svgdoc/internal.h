@@ -213,7 +213,7 @@ const char *svgdoc_prop_name(int k);
 ** value that is not one is warned of and inherited. */
 double svgdoc_font_size(svgdoc *D, unsigned long line, unsigned long col,
                         const char *s, double em, double rem);
-/* A warning at a place (reader.c). */
+/* A warning at a place, an error under o.strict (memory.c). */
 void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
                  const char *msg);
 

@@ -5,7 +5,8 @@
 ** svgdoc_release), so that a stream's memory does not grow with it.  A
 ** located error is a message, a place and a jump back to the expat
 ** callback that started the work (svgdoc_fail; never across expat's own
-** frames).
+** frames).  Warnings are kept here too (svgdoc_warn), for every file of
+** the area.
 */
 #include <stdarg.h>
 #include <stdio.h>
@@ -154,4 +155,23 @@ void svgdoc_free_pool(svgdoc *D) {
   free_blocks(D->tmp.blocks);
   free(D->spare);
   D->keep.blocks = D->tmp.blocks = D->spare = NULL;
+}
+
+/* A warning, its message copied into the document's own pool (msg may
+** be in the open element's); under o.strict, an error. */
+void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
+                 const char *msg) {
+  svgdoc_warning *w;
+  svgdoc_arena *was = D->arena;
+  if (D->o.strict) svgdoc_fail(D, line, col, "%s", msg);
+  if (D->nwarnings >= SVGDOC_MAX_WARNINGS) return;
+  if (D->warnings == NULL) {
+    D->warnings = malloc(SVGDOC_MAX_WARNINGS * sizeof *D->warnings);
+    if (D->warnings == NULL) svgdoc_nomem(D);
+  }
+  D->arena = &D->keep;
+  msg = svgdoc_strdup(D, msg, strlen(msg));
+  D->arena = was;
+  w = &D->warnings[D->nwarnings++];
+  w->line = line, w->col = col, w->msg = msg;
 }

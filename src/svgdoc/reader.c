@@ -111,29 +111,6 @@ static void *grow(svgdoc *D, void *a, size_t *room, size_t used,
   return a;
 }
 
-/* A warning, its message copied into the document's own pool (msg may
-** be in the open element's); under o.strict, an error. */
-static void warn(svgdoc *D, unsigned long line, unsigned long col,
-                 const char *msg) {
-  svgdoc_warning *w;
-  svgdoc_arena *was = D->arena;
-  if (D->o.strict) svgdoc_fail(D, line, col, "%s", msg);
-  if (D->nwarnings >= SVGDOC_MAX_WARNINGS) return;
-  if (D->warnings == NULL) {
-    D->warnings = malloc(SVGDOC_MAX_WARNINGS * sizeof *D->warnings);
-    if (D->warnings == NULL) svgdoc_nomem(D);
-  }
-  D->arena = &D->keep;
-  msg = svgdoc_strdup(D, msg, strlen(msg));
-  D->arena = was;
-  w = &D->warnings[D->nwarnings++];
-  w->line = line, w->col = col, w->msg = msg;
-}
-
-void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
-                 const char *msg) {
-  warn(D, line, col, msg);
-}
 
 /* An error a renderer passes over (a missing reference, bad path data):
 ** a warning "what; consequence" and the reading goes on, or under
@@ -141,7 +118,7 @@ void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
 static void lenient(svgdoc *D, unsigned long line, unsigned long col,
                     const char *what, const char *consequence) {
   if (D->o.strict) svgdoc_fail(D, line, col, "%s", what);
-  warn(D, line, col, svgdoc_format(D, "%s; %s", what, consequence));
+  svgdoc_warn(D, line, col, svgdoc_format(D, "%s; %s", what, consequence));
 }
 
 /* ---- ids of kept elements, ids referred to ------------------------------ */
@@ -582,7 +559,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
     for (k = 0; k < 6; k++)
       if (!isfinite(C[k])) svgdoc_fail(D, line, col, "the transforms overflow");
     if (singular(C)) {                 /* SVG 2 section 8.5: not drawn */
-      warn(D, line, col, svgdoc_format(D, "<%s>: singular transform, not drawn", tag));
+      svgdoc_warn(D, line, col, svgdoc_format(D, "<%s>: singular transform, not drawn", tag));
       f->skip = 1;
       return;
     }
@@ -619,9 +596,9 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
     s = href;
     while (s && svgdoc_space((unsigned char)*s)) s++;
     if (href == NULL) {
-      warn(D, line, col, "<use> without href, nothing drawn");
+      svgdoc_warn(D, line, col, "<use> without href, nothing drawn");
     } else if (*s != '#') {
-      warn(D, line, col, svgdoc_format(D, "<use href='%s'>: only same-document "
+      svgdoc_warn(D, line, col, svgdoc_format(D, "<use href='%s'>: only same-document "
            "references (#id) are read, nothing drawn", href));
     } else {
       svgdoc_use *u = svgdoc_alloc(D, sizeof *u);
@@ -881,11 +858,11 @@ static void open_root(svgdoc *D, const char **atts, unsigned long line,
   if (has_vb) memcpy(D->info.viewbox, vb, sizeof vb);
   f->skip = 1;
   if (has_vb && (vb[2] == 0 || vb[3] == 0)) {
-    warn(D, line, col, "viewBox of zero width or height: nothing drawn");
+    svgdoc_warn(D, line, col, "viewBox of zero width or height: nothing drawn");
     return;
   }
   if ((hw && w == 0) || (hh && h == 0)) {
-    warn(D, line, col, "width or height zero: nothing drawn");
+    svgdoc_warn(D, line, col, "width or height zero: nothing drawn");
     return;
   }
   f->visible = 1, f->layer = "(root)", f->top = 1;
