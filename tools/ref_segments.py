@@ -177,6 +177,9 @@ def cases():
     c.append(("conic ellipse w=0.5", "conic", 2, [1.0, 0.0, 1.0, 1.0, 0.0, 1.0, 0.5]))
     c.append(("conic ellipse w=0.01", "conic", 2, [0.0, 0.0, 3.0, 2.0, 5.0, -1.0, 0.01]))
     c.append(("conic parabola", "conic", 2, [0.0, 0.0, 1.0, 2.0, 3.0, 0.0, 1.0]))
+    # just above the parabola: acosh w ~ 1.3e-6, the hyperbolic form's
+    # angle tiny (its t -> angle map must not cancel)
+    c.append(("conic near-parabolic w=1+2^-40", "conic", 2, [0.0, 0.0, 5.0, 9.0, 10.0, 0.0, 1.0 + 2.0 ** -40]))
     c.append(("conic hyperbola w=2", "conic", 2, [0.0, 0.0, 1.0, 1.0, 2.0, 0.0, 2.0]))
     c.append(("conic hyperbola w=100", "conic", 2, [0.0, 0.0, 1.0, 1.0, 3.0, 0.5, 100.0]))
     # nearly parallel legs with |a| ~ E^2 |c| (E = w + sqrt(w^2 - 1)): a thin

@@ -353,8 +353,14 @@ local function th_of_t(k, t)
   if t == 0 then return -k.al end
   if t == 1 then return k.al end
   if k.hyp then
+    -- the ratio minus one, 2 T (2t - 1) / (o + 2 (1 - t) T), through
+    -- log1p when small: log of a ratio near 1 keeps only eps absolute,
+    -- all of th's digits when al = acosh w is tiny (w just above 1)
     local T, o = k.th, k.omt
-    return log((o + 2 * t * T) / (o + 2 * (1 - t) * T))
+    local den = o + 2 * (1 - t) * T
+    local x = 2 * T * (2 * t - 1) / den
+    if abs(x) < 0.5 then return log1p(x) end
+    return log((o + 2 * t * T) / den)
   end
   return 2 * atan((2 * t - 1) * k.th)
 end
