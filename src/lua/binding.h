@@ -59,6 +59,10 @@ void arclenL_packedsegment(lua_State *L, int arg, const char *packed,
 void arclenL_pushinfo(lua_State *L, const arclen_info *info);
 /* Raise a Lua error for a C error code, naming the function's argument. */
 int arclenL_argcode(lua_State *L, int arg, int code);
+/* A method's result v (code ARCLEN_OK) as a number and, with lo->info,
+** the info table; EOVERFLOW as nil, message; other codes as errors. */
+int arclenL_pushresult(lua_State *L, int code, double v, int arg,
+                       const arclenL_opts *lo, const arclen_info *info);
 
 /* Push path data's cubics as {packed =, n =, [j] = {x =, y =, closed =, n
 ** =}} (lua/subpaths.c; arclen.core and arclen.svgdoc share it), and

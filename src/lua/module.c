@@ -239,8 +239,9 @@ static int check_curve_args(lua_State *L, int extra, double *c, int *next) {
 }
 
 /* The result of a method call: a number (and the info table on request),
-** or nil and a message for failures MetaPost itself would report. */
-static int push_result(lua_State *L, int code, double v, int arg,
+** or nil and a message for failures MetaPost itself would report (also
+** arclen.segment_length's and segment_time's, segment.c). */
+int arclenL_pushresult(lua_State *L, int code, double v, int arg,
                        const arclenL_opts *lo, const arclen_info *info) {
   if (code == ARCLEN_EOVERFLOW) {
     lua_pushnil(L);
@@ -265,7 +266,7 @@ static int l_length(lua_State *L) {
   int next, dim = check_curve_args(L, 0, c, &next), code;
   arclenL_checkopts(L, next, &lo);
   code = lo.method->length(c, dim, &lo.o, &len, lo.info ? &info : NULL);
-  return push_result(L, code, len, next, &lo, &info);
+  return arclenL_pushresult(L, code, len, next, &lo, &info);
 }
 
 /* arclen.time(c, s [, opts]): the parameter t with s(t) = s; 0 for s <= 0,
@@ -285,7 +286,7 @@ static int l_time(lua_State *L) {
     return luaL_argerror(L, next + 1, lua_pushfstring(L,
         "method '%s' has no time (inverse)", lo.method->name));
   code = lo.method->time(c, dim, s, &lo.o, &t, lo.info ? &info : NULL);
-  return push_result(L, code, t, next + 1, &lo, &info);
+  return arclenL_pushresult(L, code, t, next + 1, &lo, &info);
 }
 
 static double check_t(lua_State *L, int arg) {

@@ -101,24 +101,6 @@ void arclenL_packedsegment(lua_State *L, int arg, const char *packed,
   }
 }
 
-/* A result or the error of a code (as arclen.length's). */
-static int push_result(lua_State *L, int code, double v, int arg,
-                       const arclenL_opts *lo, const arclen_info *info) {
-  if (code == ARCLEN_EOVERFLOW) {
-    lua_pushnil(L);
-    lua_pushstring(L, arclen_strerror(code));
-    return 2;
-  }
-  if (code == ARCLEN_EDIM)
-    return luaL_argerror(L, arg, lua_pushfstring(L,
-        "method '%s' does not support this dimension", lo->method->name));
-  if (code != ARCLEN_OK) return arclenL_argcode(L, arg, code);
-  lua_pushnumber(L, v);
-  if (!lo->info) return 1;
-  arclenL_pushinfo(L, info);
-  return 2;
-}
-
 /* arclen.segment_length(kind, seg [, opts]) */
 static int l_segment_length(lua_State *L) {
   double seg[ARCLEN_SEG_MAXN], len;
@@ -129,7 +111,7 @@ static int l_segment_length(lua_State *L) {
   arclenL_checkopts(L, 3, &lo);
   code = arclen_segment_length(kind, dim, seg, lo.method, &lo.o, &len,
                                lo.info ? &info : NULL);
-  return push_result(L, code, len, 3, &lo, &info);
+  return arclenL_pushresult(L, code, len, 3, &lo, &info);
 }
 
 /* arclen.segment_time(kind, seg, s [, opts]): s clamped to [0, L] */
@@ -150,7 +132,7 @@ static int l_segment_time(lua_State *L) {
         "method '%s' has no time (inverse)", lo.method->name));
   code = arclen_segment_time(kind, dim, seg, s, lo.method, &lo.o, &t,
                              lo.info ? &info : NULL);
-  return push_result(L, code, t, 4, &lo, &info);
+  return arclenL_pushresult(L, code, t, 4, &lo, &info);
 }
 
 static double check_t(lua_State *L, int arg, const char *what) {
