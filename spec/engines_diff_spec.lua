@@ -15,19 +15,7 @@ local H = require("helpers")
 local pure = require("arclen.pure")
 local has_core, core = pcall(require, "arclen.core")
 
--- arclen.path loaded afresh on the given engine (svgpath too, which takes
--- the engine's reader), leaving the loaded modules as they were.
-local function path_on(engine)
-  local names = {"arclen.engine", "arclen.path", "arclen.svgpath"}
-  local saved = {}
-  for _, n in ipairs(names) do saved[n] = package.loaded[n] end
-  package.loaded["arclen.engine"] = engine
-  package.loaded["arclen.path"], package.loaded["arclen.svgpath"] = nil, nil
-  local ok, mod = pcall(require, "arclen.path")
-  for _, n in ipairs(names) do package.loaded[n] = saved[n] end
-  assert(ok, mod)
-  return mod
-end
+local path_on = require("helpers").path_on
 
 -- A random cubic from p0 of one of the kinds above, scaled by 10^k.
 local function random_cubic(r, x0, y0)

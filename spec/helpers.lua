@@ -167,4 +167,18 @@ end
 -- s quoted for a POSIX shell.
 function helpers.shquote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end
 
+-- arclen.path loaded afresh on the given engine (svgpath too, which takes
+-- the engine's reader), leaving the loaded modules as they were.
+function helpers.path_on(engine)
+  local names = {"arclen.engine", "arclen.path", "arclen.svgpath"}
+  local saved = {}
+  for _, n in ipairs(names) do saved[n] = package.loaded[n] end
+  package.loaded["arclen.engine"] = engine
+  package.loaded["arclen.path"], package.loaded["arclen.svgpath"] = nil, nil
+  local ok, mod = pcall(require, "arclen.path")
+  for _, n in ipairs(names) do package.loaded[n] = saved[n] end
+  assert(ok, mod)
+  return mod
+end
+
 return helpers

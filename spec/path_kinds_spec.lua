@@ -518,19 +518,7 @@ if has_core and type(core) == "table" and core.segment_length then
       if kind == "conic" then c[#c + 1] = 10 ^ (6 * r() - 3) end   -- w in [1e-3, 1e3]
       return c
     end
-    -- arclen.path loaded afresh on the given engine, leaving the loaded
-    -- modules as they were (as engines_diff_spec.lua does)
-    local function path_on(engine)
-      local names = {"arclen.engine", "arclen.path", "arclen.svgpath"}
-      local saved = {}
-      for _, n in ipairs(names) do saved[n] = package.loaded[n] end
-      package.loaded["arclen.engine"] = engine
-      package.loaded["arclen.path"], package.loaded["arclen.svgpath"] = nil, nil
-      local ok, mod = pcall(require, "arclen.path")
-      for _, n in ipairs(names) do package.loaded[n] = saved[n] end
-      assert(ok, mod)
-      return mod
-    end
+    local path_on = require("helpers").path_on
     local path_c, path_lua = path_on(core), path_on(pure)
     -- a random 2D path: lines, quadratics, conics (w in [0.01, 100]) and
     -- cubics, each from the last end; 3D: no cubics (the Lua engine's)
