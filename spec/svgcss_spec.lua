@@ -241,6 +241,21 @@ describe("arclen.svg: em, ex and rem from font-size #svgdoc", function()
   it("an invalid font-size is warned of and the parent's is used", function()
     local d = doc('<g font-size="20"><line x2="1em" style="font-size:huge"/></g>')
     assert.are.equal(20, d.total)
-    assert.is_true(warned(d, "font-size 'huge' is not a size"))
+    assert.is_true(warned(d, "font-size 'huge' is not a valid value: ignored"))
+  end)
+  it("an invalid declaration is dropped: the next origin of the cascade applies", function()
+    -- CSS Syntax 3 section 5 and SVG 2 section 6.6: an invalid style or sheet value
+    -- does not hide the presentation attribute or a weaker sheet rule
+    local d = doc('<style>.a{stroke:blue} .b{stroke:nonsense} .c{stroke-width:-2 !important}</style>'
+      .. '<line id="attr" x2="1" stroke="red" style="stroke: nonsense"/>'
+      .. '<line id="sheet" x2="2" class="a" style="stroke: #12"/>'
+      .. '<line id="weaker" x2="4" class="a b"/>'
+      .. '<line id="none" x2="8" stroke="none" style="stroke: bogus"/>'
+      .. '<line id="width" x2="16" stroke="red" class="c" stroke-width="0"/>'
+      .. '<line id="size" x2="1em" stroke="red" font-size="5" style="font-size: huge"/>', {stroked = true})
+    assert.are.equal("attr sheet weaker size", ids(d))
+    assert.are.equal(1 + 2 + 4 + 5, d.total)
+    assert.is_true(warned(d, "stroke 'nonsense' is not a valid value: ignored"))
+    assert.is_true(warned(d, "stroke-width '-2' is not a valid value: ignored"))
   end)
 end)

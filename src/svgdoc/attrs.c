@@ -13,6 +13,7 @@
 #include "svg/decimal.h"
 #include "svgdoc/css.h"
 #include "svgdoc/internal.h"
+#include "svgdoc/paint.h"
 
 #define FONT_SIZE 16.0   /* the initial font-size (CSS "medium") */
 
@@ -459,24 +460,59 @@ static int style_value(const char *s, const char *name, int important,
   return found;
 }
 
-void svgdoc_properties(svgdoc *D, const char **atts,
-                       const struct svgdoc_css_match *sheet, const char *out[]) {
+static int font_size_of(const char *s, double em, double rem, double *px);
+
+/* The reader reads only some keywords of display (none) and visibility,
+** but an unknown word is still a valid display (CSS Display 3 has many);
+** a number is not. */
+int svgdoc_prop_valid(int k, const char *s) {
+  double em;
+  if (strcmp(s, "inherit") == 0 || strcmp(s, "initial") == 0 ||
+      strcmp(s, "unset") == 0)
+    return 1;
+  if (k == SVGDOC_DISPLAY) {
+    for (; *s; s++)
+      if (!is_letter((unsigned char)*s) && *s != '-' && !space((unsigned char)*s))
+        return 0;
+    return 1;
+  }
+  if (k == SVGDOC_VISIBILITY)
+    return strcmp(s, "visible") == 0 || strcmp(s, "hidden") == 0 ||
+           strcmp(s, "collapse") == 0;
+  if (k == SVGDOC_FONT_SIZE) return font_size_of(s, 16, 16, &em);
+  return svgdoc_paint_valid(k, s);
+}
+
+void svgdoc_properties(svgdoc *D, unsigned long line, unsigned long col,
+                       const char **atts, const struct svgdoc_css_match *sheet,
+                       const char *out[]) {
   const char *style = svgdoc_attr(atts, "style");
-  int k;
+  int k, origin;
   for (k = 0; k < SVGDOC_NPROPS; k++) {
-    const char *v = NULL;
-    size_t vn = 0;
-    /* from the strongest down (SVG 2 section 6.3; Cascade 4 section 6) */
-    if (style && style_value(style, PROPS[k], 1, &v, &vn)) {
-    } else if (sheet && (v = sheet->important[k]) != NULL) {
-      vn = strlen(v);
-    } else if (style && style_value(style, PROPS[k], 0, &v, &vn)) {
-    } else if (sheet && (v = sheet->normal[k]) != NULL) {
-      vn = strlen(v);
-    } else if ((v = svgdoc_attr(atts, PROPS[k])) != NULL) {
-      vn = strlen(v);
+    out[k] = NULL;
+    /* from the strongest down (SVG 2 section 6.3; Cascade 4 section 6); an
+    ** invalid value is dropped and the next origin's applies (CSS Syntax 3
+    ** section 5: an invalid declaration is ignored; SVG 2 section 6.6 for a
+    ** presentation attribute) */
+    for (origin = 0; origin < 5 && out[k] == NULL; origin++) {
+      const char *v = NULL, *n;
+      size_t vn = 0;
+      if (origin == 0 && style && style_value(style, PROPS[k], 1, &v, &vn)) {
+      } else if (origin == 1 && sheet && (v = sheet->important[k]) != NULL) {
+        vn = strlen(v);
+      } else if (origin == 2 && style && style_value(style, PROPS[k], 0, &v, &vn)) {
+      } else if (origin == 3 && sheet && (v = sheet->normal[k]) != NULL) {
+        vn = strlen(v);
+      } else if (origin == 4 && (v = svgdoc_attr(atts, PROPS[k])) != NULL) {
+        vn = strlen(v);
+      }
+      if (v == NULL) continue;
+      n = normalised(D, &D->props[k], v, vn);
+      if (svgdoc_prop_valid(k, n)) out[k] = n;
+      else
+        svgdoc_warn(D, line, col, svgdoc_format(D, "%s '%s' is not a valid "
+                                                "value: ignored", PROPS[k], n));
     }
-    out[k] = v ? normalised(D, &D->props[k], v, vn) : NULL;
   }
 }
 
@@ -488,31 +524,41 @@ static const struct { const char *name; double f; } SIZES[] = {
   {"medium", 1}, {"large", 6.0 / 5}, {"x-large", 3.0 / 2}, {"xx-large", 2},
   {"xxx-large", 3}};
 
-double svgdoc_font_size(svgdoc *D, unsigned long line, unsigned long col,
-                        const char *s, double em, double rem) {
+/* The font-size (px) of value s, not a CSS-wide keyword, under a parent of
+** font-size em and a root of rem: 1 with *px, 0 when s is not a size. */
+static int font_size_of(const char *s, double em, double rem, double *px) {
   size_t n, e, u, i;
   int k;
   double v;
-  if (s == NULL || strcmp(s, "inherit") == 0) return em;
-  if (strcmp(s, "initial") == 0) return FONT_SIZE;
   for (k = 0; k < (int)(sizeof SIZES / sizeof SIZES[0]); k++)
-    if (strcmp(s, SIZES[k].name) == 0) return FONT_SIZE * SIZES[k].f;
+    if (strcmp(s, SIZES[k].name) == 0) return *px = FONT_SIZE * SIZES[k].f, 1;
   /* the relative sizes: a ratio of 1.2 (CSS 2 section 15.7) */
-  if (strcmp(s, "larger") == 0) return em * 1.2;
-  if (strcmp(s, "smaller") == 0) return em / 1.2;
+  if (strcmp(s, "larger") == 0) return *px = em * 1.2, 1;
+  if (strcmp(s, "smaller") == 0) return *px = em / 1.2, 1;
   n = strlen(s);
   e = arclen_decimal_scan(s, n, 0, &v);
-  if (e > 0 && v >= 0) {
-    for (u = e; u < n && is_letter((unsigned char)s[u]); u++) {}
-    if (u < n && s[u] == '%') u++;
-    for (i = u; i < n && space((unsigned char)s[i]); i++) {}
-    k = i == n ? unit_of(s + e, u - e) : -1;
-    if (k >= 0 && UNITS[k].px > 0) v = v * UNITS[k].px / UNITS[k].div;
-    else if (k >= 0 && UNITS[k].px == 0) v = v / 100 * em;   /* of the parent's */
-    else if (k >= 0) v = v * (UNITS[k].px == -1 ? em : rem) / UNITS[k].div;
-    if (k >= 0 && isfinite(v)) return v;
-  }
-  svgdoc_warn(D, line, col, svgdoc_format(D, "font-size '%s' is not a size: "
+  if (e == 0 || v < 0) return 0;
+  for (u = e; u < n && is_letter((unsigned char)s[u]); u++) {}
+  if (u < n && s[u] == '%') u++;
+  for (i = u; i < n && space((unsigned char)s[i]); i++) {}
+  k = i == n ? unit_of(s + e, u - e) : -1;
+  if (k >= 0 && UNITS[k].px > 0) v = v * UNITS[k].px / UNITS[k].div;
+  else if (k >= 0 && UNITS[k].px == 0) v = v / 100 * em;   /* of the parent's */
+  else if (k >= 0) v = v * (UNITS[k].px == -1 ? em : rem) / UNITS[k].div;
+  if (k < 0 || !isfinite(v)) return 0;
+  *px = v;
+  return 1;
+}
+
+double svgdoc_font_size(svgdoc *D, unsigned long line, unsigned long col,
+                        const char *s, double em, double rem) {
+  double px;
+  if (s == NULL || strcmp(s, "inherit") == 0 || strcmp(s, "unset") == 0)
+    return em;
+  if (strcmp(s, "initial") == 0) return FONT_SIZE;
+  if (font_size_of(s, em, rem, &px)) return px;
+  /* only an overflow gets here: the cascade dropped what is not a size */
+  svgdoc_warn(D, line, col, svgdoc_format(D, "font-size '%s' is too large: "
                                           "the parent's is used", s));
   return em;
 }

@@ -641,11 +641,19 @@ static size_t declarations(parser *p, size_t b, size_t e, size_t *first) {
       C->full_warned = 1;
       break;
     }
+    {                                  /* an invalid value is dropped */
+      size_t k;
+      for (k = 0; k < ve - vs; k++) p->out[k] = (char)lower((unsigned char)p->t[vs + k]);
+      p->out[ve - vs] = '\0';
+      if (!svgdoc_prop_valid(prop, p->out)) {
+        warn_at(p, svgdoc_format(p->D, "style sheet: %s '%s' is not a valid "
+                                 "value: ignored", name, p->out));
+        continue;
+      }
+    }
     C->decls = grow(p->D, C->decls, &C->decls_room, C->ndecls, sizeof *C->decls);
     C->decls[C->ndecls].prop = prop;
     C->decls[C->ndecls].important = important;
-    memcpy(p->out, p->t + vs, ve - vs);
-    p->out[ve - vs] = '\0';
     C->decls[C->ndecls].value = p->out;
     p->out += ve - vs + 1;
     C->ndecls++;

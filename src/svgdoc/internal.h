@@ -202,15 +202,21 @@ void svgdoc_viewbox_matrix(svgdoc *D, unsigned long line, unsigned long col,
 /* The reader's properties of an element, cascaded (SVG 2 section 6.3,
 ** CSS Cascade 4 section 6): style="" !important, the sheets' !important
 ** (sheet), style="", the sheets' normal ones, the presentation attribute;
-** out[k] NULL when none is given. */
-void svgdoc_properties(svgdoc *D, const char **atts,
-                       const struct svgdoc_css_match *sheet, const char *out[]);
+** the strongest valid one, an invalid one warned of (at line, col) and
+** passed over; out[k] NULL when none is given. */
+void svgdoc_properties(svgdoc *D, unsigned long line, unsigned long col,
+                       const char **atts, const struct svgdoc_css_match *sheet,
+                       const char *out[]);
+/* Is s (trimmed, lower-case) a valid value of property k?  CSS drops an
+** invalid declaration (CSS Syntax 3 section 5), the cascade passes it over. */
+int svgdoc_prop_valid(int k, const char *s);
 /* The index of property name in the reader's list, or -1; its name. */
 int svgdoc_prop_index(const char *name);
 const char *svgdoc_prop_name(int k);
 /* The computed font-size (px) of value s (NULL: inherited) under a parent
-** whose font-size is em, the root's rem (CSS Fonts 4 section 2.5); a
-** value that is not one is warned of and inherited. */
+** whose font-size is em, the root's rem (CSS Fonts 4 section 2.5); s
+** is valid (svgdoc_properties); one that overflows is warned of and
+** inherited. */
 double svgdoc_font_size(svgdoc *D, unsigned long line, unsigned long col,
                         const char *s, double em, double rem);
 /* A warning at a place, an error under o.strict (memory.c). */

@@ -224,6 +224,22 @@ static int width_value(const char *s, int *zero) {
   return 1;
 }
 
+int svgdoc_paint_valid(int k, const char *s) {
+  int zero;
+  switch (k) {
+    case SVGDOC_COLOR:
+      return strcmp(s, "currentcolor") == 0 || svgdoc_color(s, &zero);
+    case SVGDOC_FILL: case SVGDOC_STROKE:
+      return paint_value(s, SVGDOC_PAINT_SHOWN, SVGDOC_PAINT_SHOWN) >= 0;
+    case SVGDOC_FILL_OPACITY: case SVGDOC_STROKE_OPACITY: case SVGDOC_OPACITY:
+      return alpha_value(s, &zero);
+    case SVGDOC_STROKE_WIDTH:
+      return width_value(s, &zero);
+    default:
+      return 1;
+  }
+}
+
 void svgdoc_paint_initial(svgdoc_paint *p) {
   memset(p, 0, sizeof *p);
   p->fill = SVGDOC_PAINT_SHOWN;        /* black */

@@ -35,6 +35,12 @@ void svgdoc_paint_apply(svgdoc_paint *p, const char *const *P,
 int svgdoc_paint_stroked(const svgdoc_paint *p);
 int svgdoc_paint_filled(const svgdoc_paint *p, const char *tag);
 
+/* Is s (trimmed, lower-case, not a CSS-wide keyword) a valid value of
+** paint property k (SVGDOC_FILL ... SVGDOC_COLOR)?  An invalid one is
+** dropped by the cascade (CSS Syntax 3: an invalid declaration is
+** ignored), so that a weaker origin's value applies.  1 for others. */
+int svgdoc_paint_valid(int k, const char *s);
+
 /* A CSS colour (CSS Color 4: named, transparent, #rgb[a], #rrggbb[aa],
 ** rgb[a](), hsl[a](), hwb(), lab(), lch(), oklab(), oklch()), lower-case:
 ** 1 with *clear set when its alpha is 0; 0 when s is not a colour. */

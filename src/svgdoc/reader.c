@@ -489,7 +489,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
   if (!svgdoc_cond_pass(atts, D->lang)) return;
   if (parent->is_switch) parent->switch_done = 1;
   svgdoc_css_for(D, atts, sh == NULL, D->depth, line, col, &M);
-  svgdoc_properties(D, atts, &M, P);
+  svgdoc_properties(D, line, col, atts, &M, P);
   memcpy(f->ctm, parent->ctm, sizeof f->ctm);
   f->vp = parent->vp;
   f->vp.em = svgdoc_font_size(D, line, col, P[SVGDOC_FONT_SIZE], parent->vp.em,
@@ -824,7 +824,7 @@ static void open_root(svgdoc *D, const char **atts, unsigned long line,
   /* the root's font-size: its em, and rem everywhere (CSS Values 3 6.1.1;
   ** on the root, em and rem refer to the initial value) */
   svgdoc_css_for(D, atts, 1, 0, line, col, &M);
-  svgdoc_properties(D, atts, &M, P);
+  svgdoc_properties(D, line, col, atts, &M, P);
   none.em = none.rem = svgdoc_font_size(D, line, col, P[SVGDOC_FONT_SIZE],
                                         16, 16);
   if (ws && !strchr(ws, '%'))
