@@ -243,6 +243,15 @@ describe("arclen.svg: em, ex and rem from font-size #svgdoc", function()
     assert.are.equal(20, d.total)
     assert.is_true(warned(d, "font-size 'huge' is not a valid value: ignored"))
   end)
+  it("a linked sheet (<?xml-stylesheet?>) is not fetched, and is warned of", function()
+    local d = svg.parse('<?xml version="1.0"?>\n<?xml-stylesheet type="text/css" href="a.css"?>\n'
+      .. HEAD .. '<line x2="3" stroke="red"/></svg>', {}, "t.svg")
+    assert.are.equal(3, d.total)
+    assert.is_true(warned(d, "2:1: <?xml-stylesheet type=\"text/css\" href=\"a.css\"?> is not read"))
+    assert.has_error(function()
+      svg.parse('<?xml-stylesheet href="a.css"?>' .. HEAD .. '</svg>', {strict = true}, "t.svg")
+    end)
+  end)
   it("an invalid declaration is dropped: the next origin of the cascade applies", function()
     -- CSS Syntax 3 section 5 and SVG 2 section 6.6: an invalid style or sheet value
     -- does not hide the presentation attribute or a weaker sheet rule

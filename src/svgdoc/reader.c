@@ -1077,6 +1077,23 @@ static void XMLCALL on_entity(void *ud, const XML_Char *name, int is_param,
   CATCH(D, entity_decl(D, name, value, value_length, system));
 }
 
+/* A style sheet linked by <?xml-stylesheet?> is not fetched (as @import is
+** not): say so, since the paint it would give is then missing. */
+static void style_pi(svgdoc *D, const char *target, const char *data) {
+  unsigned long line, col;
+  if (strcmp(target, "xml-stylesheet") != 0) return;
+  position(D, &line, &col);
+  svgdoc_warn(D, line, col, svgdoc_format(D, "<?xml-stylesheet %.200s?> is "
+                                          "not read: its rules do not apply",
+                                          data ? data : ""));
+}
+
+static void XMLCALL on_pi(void *ud, const XML_Char *target,
+                          const XML_Char *data) {
+  svgdoc *D = ud;
+  CATCH(D, style_pi(D, target, data));
+}
+
 /* ---- the document ------------------------------------------------------- */
 
 svgdoc *svgdoc_new(const svgdoc_options *o) {
@@ -1102,6 +1119,7 @@ svgdoc *svgdoc_new(const svgdoc_options *o) {
   XML_SetElementHandler((XML_Parser)D->parser, on_start, on_end);
   XML_SetEntityDeclHandler((XML_Parser)D->parser, on_entity);
   XML_SetCharacterDataHandler((XML_Parser)D->parser, on_text);
+  XML_SetProcessingInstructionHandler((XML_Parser)D->parser, on_pi);
   return D;
 }
 
