@@ -165,6 +165,14 @@ function helpers.read(name)
 end
 
 -- s quoted for a POSIX shell.
+-- Does a string of list contain text (plain, not a pattern)?
+function helpers.any(list, text)
+  for _, s in ipairs(list) do
+    if s:find(text, 1, true) then return true end
+  end
+  return false
+end
+
 function helpers.shquote(s) return "'" .. s:gsub("'", "'\\''") .. "'" end
 
 -- arclen.path loaded afresh on the given engine (svgpath too, which takes

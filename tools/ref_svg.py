@@ -203,12 +203,47 @@ def read_sheets(root):
     return out
 
 
+def lowered(v):
+    """v trimmed and lower-cased but inside url(...): ids keep their case."""
+    parts, at = [], 0
+    for m in re.finditer(r"url\([^)]*\)?", v, re.I):
+        parts.append(v[at:m.start()].lower() + "url" + m.group(0)[3:])
+        at = m.end()
+    return ("".join(parts) + v[at:].lower()).strip()
+
+
+def valid(name, v):
+    """Is v a value property name takes?  CSS drops an invalid declaration
+    (CSS Syntax 3 section 5), so the next origin's applies."""
+    if v in ("inherit", "initial", "unset"):
+        return True
+    if name == "display":
+        return re.fullmatch(r"[a-z\- \t\n\r]+", v) is not None
+    if name == "visibility":
+        return v in ("visible", "hidden", "collapse")
+    if name == "font-size":
+        m = re.match(r"^(%s)\s*([a-z%%]*)$" % NUMBER, v)
+        return v in SIZES or v in ("larger", "smaller") or (
+            m is not None and float(m.group(1)) >= 0 and
+            (m.group(2) in ("%", "em", "ex", "rem") or m.group(2) in PX))
+    if name in ("fill", "stroke"):
+        return paint_kind(v, None) is not None
+    if name == "color":
+        return v == "currentcolor" or color_shows(v) is not None
+    if name in ("fill-opacity", "stroke-opacity", "opacity"):
+        return re.fullmatch("(%s)%%?" % NUMBER, v) is not None
+    if name == "stroke-width":
+        m = re.fullmatch("(%s)(%%|[a-z]*)" % NUMBER, v)
+        return m is not None and float(m.group(1)) >= 0
+    return True
+
+
 def prop(el, name):
     normal, imp = SHEET.get(el, ({}, {}))
     for v in (styles(el, True).get(name), imp.get(name), styles(el, False).get(name),
               normal.get(name), el.get(name)):
-        if v is not None:
-            return v.strip().lower()
+        if v is not None and valid(name, lowered(v)):
+            return lowered(v)
     return None
 
 
@@ -237,6 +272,7 @@ def font_size(v, parent, root):
 # the paint of an element as a dict of flags, every colour reduced to
 # "shows" (alpha > 0) or not; a value that does not parse is ignored.
 LANG = ["en"]                                   # the reader's default language
+SERVERS = set()                                 # the document's paint servers' ids
 CSS_NAMED = {
     "aliceblue", "antiquewhite", "aqua", "aquamarine", "azure", "beige",
     "bisque", "black", "blanchedalmond", "blue", "blueviolet", "brown",
@@ -338,6 +374,10 @@ def paint_kind(v, context):
         rest = v[v.index(")") + 1:].strip() if ")" in v else None
         if rest is None or (rest and rest not in ("none", "currentcolor") and color_shows(rest) is None):
             return None
+        ref = v[4:v.index(")")].strip().strip("'\"")
+        if ref.startswith("#") and ref[1:] not in SERVERS:
+            # names no paint server: the fallback, or none (SVG 2 section 13.2)
+            return paint_kind(rest or "none", context)
         return "shown"
     c = color_shows(v)
     return None if c is None else ("shown" if c else "none")
@@ -615,10 +655,15 @@ class Doc:
         SHEET.clear()
         SHEET.update(read_sheets(self.root))
         self.ids = {}
+        SERVERS.clear()
         for el in self.root.iter():
             i = el.get("id")
             if i is not None and i not in self.ids:
                 self.ids[i] = el
+            if i is not None and isinstance(el.tag, str) and split(el.tag) in [
+                    (ns, t) for ns in (SVG_NS, None)
+                    for t in ("linearGradient", "radialGradient", "pattern")]:
+                SERVERS.add(i)
         self.units, self.option = units, option
         self.total, self.count, self.arcs, self.arcscale = mp.mpf(0), 0, 0, mp.mpf(0)
 

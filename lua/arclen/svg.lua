@@ -85,6 +85,12 @@ local function may_use(s)
   return find(s, "<use", 1, true) or find(s, ":use", 1, true)
 end
 
+-- Might s refer to a paint server?  Then the scan for the ids is worth
+-- its pass: a fill or stroke of url(#id) that names none paints nothing.
+local function may_refer(s)
+  return find(s, "url(", 1, true)
+end
+
 -- The largest magnitude among p's control points (for messages).
 local function largest_coordinate(p)
   local top = 0
@@ -116,7 +122,7 @@ end
 
 -- The stream: the document from next_chunk() (nil at the end), scanned
 -- first from scan() (a second source of the same bytes, or nil) for the ids
--- <use> refers to; each drawn element made an arclen.path (and measured,
+-- <use> and paint refer to; each drawn element made an arclen.path (and measured,
 -- when o.measure) and given to on_element as soon as the reader hands it
 -- over.  Returns the document without its elements.
 local function stream(o, name, next_chunk, uses, scan, on_element, size)
@@ -268,12 +274,17 @@ end
 
 -- Chunks (inflated when the file is gzip): do they contain what could be
 -- a <use> element?
+-- Does the text of next_chunk() have a <use>, a url( ?  (Read to the end
+-- only when it has not both.)
 local function chunks_may_use(next_chunk)
-  local tail = ""
+  local tail, uses, refers = "", false, false
   for _ = 1, huge do
     local c = next_chunk()
-    if c == nil then return false end
-    if may_use(tail .. sub(c, 1, 8)) or may_use(c) then return true end
+    if c == nil then return uses, refers end
+    local edge = tail .. sub(c, 1, 8)
+    uses = uses or (may_use(edge) or may_use(c)) and true or false
+    refers = refers or (may_refer(edge) or may_refer(c)) and true or false
+    if uses and refers then return true, true end
     tail = sub(c, -8)
   end
 end
@@ -286,16 +297,17 @@ function M.parse(text, opts, name)
   if name ~= nil and type(name) ~= "string" then argerror(3, "arclen.svg.parse", "name must be a string") end
   name = name or "<string>"
   return located_call(name, function()
-    local uses = may_use(text) and true or false
-    if not uses and input.sniff(sub(text, 1, 12)) == "gzip" then   -- what it inflates to
-      uses = chunks_may_use((input.chunks(svgdoc, name, text_chunks(text))))
+    local uses, refers = may_use(text) and true or false, may_refer(text) and true or false
+    if input.sniff(sub(text, 1, 12)) == "gzip" then   -- what it inflates to
+      uses, refers = chunks_may_use((input.chunks(svgdoc, name, text_chunks(text))))
     end
-    return collect(o, name, text_chunks(text), uses, uses and text_chunks(text) or nil, #text)
+    local scan = (uses or refers) and text_chunks(text) or nil
+    return collect(o, name, text_chunks(text), uses, scan, #text)
   end)
 end
 
--- The stream of a file by name: three passes when it may contain <use>
--- (the byte scan, the scan for the ids, the reading), else two; each
+-- The stream of a file by name: three passes when it may contain <use> or
+-- url( (the byte scan, the scan for the ids, the reading), else two; each
 -- from the file's start (and through the inflater, a gzip file).
 local function stream_file(o, filename, on_element)
   local f = input.open(filename)        -- "NAME: permission denied" ...
@@ -305,7 +317,7 @@ local function stream_file(o, filename, on_element)
     return function() return f:read(CHUNK) end
   end
   local ok, res = pcall(function()
-    local uses = chunks_may_use((input.chunks(svgdoc, filename, from_start())))
+    local uses, refers = chunks_may_use((input.chunks(svgdoc, filename, from_start())))
     -- the scan reads the whole file first, then the reading: each starts
     -- over at its first call
     local scanning, reading
@@ -317,7 +329,7 @@ local function stream_file(o, filename, on_element)
       if reading == nil then reading = from_start() end
       return reading()
     end
-    return stream(o, filename, next_chunk, uses, uses and scan or nil, on_element, size)
+    return stream(o, filename, next_chunk, uses, (uses or refers) and scan or nil, on_element, size)
   end)
   f:close()
   if not ok then error(located(filename, res), 0) end

@@ -410,14 +410,21 @@ static int name_byte(unsigned char c) {
   return is_letter(c) || (c >= '0' && c <= '9') || c == '-';
 }
 
-/* Trimmed and lower-cased s[0 .. n-1] into b. */
+/* Trimmed and lower-cased s[0 .. n-1] into b, but for what url( ... )
+** holds: ids are case-sensitive. */
 static const char *normalised(svgdoc *D, svgdoc_buffer *b, const char *s,
                               size_t n) {
   size_t i;
+  int in_url = 0;
   while (n > 0 && space((unsigned char)*s)) s++, n--;
   while (n > 0 && space((unsigned char)s[n - 1])) n--;
   svgdoc_reserve(D, b, n + 1);
-  for (i = 0; i < n; i++) b->s[i] = (char)lower((unsigned char)s[i]);
+  for (i = 0; i < n; i++) {
+    char c = in_url ? s[i] : (char)lower((unsigned char)s[i]);
+    b->s[i] = c;
+    if (c == '(' && i >= 3 && memcmp(b->s + i - 3, "url", 3) == 0) in_url = 1;
+    else if (c == ')') in_url = 0;
+  }
   b->s[n] = '\0';
   return b->s;
 }

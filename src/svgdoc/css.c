@@ -650,6 +650,7 @@ static size_t declarations(parser *p, size_t b, size_t e, size_t *first) {
                                  "value: ignored", name, p->out));
         continue;
       }
+      memcpy(p->out, p->t + vs, ve - vs);  /* kept as written: url(#Id) */
     }
     C->decls = grow(p->D, C->decls, &C->decls_room, C->ndecls, sizeof *C->decls);
     C->decls[C->ndecls].prop = prop;

@@ -225,10 +225,12 @@ void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
 
 /* ---- the ids of the scan (idbloom.c) ---- */
 
-/* id s[0 .. n-1] into the filter (0, or -1 without memory). */
-int svgdoc_bloom_add(svgdoc *D, const char *s, size_t n);
-/* Is it certain that no element has that id (the scan saw them all)? */
-int svgdoc_bloom_absent(const svgdoc *D, const char *s, size_t n);
+/* id s[0 .. n-1] into the filter (0, or -1 without memory); server: the
+** id of a paint server (linearGradient, radialGradient, pattern). */
+int svgdoc_bloom_add(svgdoc *D, const char *s, size_t n, int server);
+/* Is it certain that no element (server: no paint server) has that id
+** (the scan saw them all)? */
+int svgdoc_bloom_absent(const svgdoc *D, const char *s, size_t n, int server);
 
 /* ---- shapes (shapes.c) ---- */
 

@@ -240,6 +240,20 @@ int svgdoc_paint_valid(int k, const char *s) {
   }
 }
 
+const char *svgdoc_paint_server(const svgdoc *D, const char *s) {
+  const char *id, *e, *f;
+  if (s == NULL || strncmp(s, "url(", 4) != 0) return s;
+  if ((e = strchr(s, ')')) == NULL) return s;
+  for (id = s + 4; space(*id); id++) {}
+  for (f = e; f > id && space(f[-1]); f--) {}
+  if (f > id && (*id == '"' || *id == '\'') && f[-1] == *id) id++, f--;
+  if (*id != '#') return s;                    /* another file's: not read */
+  id++;
+  if (f <= id || !svgdoc_bloom_absent(D, id, (size_t)(f - id), 1)) return s;
+  for (e++; space(*e); e++) {}
+  return *e ? e : "none";
+}
+
 void svgdoc_paint_initial(svgdoc_paint *p) {
   memset(p, 0, sizeof *p);
   p->fill = SVGDOC_PAINT_SHOWN;        /* black */

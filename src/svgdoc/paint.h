@@ -41,6 +41,12 @@ int svgdoc_paint_filled(const svgdoc_paint *p, const char *tag);
 ** ignored), so that a weaker origin's value applies.  1 for others. */
 int svgdoc_paint_valid(int k, const char *s);
 
+/* Fill or stroke value s (lower-case) after its paint server is looked
+** for: a url(#id) that names no paint server of the document (when the
+** scan saw all its ids) is its fallback, or none without one (SVG 2
+** section 13.2); anything else is s. */
+const char *svgdoc_paint_server(const struct svgdoc *D, const char *s);
+
 /* A CSS colour (CSS Color 4: named, transparent, #rgb[a], #rrggbb[aa],
 ** rgb[a](), hsl[a](), hwb(), lab(), lch(), oklab(), oklch()), lower-case:
 ** 1 with *clear set when its alpha is 0; 0 when s is not a colour. */

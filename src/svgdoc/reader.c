@@ -43,6 +43,10 @@ static const char *const NOT_RENDERED[] = {
 static const char *const SHAPES[] = {"path", "rect", "circle", "ellipse",
                                      "line", "polyline", "polygon"};
 static const char *const GROUPS[] = {"g", "a", "switch", "svg"};
+/* What a fill or stroke of url(#id) may name (SVG 2 section 13.2; librsvg's,
+** without SVG 2's at-risk mesh gradients and hatches) */
+static const char *const PAINT_SERVERS[] = {"linearGradient", "radialGradient",
+                                            "pattern"};
 
 /* The entry of tag in list[0 .. n-1], or -1. */
 static int find_tag(const char *const *list, int n, const char *tag) {
@@ -468,6 +472,22 @@ static int singular(const double *C) {
   return arclen_fma(a, d, -w) + err == 0;
 }
 
+/* A fill or stroke of url(#id) that names no paint server takes its
+** fallback (SVG 2 section 13.2), with a warning: the document is amiss. */
+static void paint_servers(svgdoc *D, unsigned long line, unsigned long col,
+                          const char **P) {
+  static const int which[2] = {SVGDOC_FILL, SVGDOC_STROKE};
+  int k;
+  for (k = 0; k < 2; k++) {
+    const char *v = P[which[k]], *w = svgdoc_paint_server(D, v);
+    if (w == v) continue;
+    svgdoc_warn(D, line, col, svgdoc_format(D, "%s '%.200s' names no paint "
+                                            "server: %s is painted",
+                                            svgdoc_prop_name(which[k]), v, w));
+    P[which[k]] = w;
+  }
+}
+
 /* The child frame f of element (tag, atts) under parent; f->skip when
 ** nothing inside it is drawn.  sh: the use this element is replayed for. */
 static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
@@ -504,6 +524,7 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
     if (strcmp(s, "hidden") == 0 || strcmp(s, "collapse") == 0) f->visible = 0;
     else if (strcmp(s, "visible") == 0) f->visible = 1;
   }
+  paint_servers(D, line, col, P);
   svgdoc_paint_apply(&f->paint, P, sh ? &sh->u->paint : NULL);
   if (lookup(NOT_RENDERED, tag) >= 0 && !(sh && sh->root && is_symbol)) return;
   skipped = find_tag(svgdoc_skipped_tags, SVGDOC_NSKIPPED, tag);
@@ -708,7 +729,7 @@ static int ready(svgdoc *D, const char *id, size_t n, size_t depth,
   size_t start, i;
   svgdoc_event *ev;
   if (!find_id(&D->ids, id, n, &start) || D->events[start].close == 0) {
-    if (!find_id(&D->ids, id, n, NULL) && svgdoc_bloom_absent(D, id, n))
+    if (!find_id(&D->ids, id, n, NULL) && svgdoc_bloom_absent(D, id, n, 0))
       return 1;                          /* never comes: expanding warns */
     *waiting = id, *wlen = n;
     return 0;
@@ -786,7 +807,7 @@ static void use_at_top(svgdoc *D, svgdoc_use *u) {
   char *at;
   size_t budget = SVGDOC_MAX_REPLAYED;
   if (!D->record ||               /* nothing kept: the missing id, now */
-      (svgdoc_bloom_absent(D, u->href, strlen(u->href)) &&
+      (svgdoc_bloom_absent(D, u->href, strlen(u->href), 0) &&
        !find_id(&D->ids, u->href, strlen(u->href), NULL)) ||
       (!holding(D) && ready(D, u->href, strlen(u->href), 0, &budget,
                             &D->waiting, &D->waiting_len))) {
@@ -875,6 +896,7 @@ static void open_root(svgdoc *D, const char **atts, unsigned long line,
   if ((s = P[SVGDOC_VISIBILITY]) != NULL &&
       (strcmp(s, "hidden") == 0 || strcmp(s, "collapse") == 0))
     f->visible = 0;
+  paint_servers(D, line, col, P);
   svgdoc_paint_apply(&f->paint, P, NULL);
   if ((s = svgdoc_attr(atts, "transform")) != NULL) {  /* SVG 2 allows it */
     svgdoc_matrix T;
@@ -1160,6 +1182,13 @@ static void end_scan(svgdoc *D) {
   D->scanner = NULL;
 }
 
+/* Is the element of expanded name qname, whose local name is tag, in SVG's
+** namespace (or in none: a document without xmlns is read as SVG)? */
+static int in_svg_ns(const char *qname, const char *tag) {
+  return tag == qname || ((size_t)(tag - 1 - qname) == strlen(SVG_NS) &&
+                          memcmp(qname, SVG_NS, strlen(SVG_NS)) == 0);
+}
+
 static void XMLCALL on_scan_start(void *ud, const XML_Char *qname,
                                   const XML_Char **atts) {
   svgdoc *D = ud;
@@ -1168,7 +1197,9 @@ static void XMLCALL on_scan_start(void *ud, const XML_Char *qname,
   jmp_buf jb;
   tag = tag ? tag + 1 : qname;
   if ((id = svgdoc_attr(atts, "id")) != NULL &&
-      svgdoc_bloom_add(D, id, strlen(id)) != 0)
+      (svgdoc_bloom_add(D, id, strlen(id), 0) != 0 ||
+       (in_svg_ns(qname, tag) && lookup(PAINT_SERVERS, tag) >= 0 &&
+        svgdoc_bloom_add(D, id, strlen(id), 1) != 0)))
     D->scan_lost = 1;                    /* out of memory: ids unknown */
   if (strcmp(tag, "use") != 0) return;
   href = svgdoc_attr(atts, "href");
