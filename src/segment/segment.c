@@ -39,7 +39,9 @@ int arclen_segment_letter(int kind) {
   return kind >= 0 && kind < ARCLEN_SEG_NKINDS ? letters[kind] : 0;
 }
 
-int arclen_segment_count(int kind, int dim) {
+/* arclen_segment_count's body, static so that the check inlines it (the
+** call was a twentieth of a quadratic's length). */
+static int count_of(int kind, int dim) {
   if (dim != 2 && dim != 3) return 0;
   switch (kind) {
   case ARCLEN_SEG_LINE: return 2 * dim;
@@ -50,11 +52,15 @@ int arclen_segment_count(int kind, int dim) {
   }
 }
 
+int arclen_segment_count(int kind, int dim) {
+  return count_of(kind, dim);
+}
+
 int arclen_segment_check(int kind, int dim, const double *seg) {
   int i, n;
   if (kind < 0 || kind >= ARCLEN_SEG_NKINDS) return ARCLEN_EDOMAIN;
   if (dim != 2 && dim != 3) return ARCLEN_EDIM;
-  n = arclen_segment_count(kind, dim);
+  n = count_of(kind, dim);
   {
     /* x - x is 0 for a finite x, NaN for inf and NaN: one test in all */
     double z = 0;
