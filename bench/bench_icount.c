@@ -7,14 +7,18 @@
 ** when its code is bound by how many instructions issue, not by latency.
 **
 **   bench_icount gl24 | one | multi | all | all15 | time | time15 | times10
+**                | segcubic | quad
 **
 ** gl24: the fixed 24-point rule on every curve; one, multi: the default
 ** method at tol 1e-12 on the curves it integrates in one piece, in more;
 ** all, all15: on every curve at tol 1e-12, 1e-15; time, time15:
 ** arclen_time at L/2 (as bench_length asks) at tol 1e-12, 1e-15; times10:
 ** arclen_times on 10 distances (j + 1/2) L/10 at tol 1e-12, counted as 10
-** calls (a path's walk hands a cubic about that many at k = 10 n).  Prints
-** the number of calls measured.
+** calls (a path's walk hands a cubic about that many at k = 10 n);
+** segcubic, quad: arclen_segment_length (tol 1e-12) of the cubic and of
+** the quadratic on its first three points, as bench_segment times them
+** (issue 31's goal: a quadratic's length 5x cheaper than a cubic's).
+** Prints the number of calls measured.
 */
 #include <stdio.h>
 #include <string.h>
@@ -32,8 +36,14 @@ static volatile double sink;
 __attribute__((noinline))
 #endif
 static double measured(const double *c, int gl24, double rtol, double half,
-                       const double *ds) {
+                       const double *ds, int kind) {
   double t[10];
+  if (kind >= 0) {
+    arclen_opts o;
+    arclen_opts_init(&o);
+    arclen_segment_length(kind, 2, c, NULL, &o, t, NULL);
+    return t[0];
+  }
   if (ds) return arclen_times(c, 2, ds, 10, rtol, t, NULL, NULL) + t[9];
   if (half > 0) return arclen_time(c, half, rtol);
   return gl24 ? arclen_length_gl(c, 2, 24) : arclen_length(c, rtol);
@@ -54,10 +64,14 @@ int main(int argc, char **argv) {
   int multi = strcmp(mode, "multi") == 0, all15 = strcmp(mode, "all15") == 0;
   int time15 = strcmp(mode, "time15") == 0, time = time15 || strcmp(mode, "time") == 0;
   int times10 = strcmp(mode, "times10") == 0;
+  int kind = strcmp(mode, "segcubic") == 0 ? ARCLEN_SEG_CUBIC
+             : strcmp(mode, "quad") == 0 ? ARCLEN_SEG_QUAD : -1;
   int i, j, calls = 0;
   double ds[10];
-  if (!gl24 && !one && !multi && !all15 && !time && !times10 && strcmp(mode, "all") != 0) {
-    fprintf(stderr, "usage: bench_icount gl24|one|multi|all|all15|time|time15|times10\n");
+  if (!gl24 && !one && !multi && !all15 && !time && !times10 && kind < 0
+      && strcmp(mode, "all") != 0) {
+    fprintf(stderr, "usage: bench_icount gl24|one|multi|all|all15|time|time15|"
+            "times10|segcubic|quad\n");
     return 2;
   }
   bench_random_curves(curves, NCURVES, 20261121);
@@ -68,7 +82,7 @@ int main(int argc, char **argv) {
     /* L/2 outside the collected function, as bench_length's halves */
     double half = time || times10 ? arclen_length(c, 1e-15) / 2 : 0;
     for (j = 0; j < 10; j++) ds[j] = half * (2 * j + 1) / 10;
-    sink = measured(c, gl24, rtol, times10 ? 0 : half, times10 ? ds : NULL);
+    sink = measured(c, gl24, rtol, times10 ? 0 : half, times10 ? ds : NULL, kind);
     calls += times10 ? 10 : 1;
   }
   printf("%d\n", calls);

@@ -83,6 +83,41 @@ describe("segments of four kinds (issue 31)", function()
     end
   end)
 
+  describe("a quadratic's closed form, branch by branch", function()
+    -- spec/data/quad_branches.tsv (tools/ref_quad_branches.py, which checks
+    -- that each row reaches the branch of quad.c it names): the vertex in
+    -- the range or not (or both ends before it), the log's argument at least
+    -- 2 or below (log1p), collinear points, nearly straight, extreme scales
+    -- a leg P1 - P0 or P2 - P1 past DBL_MAX: the C core halves the points
+    -- first; the Lua engine does not (lua/arclen/pure_segment.lua), and
+    -- this checks that it then gives NaN rather than a wrong number
+    local function legs_overflow(s, dim)
+      for k = 1, 2 * dim do
+        if math.abs(s[k + dim] - s[k]) == math.huge then return true end
+      end
+      return false
+    end
+    for _, row in ipairs((H.tsv("quad_branches.tsv"))) do
+      local lua_nan = H.engine ~= "c" and legs_overflow(seg_of(row), tonumber(row.dim))
+      it(row.name .. " (" .. row.branch .. ") within " ..
+         (H.engine == "c" and "the closed form's bound" or "tol") ..
+         (lua_nan and " [Lua engine: legs past DBL_MAX; checks for NaN]" or ""), function()
+        local s, want = seg_of(row), tonumber(row.L)
+        if lua_nan then
+          local got = arclen.segment_length("quad", s)
+          assert(got ~= got, "expected NaN, got " .. tostring(got))
+          return
+        end
+        local t0, t1 = tonumber(row.t0), tonumber(row.t1)
+        local got = arclen.segment_length("quad", s, {t0 = t0, t1 = t1})
+        local err = H.relerr(got, want)
+        assert(err <= bound("quad"), ("%s: %.3g relative (bound %.3g)")
+          :format(row.name, err, bound("quad")))
+        assert.are.equal(-got, arclen.segment_length("quad", s, {t0 = t1, t1 = t0}))
+      end)
+    end
+  end)
+
   describe("time at a length", function()
     for _, row in ipairs(rows) do
       it(row.name .. ": |s(t) - s| <= tol L at s = L/3, 2L/3", function()
@@ -103,6 +138,37 @@ describe("segments of four kinds (issue 31)", function()
         assert.are.equal(1, arclen.segment_time(row.kind, s, 2 * L + 1))
       end)
     end
+  end)
+
+  describe("a quadratic's time at a length (exact lengths only)", function()
+    -- segment.c: the first t from the Hermite interpolant of the length,
+    -- then Halley's steps (the speed's slope is cheap), each point
+    -- measured by the closed form; on the reference quadratics at seven
+    -- fractions and three tolerances this took 3.67 exact lengths on
+    -- average and 9 at most with Newton from the length fraction, 2.26
+    -- and 5 now
+    it("within tol L, and in few exact lengths" ..
+       (H.engine == "c" and "" or " [Lua engine: its own search; the guarantee only]"), function()
+      local n, sum, worst = 0, 0, 0
+      for _, row in ipairs(rows) do
+        if row.kind == "quad" then
+          local s, L = seg_of(row), tonumber(row.L)
+          for _, f in ipairs({0.01, 0.1, 1 / 3, 0.5, 2 / 3, 0.9, 0.99}) do
+            for _, tol in ipairs(H.engine == "c" and {1e-6, 1e-12, 1e-15} or {1e-6, 1e-12}) do
+              local t, info = arclen.segment_time("quad", s, f * L, {tol = tol, info = true})
+              local got = arclen.segment_length("quad", s, {t1 = t})
+              assert(abs(got - f * L) <= tol * L + 4 * EPS * L,
+                     ("%s f=%g tol %g: %.3g L"):format(row.name, f, tol, abs(got - f * L) / L))
+              n, sum, worst = n + 1, sum + info.pieces, max(worst, info.pieces)
+            end
+          end
+        end
+      end
+      if H.engine == "c" then
+        assert(sum / n <= 2.5 and worst <= 6,
+               ("%.2f exact lengths on average, %d at most"):format(sum / n, worst))
+      end
+    end)
   end)
 
   describe("a conic's time at a length (a Gauss model between exact lengths)", function()

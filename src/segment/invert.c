@@ -73,10 +73,24 @@ static int model_certifies(arclen_seg_boundfn bound, const void *ctx,
   return fabs(q) + e <= tol;
 }
 
+/* The step from x where f = len - s and the speed d > 0 are known: with
+** the speed's slope d1 (slope given), Halley's, x - (f/d)/(1 - f d1/(2
+** d^2)), third order where Newton's is second (a quadratic's time takes
+** one exact length fewer), where its correction stays within a factor 2;
+** else Newton's. */
+static double exact_step(arclen_seg_speedfn slope, const void *ctx, double x,
+                         double f, double d) {
+  double nd = f / d, c;
+  if (!slope) return x - nd;
+  c = 1 - nd * slope(ctx, x) / (2 * d);
+  return c >= 0.5 && c <= 2 ? x - nd / c : x - nd;
+}
+
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
-                      arclen_seg_boundfn bound, const void *ctx, double total,
-                      double s, double tol, double guess, int nodes,
-                      double from[3], double *t, long *evals) {
+                      arclen_seg_speedfn slope, arclen_seg_boundfn bound,
+                      const void *ctx, double total, double s, double tol,
+                      double guess, int nodes, double from[3], double *t,
+                      long *evals) {
   double lo = from[0], hi = 1, x0, f0, e0, x, f, d, nx, q, qerr;
   double best = from[0], bestf = fabs(from[1] - s), bestlen = from[1];
   double besterr = from[2];
@@ -137,9 +151,10 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
     if (fabs(f) <= tol) break;
     if (f < 0) lo = x; else hi = x;
     x0 = x; f0 = f; e0 = 0;
-    /* the next model's start: Newton's step on the exact value */
+    /* the next model's start: Newton's (or Halley's) step on the exact
+    ** value */
     d = speed(ctx, x);
-    nx = d > 0 ? x - f / d : lo + (hi - lo) / 2;
+    nx = d > 0 ? exact_step(slope, ctx, x, f, d) : lo + (hi - lo) / 2;
     if (!(nx > lo && nx < hi)) nx = lo + (hi - lo) / 2;
     if (nx == x || !(nx > lo && nx < hi)) break;   /* lo, hi adjacent */
     x = nx;

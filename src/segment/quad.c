@@ -1,14 +1,15 @@
 /*
 ** quad.c -- the quadratic Bezier P0 P1 P2: B'(t) = 2 v(t), v = a + t b, a =
 ** P1 - P0, b = c - a, c = P2 - P1, so the length over [t0, t1] is
-** 2 int |v| dt, a sqrt/asinh closed form (the parabola's).  Written on
-** U = v.b/|b| (the run along b) and K = |a x c|/|b| (the distance of the
-** line of v from the origin), every term is a sum of positive parts, and
-** U1 - U0 is set to (t1 - t0)|b| exactly so the vertex's place cannot
-** drift.  Where |b| is small against min |v| (a nearly straight segment,
-** control point near the chord's middle) the closed form would divide
-** small differences by |b|: there a 10-point Gauss rule, whose error is
-** provably far below an ulp (see near_straight()).
+** 2 int |v| dt, a sqrt/log closed form (the parabola's).  Written on
+** u = v.b (|b| times the run along b) and k = |a x c| (|b| times the
+** distance of the line of v from the origin), with |v| itself at the ends,
+** every term is a sum of positive parts, and u1 - u0 is set to (t1 - t0)
+** |b|^2 so the vertex's place cannot drift.  Where |b| is small against
+** min |v| (a nearly straight segment, control point near the chord's
+** middle) the closed form would divide small differences by |b|: there a
+** 10-point Gauss rule, whose error is provably far below an ulp (see
+** near_straight()).
 */
 #include <math.h>
 #include <stdint.h>
@@ -49,14 +50,11 @@ static double cross_norm(const double *u, const double *v, int dim) {
   return norm(w, 3);
 }
 
-/* v(t) = (1 - t) a + t c: a and c exactly at the ends. */
+/* v(t) = (1 - t) a + t c: a and c exactly at the ends (1 a + 0 c, 0 a +
+** 1 c, for finite a and c). */
 static void speed_vector(const double *a, const double *c, int dim, double t,
                          double *v) {
   int k;
-  if (t == 0 || t == 1) {
-    for (k = 0; k < dim; k++) v[k] = t == 0 ? a[k] : c[k];
-    return;
-  }
   for (k = 0; k < dim; k++) v[k] = (1 - t) * a[k] + t * c[k];
 }
 
@@ -69,20 +67,15 @@ static double pow2(int e) {
   return v;
 }
 
-/* asinh(x) for x >= 0 as log1p(x + x^2/(1 + sqrt(1 + x^2))): the identity
-** asinh x = log(x + sqrt(1 + x^2)) with the 1 taken out, every term
-** positive; half the cost of libm's asinh, within a few ulps.  x^2 is
-** finite here (x <= the ratio of two scaled lengths). */
-static double asinh_pos(double x) {
-  double x2 = x * x;
-  if (x > 0x1p500) return log(x) + 0.69314718055994530942;   /* log 2x */
-  return log1p(x + x2 / (1 + sqrt(1 + x2)));
-}
-
-/* asinh(x)/x, 1 at 0 (asinh keeps a tiny x's digits, so the quotient is
-** within an ulp or two everywhere). */
-static double asinhc(double x) {
-  return x == 0 ? 1 : asinh_pos(x) / x;
+/* The exponent e of x = f 2^e, f in [1/2, 1), for x > 0 (frexp's), from
+** the bits where x is normal: frexp is a call on the closed form's chain. */
+static int exponent_of(double x) {
+  uint64_t bits;
+  int e;
+  memcpy(&bits, &x, sizeof bits);
+  if ((bits >> 52) & 0x7ff) return (int)((bits >> 52) & 0x7ff) - 1022;
+  frexp(x, &e);
+  return e;
 }
 
 /* 2 int |v| over [lo, lo + h] by the 10-point rule.  Used when m = min |v|
@@ -104,47 +97,67 @@ static double near_straight(const double *a, const double *c, int dim,
   return 2 * h * s;
 }
 
-/* 2 int |v| dt over [lo, hi] by the closed form, U0 = v(lo).b/|b|, U1 = U0 +
-** h |b|, K as above (|v|^2 = U^2 + K^2). */
-static double closed_form(double U0, double h, double q, double K) {
-  double U1 = U0 + h * q, S0, S1, t1, t2, Y, x;
-  if (U0 < 0 && U1 > 0) {
-    /* the vertex (min |v| = K) inside: two same-sign halves from it */
-    double A0 = -U0;
-    S0 = sqrt(A0 * A0 + K * K); S1 = sqrt(U1 * U1 + K * K);
-    t1 = U1 * S1 + A0 * S0;
-    /* asinh(U1/K) + asinh(A0/K) = asinh((U1 S0 + A0 S1)/K^2) (sinh of a
-    ** sum); where K^2 underflows the term is below the rounding of t1 */
-    x = (U1 * S0 + A0 * S1) / (K * K);
-    t2 = K > 0 && isfinite(x) ? K * K * asinh_pos(x) : 0;
-    return (t1 + t2) / q;
+/* log(N/D) for N >= D > 0, w = N/D - 1 given without cancellation by the
+** caller where N < 2 D.  Where N >= 2 D the rounding of N/D (2^-53 of it)
+** moves the log by 1.1e-16 of at least log 2, so libm's log, 40% cheaper
+** than log1p, serves and w is not needed; below, log1p(w) keeps a small
+** w's digits.  An N/D past the double range (k^2 below 1e-307, N at most
+** 36) leaves a term below the rounding of the rest: 0. */
+static double log_ratio(double N, double D, double w) {
+  double r;
+  if (N < 2 * D) return log1p(w);
+  r = N / D;
+  return isfinite(r) ? log(r) : 0;
+}
+
+/* 2 int |v| dt over [lo, lo + h] by the closed form of the parabola's
+** length, (U1 S1 - U0 S0 + K^2 log((U1 + S1)/(U0 + S0)))/|b| with U =
+** v.b/|b|, K = |a x c|/|b| (|v|^2 = U^2 + K^2), S = |v|, written on u = U
+** |b| = v.b (u0 given, u1 = u0 + h |b|^2 so that the vertex's place cannot
+** drift), k = K |b| (given), B = |b|^2, q = |b| and S0, S1 = |v| at the ends
+** (given: no quotient before the log).  Every part is a sum of positive
+** terms; |b| >= 0.1 here (near_straight takes the rest). */
+static double closed_form(double u0, double S0, double S1, double h, double B,
+                          double q, double k) {
+  double u1 = u0 + h * B, k2 = k * k, t1, w, N, D;
+  if (u0 < 0 && u1 > 0) {
+    /* the vertex (min |v| = K) inside: two same-sign halves from it, and
+    ** asinh(U1/K) + asinh(A0/K) = log((U1 + S1)(A0 + S0)/K^2), A0 = -U0 */
+    double a0 = -u0, u1a0 = u1 * a0, den;
+    t1 = (u1 * S1 + a0 * S0) / B;
+    /* where k^2 underflows its term is below the rounding of t1 */
+    if (!(k2 > 0)) return t1;
+    N = (u1 + q * S1) * (a0 + q * S0);
+    /* N/k^2 - 1 = (U1 A0 + U1 S0 + A0 S1 + S1 S0 - K^2)/K^2 with S1 S0 -
+    ** K^2 = (U1^2 A0^2 + K^2 (U1^2 + A0^2))/(S1 S0 + K^2), times B/B */
+    den = B * S1 * S0 + k2;
+    w = N >= 2 * k2 ? 0
+        : (u1a0 + q * (u1 * S0 + a0 * S1) + u1a0 * (u1a0 / den)
+           + k2 * ((u1 * u1 + a0 * a0) / den)) / k2;
+    return t1 + k2 / (B * q) * log_ratio(N, k2, w);
   }
-  if (U1 <= 0) {                  /* both ends before the vertex: reflect */
-    double r = -U1;
-    U1 = -U0;
-    U0 = r;
+  if (u1 <= 0) {                  /* both ends before the vertex: reflect */
+    double r = -u1;
+    u1 = -u0;
+    u0 = r;
+    r = S1; S1 = S0; S0 = r;
   }
-  if (U1 == 0) return 0;
-  S0 = sqrt(U0 * U0 + K * K); S1 = sqrt(U1 * U1 + K * K);
+  if (u1 == 0) return 0;
   /* U1 S1 - U0 S0 = (U1 - U0)(U1 + U0)(U1^2 + U0^2 + K^2)/(U1 S1 + U0 S0),
-  ** divided by q with U1 - U0 = h q */
-  t1 = h * (U1 + U0) * (U1 * U1 + U0 * U0 + K * K) / (U1 * S1 + U0 * S0);
-  /* (K^2/q)(asinh(U1/K) - asinh(U0/K)) = (K^2/q) asinh(h q Y), Y = (U1 +
-  ** U0)/(U1 S0 + U0 S1) (sinh of a difference; no cancellation) */
-  if (!(K * K > 0)) return t1;   /* K^2 below the double range: t2 is too */
-  Y = (U1 + U0) / (U1 * S0 + U0 * S1);
-  x = h * q * Y;
-  /* x overflows only for K below 1e-300 (then U0 = 0, S0 = K): K^2 log x
-  ** is nothing beside t1 */
-  if (!isfinite(x)) return t1;
-  t2 = x <= 1 ? K * K * h * Y * asinhc(x) : K * K / q * asinh_pos(x);
-  return t1 + t2;
+  ** over q, with U1 - U0 = h q */
+  t1 = h * (u1 + u0) * (u1 * u1 + u0 * u0 + k2) / (B * (u1 * S1 + u0 * S0));
+  if (!(k2 > 0)) return t1;      /* k^2 below the double range: t2 is too */
+  /* N/D - 1 = (h q + S1 - S0)/(U0 + S0) with S1 - S0 = h q (U1 + U0)/(S1
+  ** + S0): w = h q (q (S1 + S0) + u1 + u0)/((S1 + S0) D), no cancellation */
+  N = u1 + q * S1; D = u0 + q * S0;
+  w = N >= 2 * D ? 0 : h * q * (q * (S1 + S0) + u1 + u0) / ((S1 + S0) * D);
+  return t1 + k2 / (B * q) * log_ratio(N, D, w);
 }
 
 int arclen_quad_length(const double *p, int dim, double t0, double t1,
                        double *len, int *gauss) {
   double a[3], c[3], b[3], v0[3], v1[3], lo = t0 < t1 ? t0 : t1;
-  double h = fabs(t1 - t0), q, K, m, L, mx = 0;
+  double h = fabs(t1 - t0), B, L, mx = 0, m0, m1;
   int k, e, half = 0;
   if (gauss) *gauss = 0;
   for (k = 0; k < dim; k++) {
@@ -165,7 +178,7 @@ int arclen_quad_length(const double *p, int dim, double t0, double t1,
   if (mx == 0 || h == 0) return ARCLEN_OK;
   /* by a power of two to [1/2, 1): no square over- or underflows (a
   ** product by 2^-e where that is a double, ldexp's rounding otherwise) */
-  frexp(mx, &e);
+  e = exponent_of(mx);
   if (e > -1000 && e < 1000) {
     double sc = pow2(-e);
     for (k = 0; k < dim; k++) { a[k] *= sc; c[k] *= sc; }
@@ -173,23 +186,21 @@ int arclen_quad_length(const double *p, int dim, double t0, double t1,
     for (k = 0; k < dim; k++) { a[k] = ldexp(a[k], -e); c[k] = ldexp(c[k], -e); }
   }
   for (k = 0; k < dim; k++) b[k] = c[k] - a[k];
-  q = norm(b, dim);
+  B = dot(b, b, dim);
   speed_vector(a, c, dim, lo, v0);
   speed_vector(a, c, dim, lo + h, v1);
-  if (q == 0) {
+  m0 = dot(v0, v0, dim); m1 = dot(v1, v1, dim);
+  if (B == 0) {
     L = 2 * h * norm(a, dim);
   } else {
-    double U0 = dot(v0, b, dim) / q, vt;
-    K = cross_norm(a, c, dim) / q;   /* a x b = a x c */
-    /* min |v| over the range: K where the vertex -a.b/|b|^2 is inside */
-    vt = -dot(a, b, dim) / (q * q);
-    m = vt > lo && vt < lo + h ? K * K
-        : fmin(dot(v0, v0, dim), dot(v1, v1, dim));      /* min |v|^2 */
-    if (m >= 16 * h * h * (q * q)) {                   /* min |v| >= 4 h q */
+    double u0 = dot(v0, b, dim), kk = cross_norm(a, c, dim), m;  /* a x b = a x c */
+    /* min |v|^2 over the range: K^2 where the vertex (u = 0) is inside */
+    m = u0 < 0 && u0 + h * B > 0 ? kk * kk / B : m0 < m1 ? m0 : m1;
+    if (m >= 16 * h * h * B) {                         /* min |v| >= 4 h |b| */
       L = near_straight(a, c, dim, lo, h);
       if (gauss) *gauss = 1;
     } else {
-      L = closed_form(U0, h, q, K);
+      L = closed_form(u0, sqrt(m0), sqrt(m1), h, B, sqrt(B), kk);
     }
   }
   L = e + half > -1000 && e + half < 1000 ? L * pow2(e + half)

@@ -39,7 +39,9 @@ int arclen_segment_letter(int kind) {
   return kind >= 0 && kind < ARCLEN_SEG_NKINDS ? letters[kind] : 0;
 }
 
-int arclen_segment_count(int kind, int dim) {
+/* arclen_segment_count's body, static so that the check inlines it (the
+** call was a twentieth of a quadratic's length). */
+static int count_of(int kind, int dim) {
   if (dim != 2 && dim != 3) return 0;
   switch (kind) {
   case ARCLEN_SEG_LINE: return 2 * dim;
@@ -50,11 +52,15 @@ int arclen_segment_count(int kind, int dim) {
   }
 }
 
+int arclen_segment_count(int kind, int dim) {
+  return count_of(kind, dim);
+}
+
 int arclen_segment_check(int kind, int dim, const double *seg) {
   int i, n;
   if (kind < 0 || kind >= ARCLEN_SEG_NKINDS) return ARCLEN_EDOMAIN;
   if (dim != 2 && dim != 3) return ARCLEN_EDIM;
-  n = arclen_segment_count(kind, dim);
+  n = count_of(kind, dim);
   {
     /* x - x is 0 for a finite x, NaN for inf and NaN: one test in all */
     double z = 0;
@@ -166,6 +172,41 @@ static double speed_at(const void *ctx, double t) {
   else
     n2 = sqrt(n2);
   return 2 * n2 / (D * D);
+}
+
+/* A quadratic's speed's slope: d/dt 2 |v| = 2 v.b/|v|, b = c - a (0 at a
+** cusp, where Halley's step falls back to Newton's). */
+static double quad_slope_at(const void *ctx, double t) {
+  const seg_ctx *c = (const seg_ctx *)ctx;
+  double s = 1 - t, vb = 0, vv = 0;
+  int i;
+  for (i = 0; i < c->dim; i++) {
+    double v = s * c->a[i] + t * c->c[i];
+    vb += v * (c->c[i] - c->a[i]);
+    vv += v * v;
+  }
+  return vv > 0 ? 2 * vb / sqrt(vv) : 0;
+}
+
+/* A quadratic's first t for the distance s: the cubic Hermite interpolant
+** of its length from 0 and total and the speeds at the ends, inverted by
+** two Newton steps from the length fraction (as the default method's
+** first guess in a piece, src/gauss/time.c); ~1e-2 of t where the length
+** fraction is ~1e-1, an exact length fewer. */
+static double quad_guess(const seg_ctx *c, double total, double s) {
+  double fa = speed_at(c, 0), fb = speed_at(c, 1), u = s / total;
+  int it;
+  for (it = 0; it < 2; it++) {
+    double u2 = u * u, u3 = u2 * u;
+    double g = total * (3 * u2 - 2 * u3) + fa * (u - 2 * u2 + u3) +
+               fb * (u3 - u2) - s;
+    double dg = total * (6 * u - 6 * u2) + fa * (1 - 4 * u + 3 * u2) +
+                fb * (3 * u2 - 2 * u);
+    double next = dg > 0 ? u - g / dg : -1;
+    if (!(next > 0 && next < 1)) break;      /* keep the last good u */
+    u = next;
+  }
+  return u;
 }
 
 /* The n-point Gauss-Legendre rule's error for a conic's speed over [a, b]
@@ -298,7 +339,8 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double total,
     at[1] = ldexp(at[1], -e); at[2] = ldexp(at[2], -e);
   }
   if (at[0] == 0) {
-    guess = first_guess(kind, c->dim, c->seg, s / total);
+    guess = kind == ARCLEN_SEG_QUAD ? quad_guess(c, total, s)
+                                    : first_guess(kind, c->dim, c->seg, s / total);
   } else {                           /* Newton's step from the last answer */
     double d = speed_at(c, at[0]);
     guess = d > 0 ? at[0] + (s - at[1]) / d : -1;
@@ -306,6 +348,7 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double total,
   /* the model pays where an exact length costs Carlson's integrals (a
   ** conic, ~600 ns), not beside a quadratic's closed form (~50 ns) */
   rc = arclen_seg_invert(len_to, speed_at,
+                         kind == ARCLEN_SEG_QUAD ? quad_slope_at : NULL,
                          kind == ARCLEN_SEG_CONIC ? conic_rule_error : NULL,
                          c, total, s, rtol * total, guess,
                          kind == ARCLEN_SEG_CONIC ? 10 : 0, at, t, evals);

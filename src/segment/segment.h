@@ -48,15 +48,18 @@ void arclen_rquad_sub(const double *p, int dim, double t0, double t1,
 ** cheap as the model).  from: a known point (t, len(0, t), the bound of
 ** that length's error) at or before the answer ({0, 0, 0} to start
 ** afresh), which a sweep over ascending distances passes on: it comes
-** back as the answer's.  Returns 0 or the length function's error code;
-** *evals (may be NULL) counts length evaluations. */
+** back as the answer's.  slope (may be NULL): the speed's derivative, for
+** Halley's step from an exact length instead of Newton's.  Returns 0 or
+** the length function's error code; *evals (may be NULL) counts length
+** evaluations. */
 typedef int (*arclen_seg_lenfn)(const void *ctx, double t, double *len);
 typedef double (*arclen_seg_speedfn)(const void *ctx, double t);
 typedef double (*arclen_seg_boundfn)(const void *ctx, double a, double b,
                                      int n);
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
-                      arclen_seg_boundfn bound, const void *ctx, double total,
-                      double s, double tol, double guess, int nodes,
-                      double from[3], double *t, long *evals);
+                      arclen_seg_speedfn slope, arclen_seg_boundfn bound,
+                      const void *ctx, double total, double s, double tol,
+                      double guess, int nodes, double from[3], double *t,
+                      long *evals);
 
 #endif
