@@ -1087,46 +1087,58 @@ static void keep(svgdoc *D, int svgns, const char *tag, const char **atts,
   D->nevents++;
 }
 
-/* What the content of the <marker> (atts) starting now inherits: its own
-** properties over those of its nearest ancestor that computed them (SVG 2
-** 11.6.2: from the marker's ancestors, whatever their display, never from
-** the shape that references it), and its overflow (the UA sheet's
-** hidden: clipped to its viewport unless visible or auto). */
-static svgdoc_marker_def *marker_def(svgdoc *D, const char **atts,
-                                     unsigned long line, unsigned long col) {
+/* Element (atts) at depth (its ancestors open below it) applied to what a
+** marker's content inherits: its cascaded properties (sheets matched
+** live), whatever its display. */
+static void marker_inherit(svgdoc *D, svgdoc_marker_def *m,
+                           svgdoc_viewport *vp, const char **atts,
+                           size_t depth, unsigned long line,
+                           unsigned long col) {
   const char *P[SVGDOC_NPROPS], *s;
   svgdoc_css_match M;
-  svgdoc_marker_def *m;
-  const svgdoc_frame *a = NULL;
-  svgdoc_viewport vp = {0, 0, 0, 16, 16};
-  size_t k;
-  for (k = D->depth; k-- > 0;)
-    if (D->stack[k].props) {
-      a = &D->stack[k];
-      break;
-    }
-  svgdoc_css_for(D, atts, 1, D->depth, line, col, &M);
+  svgdoc_css_for(D, atts, 1, depth, line, col, &M);
   svgdoc_properties(D, atts, &M, P);
-  D->arena = &D->keep;
-  m = svgdoc_alloc(D, sizeof *m);
-  D->arena = &D->tmp;
-  if (a) {
-    m->paint = a->paint, m->visible = a->visible, m->sw = a->sw;
-    vp = a->vp;
-  } else {
-    svgdoc_paint_initial(&m->paint);
-    m->visible = 1, m->sw = 1;
-    if (D->depth > 0) vp.em = vp.rem = D->stack[0].vp.rem;
-  }
-  m->em = svgdoc_font_size(D, line, col, P[SVGDOC_FONT_SIZE], vp.em, vp.rem);
+  vp->em = m->em = svgdoc_font_size(D, line, col, P[SVGDOC_FONT_SIZE], m->em,
+                                    vp->rem);
   if ((s = P[SVGDOC_VISIBILITY]) != NULL) {
     if (strcmp(s, "hidden") == 0 || strcmp(s, "collapse") == 0) m->visible = 0;
     else if (strcmp(s, "visible") == 0) m->visible = 1;
   }
   svgdoc_paint_apply(&m->paint, P, NULL);
-  m->sw = svgdoc_stroke_width(P[SVGDOC_STROKE_WIDTH], m->sw, &vp);
-  s = P[SVGDOC_OVERFLOW];
+  m->sw = svgdoc_stroke_width(P[SVGDOC_STROKE_WIDTH], m->sw, vp);
+  s = P[SVGDOC_OVERFLOW];              /* the marker's own counts (the last) */
   m->clip = !(s && (strcmp(s, "visible") == 0 || strcmp(s, "auto") == 0));
+}
+
+/* What the content of the <marker> (atts) starting now inherits: its own
+** properties over those of its ancestors (SVG 2 11.6.2: from the marker's
+** ancestors, whatever their display, never from the shape that references
+** it): from the nearest ancestor whose frame computed them, then down the
+** open elements whose frames did not (inside <defs>, display:none), as
+** the style sheets' matcher keeps them; and its overflow (the UA sheet's
+** hidden: clipped to its viewport unless visible or auto). */
+static svgdoc_marker_def *marker_def(svgdoc *D, const char **atts,
+                                     unsigned long line, unsigned long col) {
+  svgdoc_marker_def *m;
+  svgdoc_viewport vp = {0, 0, 0, 16, 16};
+  size_t k, from = 0;
+  D->arena = &D->keep;
+  m = svgdoc_alloc(D, sizeof *m);
+  D->arena = &D->tmp;
+  svgdoc_paint_initial(&m->paint);
+  m->visible = 1, m->sw = 1, m->em = 16;
+  if (D->depth > 0) vp.em = vp.rem = m->em = D->stack[0].vp.rem;
+  for (k = D->depth; k-- > 0;)
+    if (D->stack[k].props) {
+      const svgdoc_frame *a = &D->stack[k];
+      m->paint = a->paint, m->visible = a->visible, m->sw = a->sw;
+      m->em = a->vp.em, vp = a->vp;
+      from = k + 1;
+      break;
+    }
+  for (k = from; k < D->depth; k++)
+    marker_inherit(D, m, &vp, D->nodes[k].atts, k, line, col);
+  marker_inherit(D, m, &vp, atts, D->depth, line, col);
   return m;
 }
 
