@@ -501,15 +501,20 @@ static int style_of(const char *s, int k, int important, const char **v,
 void svgdoc_properties(svgdoc *D, const char **atts,
                        const struct svgdoc_css_match *sheet, const char *out[]) {
   const char *style = svgdoc_attr(atts, "style");
+  /* styles rarely name the marker properties or overflow: one scan says */
+  int marked = style && strstr(style, "marker") != NULL;
+  int over = style && strstr(style, "overflow") != NULL;
   int k;
   for (k = 0; k < SVGDOC_NPROPS; k++) {
-    const char *v = NULL;
+    const char *v = NULL, *st = style;
     size_t vn = 0;
+    if ((SVGDOC_CASED_PROP(k) && !marked) || (k == SVGDOC_OVERFLOW && !over))
+      st = NULL;
     /* from the strongest down (SVG 2 section 6.3; Cascade 4 section 6) */
-    if (style && style_of(style, k, 1, &v, &vn)) {
+    if (st && style_of(st, k, 1, &v, &vn)) {
     } else if (sheet && (v = sheet->important[k]) != NULL) {
       vn = strlen(v);
-    } else if (style && style_of(style, k, 0, &v, &vn)) {
+    } else if (st && style_of(st, k, 0, &v, &vn)) {
     } else if (sheet && (v = sheet->normal[k]) != NULL) {
       vn = strlen(v);
     } else if ((v = svgdoc_attr(atts, PROPS[k])) != NULL) {
