@@ -264,6 +264,17 @@ describe("markers: vertices and directions (SVG 2 11.6.2, 9.5) #svgdoc", functio
     local r = {}
     for _, e in ipairs(doc.elements) do r[#r + 1] = e.marker or e.id end
     assert.are.same(r, t)
+    -- from a function (no scan: every id kept), in chunks of 100 bytes
+    local h = assert(io.open(DIR .. "hand/marker-vertices.svg", "rb"))
+    local text = h:read("a")
+    h:close()
+    local pos, u = 1, {}
+    svg.each(function()
+      if pos > #text then return nil end
+      pos = pos + 100
+      return text:sub(pos - 100, pos - 1)
+    end, function(e) u[#u + 1] = e.marker or e.id end)
+    assert.are.same(r, u)
   end)
   it("arcs as cubics measure the same within the tolerance", function()
     local c = svg.read(DIR .. "hand/marker-vertices.svg", {arcs = "cubics", arc_tol = 1e-12})
