@@ -325,3 +325,14 @@ describe("markers: where they are drawn, and the caps #svgdoc", function()
     assert.is_true(os.clock() - t0 < 10 * (tonumber(os.getenv("ARCLEN_TIME_SCALE")) or 1))
   end)
 end)
+
+describe("markers: references that are no marker #svgdoc", function()
+  it("an id of another element (kept for a <use>) is a warning, also inside that element", function()
+    local d = svg.parse(HEAD .. '<g id="g"><path id="p" d="M0 0 H10" marker-end="url(#g)"/></g>'
+      .. '<use href="#g"/></svg>', nil, "x.svg")
+    assert.are.equal(2, #d.elements)
+    assert.are.same({"x.svg:1:73: marker-end of '#g': the element with that id is not a <marker>; nothing drawn",
+                     "x.svg:1:73: marker-end of '#g': the element with that id is not a <marker>; nothing drawn"},
+                    d.warnings)
+  end)
+end)

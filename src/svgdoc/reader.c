@@ -718,12 +718,6 @@ static void expand_marker(svgdoc *D, const svgdoc_use *u, size_t start,
                           const svgdoc_shadow *sh) {
   const svgdoc_event *m = &D->events[start];
   size_t v, i, top;
-  if (!m->svgns || strcmp(m->tag, "marker") != 0 || m->mdef == NULL) {
-    lenient(D, u->line, u->col, svgdoc_format(D, "%s of '#%s': the element "
-            "with that id is not a <marker>", MARKER_PROPS[u->mset->which],
-            u->href), "nothing drawn");
-    return;
-  }
   for (v = 0; v < u->mset->n; v++) {
     svgdoc_viewport vp;
     if (!svgdoc_marker_place(D, u->mset, v, m->atts, m->mdef, m->line, m->col,
@@ -769,6 +763,14 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
                             MARKER_PROPS[u->mset->which], u->href)
             : svgdoc_format(D, "<use> of '#%s': no element has that id",
                             u->href), "nothing drawn");
+    return;
+  }
+  if (u->mset && (!D->events[start].svgns || D->events[start].mdef == NULL ||
+                  strcmp(D->events[start].tag, "marker") != 0)) {
+    /* kept for a <use>, but no marker: an invalid reference (SVG 2 11.6.2) */
+    lenient(D, u->line, u->col, svgdoc_format(D, "%s of '#%s': the element "
+            "with that id is not a <marker>", MARKER_PROPS[u->mset->which],
+            u->href), "nothing drawn");
     return;
   }
   for (k = 0; k < u->nchain; k++) {
