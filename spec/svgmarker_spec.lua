@@ -32,7 +32,8 @@ local function same_ctm(e, want, what)
 end
 
 -- The angle (degrees) of an instance's x axis, from its CTM.
-local function angle(e) return math.deg(math.atan(e.ctm[2], e.ctm[1])) end
+local atan2 = math.atan2 or math.atan              -- Lua 5.1 and LuaJIT: atan2
+local function angle(e) return math.deg(atan2(e.ctm[2], e.ctm[1])) end
 
 -- The error of f(...) as raised (busted's has_error drops the place).
 local function err_of(f, ...)
@@ -266,7 +267,7 @@ describe("markers: vertices and directions (SVG 2 11.6.2, 9.5) #svgdoc", functio
     assert.are.same(r, t)
     -- from a function (no scan: every id kept), in chunks of 100 bytes
     local h = assert(io.open(DIR .. "hand/marker-vertices.svg", "rb"))
-    local text = h:read("a")
+    local text = h:read("*a")
     h:close()
     local pos, u = 1, {}
     svg.each(function()
