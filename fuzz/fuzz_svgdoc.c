@@ -65,6 +65,10 @@ static void take(const svgdoc *D, digest *g) {
     fold(g, &e->col, sizeof e->col);
     fold(g, e->tag, strlen(e->tag));
     if (e->use) fold(g, e->use, strlen(e->use));
+    if (e->marker) {                   /* a marker's content: its id, apart */
+      fold(g, "#", 1);
+      fold(g, e->marker, strlen(e->marker));
+    }
     svgdoc_shape_d(&e->shape, fold_bytes, g);
     if (e->pd.ncubics) fold(g, e->pd.cubics, 8 * e->pd.ncubics * sizeof(double));
     if (e->pd.kinds) fold(g, e->pd.kinds, e->pd.ncubics);

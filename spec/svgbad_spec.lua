@@ -191,6 +191,9 @@ describe("arclen.svg: seeded random mutations of the real documents #svgdoc", fu
   for _, row in ipairs(require("helpers").tsv("svg/SOURCES.tsv")) do files[#files + 1] = row.file end
   files[#files + 1] = "hand/css.svg"         -- style sheets: selectors, the cascade, @media
   files[#files + 1] = "hand/em.svg"
+  files[#files + 1] = "hand/marker-vertices.svg"   -- markers: vertices, clip, the shorthand
+  files[#files + 1] = "hand/marker-clip.svg"
+  files[#files + 1] = "hand/marker-css.svg"
   local texts = {}
   for i, f in ipairs(files) do
     local h = assert(io.open("spec/data/svg/" .. f, "rb"))
@@ -211,7 +214,10 @@ describe("arclen.svg: seeded random mutations of the real documents #svgdoc", fu
     "\0", "\255\254", "<svg>", "</svg>", "<symbol id='s'>", "<use xlink:href='#s'/>",
     "<style>", "</style>", "{", "}", "/*", "*/", " class='st0'", ".st0{stroke:red}",
     "@media screen{", "* * * *{display:none}", ":first-child", "[id^=a]>", "!important",
-    " style='font-size:1e308em'", " font-size='-1'", "\\", "@import 'x';"}
+    " style='font-size:1e308em'", " font-size='-1'", "\\", "@import 'x';",
+    " marker-end='url(#m)'", " marker-mid='url(#curves)'", "marker:url(#a)", " orient='1e308'",
+    "<marker id='m' viewBox='0 0 1e-300 1' refX='1e308'>", "</marker>", " markerWidth='1e308'",
+    " markerUnits='strokeWidth'", " stroke-width='1e308'", " overflow='visible'", " orient='auto'"}
   local function mutate(text)
     local t = text
     for _ = 1, rnd(4) do

@@ -218,13 +218,15 @@ end)
 describe("arclen.svg: <use>, defs and the non-rendered containers #svgdoc", function()
   local doc = svg.read(DIR .. "hand/use.svg")
   it("draws uses in document order, forward references too; nothing of defs, clipPath, mask, marker, pattern", function()
+    -- (the marker's content only as the marker of the path that refers to it: its last element)
     assert.are.same({"tick", "tick", "tick", "rect", "rect", "circle", "later-c", "ellipse",
-      "tick", "later-c", "ellipse", "marked"}, ids(doc))
+      "tick", "later-c", "ellipse", "marked", "path"}, ids(doc))
+    assert.are.equal("arrow", doc.elements[13].marker)
     local uses = {}
     for i, e in ipairs(doc.elements) do uses[i] = e.use or "-" end
     -- the target of the innermost use (u-pair draws pair's uses of tick)
     assert.are.same({"tick", "tick", "tick", "box", "box", "star", "later", "later", "tick",
-      "-", "-", "-"}, uses)
+      "-", "-", "-", "-"}, uses)
   end)
   it("x/y, transform, symbol viewBox onto the use's width/height (100% when absent)", function()
     local E = doc.elements

@@ -66,6 +66,8 @@ NOT_RENDERED = {"defs", "symbol", "clipPath", "mask", "marker", "pattern",
                 "script", "title", "desc", "metadata", "view", "font",
                 "font-face", "cursor", "hatch", "solidcolor", "meshgradient"}
 SHAPES = {"path", "rect", "circle", "ellipse", "line", "polyline", "polygon"}
+MARKABLE = {"path", "line", "polyline", "polygon"}    # SVG 2 11.6: markable elements
+MK = ("marker-start", "marker-mid", "marker-end")
 CONTAINERS = {"g", "a", "switch", "svg"}
 NUM = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 
@@ -89,6 +91,11 @@ VARIANTS = {
     "hand/css.svg": [("user", "-"), ("user", "hidden"), ("user", "stroked"), ("user", "painted")],
     "hand/em.svg": [("user", "-"), ("mm", "-")],
     "real/rust-favicon.svg": [("user", "-"), ("user", "stroked"), ("user", "painted")],
+    "hand/marker-css.svg": [("user", "-"), ("user", "stroked"), ("user", "painted")],
+    "hand/marker-vertices.svg": [("user", "-"), ("user", "painted"), ("mm", "-")],
+    "hand/marker-clip.svg": [("user", "-"), ("in", "-")],
+    "real/openclipart-right_top_corner_tribal_.svg": [("user", "-"), ("user", "stroked"),
+                                                      ("user", "painted")],
 }
 
 
@@ -143,7 +150,9 @@ def styles(el, important):
             k, v = decl.split(":", 1)
             imp = re.search(r"!\s*important\s*$", v, re.I)
             if bool(imp) == important:
-                out[k.strip().lower()] = v[:imp.start()].strip() if imp else v.strip()
+                k = k.strip().lower()
+                for name in (MK if k == "marker" else (k,)):   # the shorthand's longhands
+                    out[name] = v[:imp.start()].strip() if imp else v.strip()
     return out
 
 
@@ -179,9 +188,10 @@ def read_sheets(root):
                     sels = cssselect2.compile_selector_list(r.prelude)
                 except cssselect2.SelectorError:
                     continue
-                decls = [(d.lower_name, tinycss2.serialize(d.value).strip(), d.important)
+                decls = [(n, tinycss2.serialize(d.value).strip(), d.important)
                          for d in tinycss2.parse_declaration_list(r.content, True, True)
-                         if d.type == "declaration"]
+                         if d.type == "declaration"
+                         for n in (MK if d.lower_name == "marker" else (d.lower_name,))]
                 for sel in sels:
                     matcher.add_selector(sel, decls)
             elif r.type == "at-rule" and r.lower_at_keyword == "media" and r.content is not None:
@@ -238,12 +248,12 @@ def valid(name, v):
     return True
 
 
-def prop(el, name):
+def prop(el, name, cased=False):
     normal, imp = SHEET.get(el, ({}, {}))
     for v in (styles(el, True).get(name), imp.get(name), styles(el, False).get(name),
               normal.get(name), el.get(name)):
         if v is not None and valid(name, lowered(v)):
-            return lowered(v)
+            return v.strip() if cased else lowered(v)
     return None
 
 
@@ -646,6 +656,238 @@ def measure(prim, A):
     return integrate(speed, [a, b]), size
 
 
+# ---- markers (SVG 2 section 11.6) ----------------------------------------------
+# Written from the specification, not from src/svgdoc/marker.c: the vertices
+# of the path's commands, directions as derivatives of each primitive on
+# [0, 1] (the first non-zero one), the placement as a product of exact
+# matrices, and the clip to the marker's viewport by sampling each mapped
+# primitive and refining every sign change of x - side, y - side with
+# mpmath's root finder, measuring the sub-ranges inside.
+
+def marker_ref(v, parent):
+    """A marker property's value: the id, None (none), or the parent's."""
+    if v is None:
+        return parent
+    if v.lower() in ("none", "initial"):
+        return None
+    m = re.fullmatch(r"url\(\s*(['\"]?)#([^'\")\s]+)\1\s*\)", v.strip(), re.I)
+    return m.group(2) if m else parent
+
+
+def stroke_width(v, parent, vp):
+    if v is None:
+        return parent
+    if v == "initial":
+        return mp.mpf(1)
+    try:
+        w = length(v, "o", vp)
+    except (AttributeError, AssertionError, TypeError):
+        return parent                               # invalid: ignored
+    return parent if w < 0 else w
+
+
+def prim_param(prim):
+    """(P, dP): a primitive as a function of t in [0, 1] and its derivative;
+    None for an arc that SVG omits (equal ends)."""
+    kind = prim[0]
+    if kind == "arc":
+        _, rx, ry, phi, fa, fs, (x1, y1), (x2, y2) = prim
+        if (x1, y1) == (x2, y2):
+            return None
+        rx, ry = abs(rx), abs(ry)
+        if rx == 0 or ry == 0:
+            prim = ("line", (x1, y1), (x2, y2))
+            kind = "line"
+        else:
+            with mp.workdps(2 * mp.mp.dps):
+                ph = mp.radians(phi)
+                c, s = mp.cos(ph), mp.sin(ph)
+                dx, dy = (x1 - x2) / 2, (y1 - y2) / 2        # SVG 1.1 F.6.5
+                xp, yp = c * dx + s * dy, -s * dx + c * dy
+                lam = xp ** 2 / rx ** 2 + yp ** 2 / ry ** 2  # F.6.6
+                if lam > 1:
+                    rx, ry = mp.sqrt(lam) * rx, mp.sqrt(lam) * ry
+                num = rx ** 2 * ry ** 2 - rx ** 2 * yp ** 2 - ry ** 2 * xp ** 2
+                den = rx ** 2 * yp ** 2 + ry ** 2 * xp ** 2
+                k = mp.sqrt(max(num / den, 0)) * (-1 if fa == fs else 1)
+                cxp, cyp = k * rx * yp / ry, -k * ry * xp / rx
+                cx = c * cxp - s * cyp + (x1 + x2) / 2
+                cy = s * cxp + c * cyp + (y1 + y2) / 2
+                th1 = mp.atan2((yp - cyp) / ry, (xp - cxp) / rx)
+                th2 = mp.atan2((-yp - cyp) / ry, (-xp - cxp) / rx)
+                dth = th2 - th1
+                if not fs and dth > 0:
+                    dth -= 2 * mp.pi
+                elif fs and dth < 0:
+                    dth += 2 * mp.pi
+
+            def P(t):
+                th = th1 + t * dth
+                return (cx + c * rx * mp.cos(th) - s * ry * mp.sin(th),
+                        cy + s * rx * mp.cos(th) + c * ry * mp.sin(th))
+
+            def dP(t):
+                th = th1 + t * dth
+                return (dth * (-c * rx * mp.sin(th) - s * ry * mp.cos(th)),
+                        dth * (-s * rx * mp.sin(th) + c * ry * mp.cos(th)))
+            return P, dP
+    if kind == "line":
+        p0, p1 = prim[1], prim[2]
+        return ((lambda t: (p0[0] + t * (p1[0] - p0[0]), p0[1] + t * (p1[1] - p0[1]))),
+                (lambda t: (p1[0] - p0[0], p1[1] - p0[1])))
+    ctrl = list(prim[1:])
+    n = len(ctrl) - 1
+    d = [(n * (ctrl[i + 1][0] - ctrl[i][0]), n * (ctrl[i + 1][1] - ctrl[i][1])) for i in range(n)]
+    return (lambda t: ref_paths.bezier(ctrl, t)), (lambda t: ref_paths.bezier(d, t))
+
+
+def direction(prim, end):
+    """The angle of the path's direction at the primitive's start (end 0)
+    or end (1): of its first non-zero derivative there; None when it is a
+    point (SVG 2 9.5)."""
+    pts = [prim[1], prim[2]] if prim[0] == "line" else list(prim[1:])
+    if all(p == pts[0] for p in pts):
+        return None
+    if prim[0] in ("quad", "cubic"):
+        # B^(k)(0) is a combination of P0 .. Pk: the first Pk - P0 not zero
+        seq = pts if end == 0 else pts[::-1]
+        for q in seq[1:]:
+            v = (q[0] - seq[0][0], q[1] - seq[0][1])
+            if v != (0, 0):
+                return mp.atan2(v[1], v[0]) if end == 0 else mp.atan2(-v[1], -v[0])
+    v = prim_param(prim)[1](mp.mpf(end))
+    return mp.atan2(v[1], v[0])
+
+
+def vertices(d):
+    """[(x, y, auto angle)] of path data d: each moveto and each segment's
+    end (an arc, a zero-length segment or Z included), the angle bisecting
+    the directions in and out (SVG 2 11.6.2)."""
+    r = ref_paths.Reader(d)
+    subs = []                                       # [start, [(end, a0, a1)], closed]
+    cur = start = (mp.mpf(0), mp.mpf(0))
+    lastc = lastq = None
+    cmd, after_z = None, True
+
+    def seg(prim, end):
+        nonlocal after_z
+        if after_z:                                 # drawing after Z: a new subpath
+            subs.append([cur, [], False])
+            after_z = False
+        subs[-1][1].append((end, direction(prim, 0), direction(prim, 1)))
+
+    while not r.done():
+        c = r.command()
+        if c is not None:
+            cmd = c
+        elif cmd in "Mm":
+            cmd = "l" if cmd == "m" else "L"
+        up, rel = cmd.upper(), cmd.islower()
+        ox, oy = cur if rel else (0, 0)
+        newc = newq = None
+        if up == "Z":
+            if not after_z:
+                seg(("line", cur, start), start)
+                subs[-1][2] = True
+                after_z = True
+            cur = start
+        elif up == "M":
+            cur = start = (r.number() + ox, r.number() + oy)
+            subs.append([cur, [], False])
+            after_z = False
+        elif up in "LHV":
+            if up == "L":
+                p = (r.number() + ox, r.number() + oy)
+            elif up == "H":
+                p = (r.number() + (cur[0] if rel else 0), cur[1])
+            else:
+                p = (cur[0], r.number() + (cur[1] if rel else 0))
+            seg(("line", cur, p), p)
+            cur = p
+        elif up in "CS":
+            c1 = (r.number() + ox, r.number() + oy) if up == "C" else \
+                (2 * cur[0] - lastc[0], 2 * cur[1] - lastc[1]) if lastc else cur
+            c2 = (r.number() + ox, r.number() + oy)
+            p = (r.number() + ox, r.number() + oy)
+            seg(("cubic", cur, c1, c2, p), p)
+            newc, cur = c2, p
+        elif up in "QT":
+            q = (r.number() + ox, r.number() + oy) if up == "Q" else \
+                (2 * cur[0] - lastq[0], 2 * cur[1] - lastq[1]) if lastq else cur
+            p = (r.number() + ox, r.number() + oy)
+            seg(("quad", cur, q, p), p)
+            newq, cur = q, p
+        else:
+            rx, ry, phi = r.number(), r.number(), r.number()
+            fa, fs = r.flag(), r.flag()
+            p = (r.number() + ox, r.number() + oy)
+            if p != cur:                            # equal ends: omitted (F.6.2)
+                seg(("arc", rx, ry, phi, fa, fs, cur, p), p)
+            cur = p
+        lastc, lastq = newc, newq
+
+    def bisect(a, b):
+        if a is None:
+            return b if b is not None else mp.mpf(0)
+        if b is None:
+            return a
+        t = b - a
+        if t > mp.pi:
+            t -= 2 * mp.pi
+        if t <= -mp.pi:
+            t += 2 * mp.pi
+        return a + t / 2
+    out = []
+    for st, segs, closed in subs:
+        ins = [next((s[2] for s in segs[k::-1] if s[1] is not None), None) for k in range(len(segs))]
+        outs = [next((s[1] for s in segs[k:] if s[1] is not None), None) for k in range(len(segs))]
+        first_out = outs[0] if segs else None
+        out.append((st[0], st[1], bisect(ins[-1] if closed else None, first_out)))
+        for k, s in enumerate(segs):
+            o = outs[k + 1] if k + 1 < len(segs) else (first_out if closed else None)
+            out.append((s[0][0], s[0][1], bisect(ins[k], o)))
+    return out
+
+
+def orient_deg(o):
+    m = re.fullmatch(r"(%s)(deg|grad|rad|turn)?" % NUMBER, o.strip())
+    if not m:
+        return mp.mpf(0)
+    v = mp.mpf(m.group(1))
+    return v * {None: 1, "deg": 1, "grad": mp.mpf("0.9"), "rad": 180 / mp.pi, "turn": 360}[m.group(2)]
+
+
+def clipped_length(prim, inner, A, box):
+    """The length under A of the part of the primitive (mapped by inner)
+    inside box (x0, y0, x1, y1)."""
+    pp = prim_param(prim)
+    if pp is None:
+        return mp.mpf(0)
+    P, dP = pp
+    Q = lambda t: (inner[0] * P(t)[0] + inner[2] * P(t)[1] + inner[4],
+                   inner[1] * P(t)[0] + inner[3] * P(t)[1] + inner[5])
+    N = 128
+    grid = [mp.mpf(i) / N for i in range(N + 1)]
+    pts = [Q(t) for t in grid]
+    cuts = {mp.mpf(0), mp.mpf(1)}
+    for axis, side in ((0, box[0]), (1, box[1]), (0, box[2]), (1, box[3])):
+        vals = [p[axis] - side for p in pts]
+        for i in range(N):
+            if vals[i] == 0:
+                cuts.add(grid[i])
+            elif vals[i] * vals[i + 1] < 0:
+                f = lambda t: Q(t)[axis] - side
+                cuts.add(mp.findroot(f, (grid[i], grid[i + 1]), solver="anderson"))
+    cuts = sorted(cuts)
+    total = mp.mpf(0)
+    for a, b in zip(cuts, cuts[1:]):
+        m = Q((a + b) / 2)
+        if box[0] <= m[0] <= box[2] and box[1] <= m[1] <= box[3]:
+            total += integrate(lambda t: mp.sqrt(apply(A, dP(t))[0] ** 2 + apply(A, dP(t))[1] ** 2),
+                               [a, (a + b) / 2, b])
+    return total
+
+
 # ---- the document ------------------------------------------------------------
 
 class Doc:
@@ -656,6 +898,7 @@ class Doc:
         SHEET.update(read_sheets(self.root))
         self.ids = {}
         SERVERS.clear()
+        self.parent = {c: p for p in self.root.iter() for c in p}
         for el in self.root.iter():
             i = el.get("id")
             if i is not None and i not in self.ids:
@@ -688,10 +931,76 @@ class Doc:
         paint = paint_of(r, INITIAL, None)
         if not cond_pass(r):
             return
+        ext = {"sw": stroke_width(prop(r, "stroke-width"), mp.mpf(1), vp),
+               "mk": [marker_ref(prop(r, k, True), None) for k in MK], "outer": None,
+               "box": None}
         for ch in r:
-            self.walk(ch, ctm, vp, visible, paint, [], None, FONT[1])
+            self.walk(ch, ctm, vp, visible, paint, [], None, FONT[1], ext)
 
-    def walk(self, el, ctm, vp, visible, paint, chain, use, fs):
+    def marker_env(self, m):
+        """What a marker's content inherits: the marker's properties over
+        its ancestors' from the root, whatever their display (SVG 2
+        11.6.2), and whether it clips (overflow hidden or scroll)."""
+        chain, e = [], m
+        while e is not None:
+            chain.append(e)
+            e = self.parent.get(e)
+        paint, visible, fs, sw = INITIAL, True, FONT[1], mp.mpf(1)
+        for el in reversed(chain):
+            fs = font_size(prop(el, "font-size"), fs, FONT[1])
+            FONT[0] = fs
+            v = prop(el, "visibility")
+            visible = False if v in ("hidden", "collapse") else True if v == "visible" else visible
+            paint = paint_of(el, paint, None)
+            sw = stroke_width(prop(el, "stroke-width"), sw, None)
+        return {"paint": paint, "visible": visible, "fs": fs, "sw": sw,
+                "clip": prop(m, "overflow") not in ("visible", "auto")}
+
+    def markers(self, el, tag, vp, ctm, paint, ext, chain):
+        """The marker instances of a drawn shape, drawn after it."""
+        vs = vertices(d_of(tag, el, vp))
+        for which, name in enumerate(MK):
+            m = self.ids.get(ext["mk"][which])
+            if m is None or split(m.tag) not in ((SVG_NS, "marker"), (None, "marker")):
+                continue
+            at = [vs[0]] if which == 0 else vs[1:-1] if which == 1 else [vs[-1]]
+            if not vs:
+                at = []
+            env = self.marker_env(m)
+            for x, y, ang in at:
+                FONT[0] = env["fs"]
+                mw = attr_len(m, "markerWidth", "x", vp, 3)
+                mh = attr_len(m, "markerHeight", "y", vp, 3)
+                vb = vbox(m)
+                if mw == 0 or mh == 0 or (vb and (vb[2] <= 0 or vb[3] <= 0)):
+                    continue
+                V = viewbox(vb, m.get("preserveAspectRatio"), 0, 0, mw, mh) if vb else ID
+                vbr = vb or (0, 0, mw, mh)
+                cvp = (vbr[2], vbr[3])
+                ref = []
+                for axis, kw in ((0, ("left", "center", "right")), (1, ("top", "center", "bottom"))):
+                    v = (m.get("refX" if axis == 0 else "refY") or "").strip()
+                    ref.append(vbr[axis] + vbr[axis + 2] * kw.index(v) / 2 if v in kw
+                               else length(v, "xy"[axis], cvp) if v else mp.mpf(0))
+                sc = mp.mpf(1) if m.get("markerUnits") == "userSpaceOnUse" else ext["sw"]
+                if sc == 0:
+                    continue
+                o = (m.get("orient") or "").strip()
+                if o == "auto" or o == "auto-start-reverse":
+                    a = ang + (mp.pi if o == "auto-start-reverse" and which == 0 else 0)
+                else:
+                    a = mp.radians(orient_deg(o))
+                R = (mp.cos(a) * sc, mp.sin(a) * sc, -mp.sin(a) * sc, mp.cos(a) * sc, 0, 0)
+                rp = (V[0] * ref[0] + V[4], V[3] * ref[1] + V[5])
+                outer = mul(ctm, mul(tr(x, y), mul(R, mul(tr(-rp[0], -rp[1]), V))))
+                box = ((-V[4]) / V[0], (-V[5]) / V[3], (mw - V[4]) / V[0], (mh - V[5]) / V[3]) \
+                    if env["clip"] else None
+                sub = {"sw": env["sw"], "mk": [None, None, None], "outer": outer, "box": box}
+                use = {"root": None, "w": None, "h": None, "context": context_of(paint)}
+                for ch in m:
+                    self.walk(ch, ID, cvp, env["visible"], env["paint"], chain, use, env["fs"], sub)
+
+    def walk(self, el, ctm, vp, visible, paint, chain, use, fs, ext):
         if not isinstance(el.tag, str):
             return                                  # comments, processing instructions
         ns, tag = split(el.tag)
@@ -709,6 +1018,8 @@ class Doc:
         if not cond_pass(el):
             return
         paint = paint_of(el, paint, use and use["context"])
+        ext = dict(ext, sw=stroke_width(prop(el, "stroke-width"), ext["sw"], vp),
+                   mk=[marker_ref(prop(el, k, True), ext["mk"][i]) for i, k in enumerate(MK)])
         via_use = use is not None and use["root"] is el
         if tag in NOT_RENDERED and not (tag == "symbol" and via_use):
             return
@@ -737,18 +1048,23 @@ class Doc:
             d = d_of(tag, el, vp)
             if d is None or not (visible or self.option == "hidden"):
                 return
-            if self.option == "stroked" and not stroke_shows(paint):
-                return
-            if self.option == "painted" and not (stroke_shows(paint) or fill_shows(paint, tag)):
-                return
-            self.count += 1
-            A = ctm[:4]
-            for prim in ref_paths.parse(d):
-                L, size = measure(prim, A)
-                self.total += L
-                if size is not None:
-                    self.arcs += 1
-                    self.arcscale += size
+            shown = not (self.option == "stroked" and not stroke_shows(paint)) and \
+                not (self.option == "painted" and not (stroke_shows(paint) or fill_shows(paint, tag)))
+            if shown:
+                self.count += 1
+                outer = ext["outer"]
+                A = (mul(outer, ctm) if outer else ctm)[:4]
+                for prim in ref_paths.parse(d):
+                    if ext["box"] is not None:
+                        self.total += clipped_length(prim, ctm, A, ext["box"])
+                        continue
+                    L, size = measure(prim, A)
+                    self.total += L
+                    if size is not None:
+                        self.arcs += 1
+                        self.arcscale += size
+            if tag in MARKABLE and ext["outer"] is None and any(ext["mk"]):
+                self.markers(el, tag, vp, ctm, paint, ext, chain)
             return
         if tag == "use":
             href = el.get("href", el.get(XLINK))
@@ -759,14 +1075,14 @@ class Doc:
             u = {"root": target, "w": attr_len(el, "width", "x", vp, None),
                  "h": attr_len(el, "height", "y", vp, None), "context": context_of(paint)}
             m = mul(ctm, tr(attr_len(el, "x", "x", vp, 0), attr_len(el, "y", "y", vp, 0)))
-            self.walk(target, m, vp, visible, paint, chain + [href[1:]], u, fs)
+            self.walk(target, m, vp, visible, paint, chain + [href[1:]], u, fs, ext)
             return
         children = [c for c in el if isinstance(c.tag, str)]
         if tag == "switch":                         # SVG 2 section 5.8: the first that passes
             first = [c for c in children if split(c.tag)[0] in (None, SVG_NS) and cond_pass(c)]
             children = first[:1]
         for ch in children:
-            self.walk(ch, ctm, vp, visible, paint, chain, use and dict(use, root=None), fs)
+            self.walk(ch, ctm, vp, visible, paint, chain, use and dict(use, root=None), fs, ext)
 
 
 def second_opinion(path):

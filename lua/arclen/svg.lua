@@ -79,10 +79,11 @@ local function isfinite(x)
   return x == x and x ~= huge and x ~= -huge
 end
 
--- Does the text contain what could be a <use> element?  (Decides whether
--- subtrees with ids are kept; a false alarm costs memory, not results.)
+-- Does the text contain what could be a <use> or <marker> element?  (Decides
+-- whether subtrees with ids are kept; a false alarm costs memory, not results.)
 local function may_use(s)
   return find(s, "<use", 1, true) or find(s, ":use", 1, true)
+    or find(s, "<marker", 1, true) or find(s, ":marker", 1, true)
 end
 
 -- Might s refer to a paint server?  Then the scan for the ids is worth

@@ -264,6 +264,7 @@ static void push_element(lua_State *L, const svgdoc_element *e) {
   set_string(L, "tag", e->tag);
   set_string(L, "layer", e->layer);
   set_string(L, "use", e->use);
+  set_string(L, "marker", e->marker);
   set_d(L, &e->shape);
   lua_pushinteger(L, (lua_Integer)e->line);
   lua_setfield(L, -2, "line");

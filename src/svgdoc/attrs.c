@@ -117,6 +117,27 @@ bad:
   svgdoc_fail(D, line, col, "%s='%s' is not a length", what, s);
 }
 
+int svgdoc_length_try(const char *s, int kind, const svgdoc_viewport *vp,
+                      double *v) {
+  size_t n = strlen(s), i = 0, e, u;
+  int k;
+  while (i < n && space((unsigned char)s[i])) i++;
+  e = i < n ? arclen_decimal_scan(s, n, i, v) : i;
+  if (e == i) return 0;
+  for (u = e; u < n && is_letter((unsigned char)s[u]); u++) {}
+  if (u < n && s[u] == '%') u++;
+  for (i = u; i < n && space((unsigned char)s[i]); i++) {}
+  if (i < n || (k = unit_of(s + e, u - e)) < 0) return 0;
+  if (UNITS[k].px > 0) *v = *v * UNITS[k].px / UNITS[k].div;
+  else if (UNITS[k].px < 0)
+    *v = *v * (UNITS[k].px == -1 ? vp->em : vp->rem) / UNITS[k].div;
+  else if (!vp->has) return 0;
+  else if (kind == 'x') *v = *v / 100 * vp->w;
+  else if (kind == 'y') *v = *v / 100 * vp->h;
+  else *v = *v / 100 * sqrt((vp->w * vp->w + vp->h * vp->h) / 2);
+  return isfinite(*v);
+}
+
 int svgdoc_len_attr(svgdoc *D, unsigned long line, unsigned long col,
                     const char **atts, const char *name, int kind,
                     const svgdoc_viewport *vp, double *v) {
@@ -394,7 +415,8 @@ void svgdoc_viewbox_matrix(svgdoc *D, unsigned long line, unsigned long col,
 
 static const char *const PROPS[SVGDOC_NPROPS] = {
   "display", "visibility", "stroke", "stroke-width", "fill", "fill-opacity",
-  "stroke-opacity", "opacity", "color", "font-size"};
+  "stroke-opacity", "opacity", "color", "font-size", "marker-start",
+  "marker-mid", "marker-end", "overflow"};
 
 int svgdoc_prop_index(const char *name) {
   int k;
@@ -411,16 +433,16 @@ static int name_byte(unsigned char c) {
 }
 
 /* Trimmed and lower-cased s[0 .. n-1] into b, but for what url( ... )
-** holds: ids are case-sensitive. */
+** holds (ids are case-sensitive), or all of it when cased. */
 static const char *normalised(svgdoc *D, svgdoc_buffer *b, const char *s,
-                              size_t n) {
+                              size_t n, int cased) {
   size_t i;
   int in_url = 0;
   while (n > 0 && space((unsigned char)*s)) s++, n--;
   while (n > 0 && space((unsigned char)s[n - 1])) n--;
   svgdoc_reserve(D, b, n + 1);
   for (i = 0; i < n; i++) {
-    char c = in_url ? s[i] : (char)lower((unsigned char)s[i]);
+    char c = cased || in_url ? s[i] : (char)lower((unsigned char)s[i]);
     b->s[i] = c;
     if (c == '(' && i >= 3 && memcmp(b->s + i - 3, "url", 3) == 0) in_url = 1;
     else if (c == ')') in_url = 0;
@@ -490,12 +512,34 @@ int svgdoc_prop_valid(int k, const char *s) {
   return svgdoc_paint_valid(k, s);
 }
 
+/* style_value of property k, where a marker longhand also takes the
+** shorthand `marker`: the later declaration of the two wins (CSS Cascade 4
+** section 6: a shorthand sets its longhands where it stands). */
+static int style_of(const char *s, int k, int important, const char **v,
+                    size_t *vn) {
+  const char *w;
+  size_t wn;
+  int found = style_value(s, PROPS[k], important, v, vn);
+  if (SVGDOC_CASED_PROP(k) && style_value(s, "marker", important, &w, &wn) &&
+      (!found || w > *v)) {
+    *v = w, *vn = wn;
+    found = 1;
+  }
+  return found;
+}
+
 void svgdoc_properties(svgdoc *D, unsigned long line, unsigned long col,
                        const char **atts, const struct svgdoc_css_match *sheet,
                        const char *out[]) {
   const char *style = svgdoc_attr(atts, "style");
+  /* styles rarely name the marker properties or overflow: one scan says */
+  int marked = style && strstr(style, "marker") != NULL;
+  int over = style && strstr(style, "overflow") != NULL;
   int k, origin;
   for (k = 0; k < SVGDOC_NPROPS; k++) {
+    const char *st = style;
+    if ((SVGDOC_CASED_PROP(k) && !marked) || (k == SVGDOC_OVERFLOW && !over))
+      st = NULL;
     out[k] = NULL;
     /* from the strongest down (SVG 2 section 6.3; Cascade 4 section 6); an
     ** invalid value is dropped and the next origin's applies (CSS Syntax 3
@@ -504,17 +548,17 @@ void svgdoc_properties(svgdoc *D, unsigned long line, unsigned long col,
     for (origin = 0; origin < 5 && out[k] == NULL; origin++) {
       const char *v = NULL, *n;
       size_t vn = 0;
-      if (origin == 0 && style && style_value(style, PROPS[k], 1, &v, &vn)) {
+      if (origin == 0 && st && style_of(st, k, 1, &v, &vn)) {
       } else if (origin == 1 && sheet && (v = sheet->important[k]) != NULL) {
         vn = strlen(v);
-      } else if (origin == 2 && style && style_value(style, PROPS[k], 0, &v, &vn)) {
+      } else if (origin == 2 && st && style_of(st, k, 0, &v, &vn)) {
       } else if (origin == 3 && sheet && (v = sheet->normal[k]) != NULL) {
         vn = strlen(v);
       } else if (origin == 4 && (v = svgdoc_attr(atts, PROPS[k])) != NULL) {
         vn = strlen(v);
       }
       if (v == NULL) continue;
-      n = normalised(D, &D->props[k], v, vn);
+      n = normalised(D, &D->props[k], v, vn, SVGDOC_CASED_PROP(k));
       if (svgdoc_prop_valid(k, n)) out[k] = n;
       else
         svgdoc_warn(D, line, col, svgdoc_format(D, "%s '%s' is not a valid "

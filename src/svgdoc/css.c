@@ -591,7 +591,7 @@ static size_t declarations(parser *p, size_t b, size_t e, size_t *first) {
   while (p->i < p->n) {
     const char *name;
     size_t vs, ve;
-    int prop, important = 0;
+    int prop, important = 0, shorthand, j;
     ws(p);
     if (p->i >= p->n) break;
     name = ident(p, 1);
@@ -607,6 +607,9 @@ static size_t declarations(parser *p, size_t b, size_t e, size_t *first) {
     ve = p->i;
     if (p->i < p->n) p->i++;
     prop = svgdoc_prop_index(name);
+    /* the shorthand: its three longhands where it stands (SVG 2 11.6.3) */
+    shorthand = prop < 0 && strcmp(name, "marker") == 0;
+    if (shorthand) prop = SVGDOC_MARKER_START;
     if (prop < 0 && strcmp(name, "transform") == 0 && !C->transform_warned) {
       /* it would move what is measured: say that it is not */
       warn_at(p, "style sheet: the CSS transform property is not read (the "
@@ -652,13 +655,15 @@ static size_t declarations(parser *p, size_t b, size_t e, size_t *first) {
       }
       memcpy(p->out, p->t + vs, ve - vs);  /* kept as written: url(#Id) */
     }
-    C->decls = grow(p->D, C->decls, &C->decls_room, C->ndecls, sizeof *C->decls);
-    C->decls[C->ndecls].prop = prop;
-    C->decls[C->ndecls].important = important;
-    C->decls[C->ndecls].value = p->out;
+    for (j = 0; j <= (shorthand ? 2 : 0); j++) {
+      C->decls = grow(p->D, C->decls, &C->decls_room, C->ndecls, sizeof *C->decls);
+      C->decls[C->ndecls].prop = prop + j;
+      C->decls[C->ndecls].important = important;
+      C->decls[C->ndecls].value = p->out;
+      C->ndecls++;
+      count++;
+    }
     p->out += ve - vs + 1;
-    C->ndecls++;
-    count++;
   }
   p->n = n;
   return count;

@@ -30,7 +30,12 @@ typedef struct svgdoc_viewport {
 enum { SVGDOC_DISPLAY, SVGDOC_VISIBILITY, SVGDOC_STROKE,
        SVGDOC_STROKE_WIDTH, SVGDOC_FILL, SVGDOC_FILL_OPACITY,
        SVGDOC_STROKE_OPACITY, SVGDOC_OPACITY, SVGDOC_COLOR, SVGDOC_FONT_SIZE,
-       SVGDOC_NPROPS };
+       SVGDOC_MARKER_START, SVGDOC_MARKER_MID, SVGDOC_MARKER_END,
+       SVGDOC_OVERFLOW, SVGDOC_NPROPS };
+/* The marker properties keep their case (url(#Id): ids are case-sensitive);
+** the shorthand `marker` sets all three in sheets and style="" only (it
+** is no presentation attribute: SVG 2 section 11.6.3). */
+#define SVGDOC_CASED_PROP(k) ((k) >= SVGDOC_MARKER_START && (k) <= SVGDOC_MARKER_END)
 
 typedef struct svgdoc_buffer {
   char *s;
@@ -79,7 +84,7 @@ struct svgdoc {
   int root_seen, record, draining;
   size_t rec;                            /* depth inside kept subtrees */
   size_t *open_ev;                       /* the kept event of each */
-  size_t bytes, nentities, ngroups, replayed;
+  size_t bytes, nentities, ngroups, replayed, mreplayed;
   /* kept subtrees, for <use> */
   svgdoc_event *events;
   size_t nevents, events_room;
@@ -107,6 +112,7 @@ struct svgdoc {
   size_t skipped[SVGDOC_NSKIPPED];
   svgdoc_info info;
   svgdoc_buffer props[SVGDOC_NPROPS], scratch;
+  svgdoc_buffer marker_buf;              /* a shape's vertices (marker.c) */
   /* style sheets (css.c): the rules, the open elements as selectors see
   ** them (max_depth + 2), the <style> being read (its depth + 1) */
   struct svgdoc_css *css;
@@ -219,6 +225,10 @@ const char *svgdoc_prop_name(int k);
 ** inherited. */
 double svgdoc_font_size(svgdoc *D, unsigned long line, unsigned long col,
                         const char *s, double em, double rem);
+/* s as a length (as svgdoc_length) into *v; 0 when it is not one (no
+** error: for properties, where CSS ignores an invalid value). */
+int svgdoc_length_try(const char *s, int kind, const svgdoc_viewport *vp,
+                      double *v);
 /* A warning at a place, an error under o.strict (memory.c). */
 void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
                  const char *msg);

@@ -22,6 +22,7 @@
 #include "svgdoc/cond.h"
 #include "svgdoc/css.h"
 #include "svgdoc/internal.h"
+#include "svgdoc/marker.h"
 #include "svgdoc/paint.h"
 
 #define SVG_NS "http://www.w3.org/2000/svg"
@@ -47,6 +48,10 @@ static const char *const GROUPS[] = {"g", "a", "switch", "svg"};
 ** without SVG 2's at-risk mesh gradients and hatches) */
 static const char *const PAINT_SERVERS[] = {"linearGradient", "radialGradient",
                                             "pattern"};
+/* The shapes markers are drawn on (SVG 2 section 11.6: markable elements). */
+static const char *const MARKABLE[] = {"path", "line", "polyline", "polygon"};
+static const char *const MARKER_PROPS[] = {"marker-start", "marker-mid",
+                                           "marker-end"};
 
 /* The entry of tag in list[0 .. n-1], or -1. */
 static int find_tag(const char *const *list, int n, const char *tag) {
@@ -61,7 +66,10 @@ typedef struct svgdoc_frame {
   svgdoc_mark mark;              /* the tmp pool when it opened */
   size_t depth;
   int skip, top, is_switch, switch_done, visible;
+  int props;                     /* paint, sw, mk computed (for markers) */
   svgdoc_paint paint;            /* what its stroke and fill show */
+  double sw;                     /* its stroke-width (markerUnits) */
+  const char *mk[3];             /* marker-start, -mid, -end ids, or NULL */
   svgdoc_matrix ctm;
   svgdoc_viewport vp;
   const char *layer;
@@ -75,9 +83,15 @@ typedef struct svgdoc_use {
   svgdoc_viewport vp;
   int visible, has_w, has_h;
   svgdoc_paint paint;
-  double w, h;
+  double w, h, sw;
+  const char *mks[3];            /* the marker properties it passes on */
   const char **chain;            /* the ids being expanded around it */
   size_t nchain;
+  svgdoc_marker_set *mset;       /* not a use: a shape's instances of a
+                                 ** marker (href), drawn in its place */
+  svgdoc_marker_set *inmk;       /* a use inside a marker's content: the
+                                 ** instance it is drawn for */
+  const char *inmk_id;           /* and that marker's id */
 } svgdoc_use;
 
 /* The use a replayed element belongs to. */
@@ -100,6 +114,7 @@ struct svgdoc_event {
   size_t close;                  /* the index of its end event (0: open) */
   int svgns;
   int ready;                     /* closed, and so are all its uses' targets */
+  svgdoc_marker_def *mdef;       /* a <marker>: what its content inherits */
 };
 
 /* Room for one more item in the growing array *a of *room items. */
@@ -343,7 +358,12 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
                  const svgdoc_shadow *sh) {
   const double *C = f->ctm;
   const char *id = svgdoc_attr(atts, "id");
-  const char *use = sh ? sh->u->href : NULL;
+  /* a marker's content: placed by the instance, clipped to its viewport */
+  const svgdoc_marker_set *mk = sh ? (sh->u->mset ? sh->u->mset : sh->u->inmk)
+                                   : NULL;
+  const char *use = sh && !sh->u->mset ? sh->u->href : NULL;
+  const char *marker = mk ? sh->u->mset ? sh->u->href : sh->u->inmk_id : NULL;
+  svgdoc_matrix full;
   int identity = C[0] == 1 && C[1] == 0 && C[2] == 0 && C[3] == 1 &&
                  C[4] == 0 && C[5] == 0;
   const char *d;
@@ -393,6 +413,12 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
                   id ? id : "", id ? "'" : "", m);
     }
   }
+  if (mk) {
+    if (svgdoc_clip_map(&pd, mk->clip ? mk->box : NULL, mk->outer) != 0)
+      svgdoc_nomem(D);
+    svgdoc_mul(mk->outer, C, full);
+    C = full;
+  }
   {
     /* a control point beyond the doubles (a line from -1e308 to 1e308
     ** has its thirds there): the length cannot be a double either */
@@ -417,7 +443,7 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
   ** open elements' pool (a stream hands it over, the queue holds it) */
   size = sizeof *e + nums + (shape->d ? strlen(shape->d) + 1 : 0) +
          (id ? strlen(id) + 1 : 0) + (f->layer ? strlen(f->layer) + 1 : 0) +
-         (use ? strlen(use) + 1 : 0);
+         (use ? strlen(use) + 1 : 0) + (marker ? strlen(marker) + 1 : 0);
   e = malloc(size);
   if (e == NULL) {
     arclen_pathdata_free(&pd);
@@ -433,6 +459,7 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
   e->tag = tag;                        /* one of SHAPES */
   e->layer = own(&at, f->layer);
   e->use = own(&at, use);
+  e->marker = own(&at, marker);
   e->line = line, e->col = col;
   e->stroked = svgdoc_paint_stroked(&f->paint);
   e->filled = svgdoc_paint_filled(&f->paint, tag);
@@ -488,6 +515,51 @@ static void paint_servers(svgdoc *D, unsigned long line, unsigned long col,
   }
 }
 
+/* The markers of a drawn shape (SVG 2 11.6.2): for each marker property
+** that names one, its instances at the shape's vertices (marker-start the
+** first, marker-end the last, marker-mid the others), drawn after the
+** shape like a <use> of the marker in its place: at once, or behind the
+** queue when the marker is not read yet.  None on the shapes of a
+** marker's own content (SVG 2 11.6: markers are not drawn inside
+** markers). */
+static void markers(svgdoc *D, const svgdoc_frame *f, const char *tag,
+                    const svgdoc_shape *shape, unsigned long line,
+                    unsigned long col, const svgdoc_shadow *sh) {
+  double *v, *all;
+  size_t n, k;
+  if (lookup(MARKABLE, tag) < 0 || (sh && (sh->u->mset || sh->u->inmk)))
+    return;
+  n = svgdoc_marker_vertices(D, shape, &v);
+  if (n == 0) return;
+  all = svgdoc_alloc(D, 3 * n * sizeof *all);
+  memcpy(all, v, 3 * n * sizeof *all);
+  for (k = 0; k < 3; k++) {
+    svgdoc_marker_set *ms;
+    svgdoc_use *u;
+    size_t first = k == SVGDOC_MK_START ? 0 : k == SVGDOC_MK_MID ? 1 : n - 1;
+    size_t count = k != SVGDOC_MK_MID ? 1 : n > 2 ? n - 2 : 0;
+    if (f->mk[k] == NULL || count == 0) continue;
+    ms = svgdoc_alloc(D, sizeof *ms);
+    memset(ms, 0, sizeof *ms);
+    ms->which = (int)k, ms->n = count, ms->v = all + 3 * first;
+    ms->sw = f->sw, ms->vp = f->vp, ms->tag = tag;
+    memcpy(ms->ctm, f->ctm, sizeof ms->ctm);
+    u = svgdoc_alloc(D, sizeof *u);
+    memset(u, 0, sizeof *u);
+    u->href = f->mk[k], u->layer = f->layer;
+    u->line = line, u->col = col;
+    memcpy(u->ctm, f->ctm, sizeof u->ctm);
+    u->vp = f->vp, u->visible = f->visible;
+    u->paint = f->paint;             /* context-fill, context-stroke: the shape's */
+    u->sw = f->sw;
+    u->chain = sh ? sh->chain : NULL;
+    u->nchain = sh ? sh->nchain : 0;
+    u->mset = ms;
+    if (sh) expand(D, u);
+    else use_at_top(D, u);
+  }
+}
+
 /* The child frame f of element (tag, atts) under parent; f->skip when
 ** nothing inside it is drawn.  sh: the use this element is replayed for. */
 static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
@@ -496,10 +568,11 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
                          const svgdoc_shadow *sh) {
   const char *P[SVGDOC_NPROPS], *s;
   svgdoc_css_match M;
-  int shape, skipped, is_svg = strcmp(tag, "svg") == 0,
+  int k, shape, skipped, is_svg = strcmp(tag, "svg") == 0,
                       is_symbol = strcmp(tag, "symbol") == 0;
   f->depth = parent->depth + 1;
   f->skip = 1;
+  f->props = 0;
   if (f->depth > (size_t)D->o.max_depth)
     svgdoc_fail(D, line, col, "elements nested deeper than %d", D->o.max_depth);
   if (parent->skip || !svgns) return;            /* a foreign element */
@@ -526,6 +599,10 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
   }
   paint_servers(D, line, col, P);
   svgdoc_paint_apply(&f->paint, P, sh ? &sh->u->paint : NULL);
+  f->sw = svgdoc_stroke_width(P[SVGDOC_STROKE_WIDTH], parent->sw, &f->vp);
+  for (k = 0; k < 3; k++)
+    f->mk[k] = svgdoc_marker_ref(D, P[SVGDOC_MARKER_START + k], parent->mk[k]);
+  f->props = 1;
   if (lookup(NOT_RENDERED, tag) >= 0 && !(sh && sh->root && is_symbol)) return;
   skipped = find_tag(svgdoc_skipped_tags, SVGDOC_NSKIPPED, tag);
   if (skipped >= 0) {
@@ -601,8 +678,12 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
   if (shape >= 0) {
     svgdoc_shape drawn;
     if (svgdoc_shape_get(D, line, col, tag, atts, &f->vp, &drawn) &&
-        (f->visible || D->o.hidden) && shown(D, &f->paint, tag))
-      draw(D, f, SHAPES[shape], &drawn, atts, line, col, sh);
+        (f->visible || D->o.hidden)) {
+      if (shown(D, &f->paint, tag))
+        draw(D, f, SHAPES[shape], &drawn, atts, line, col, sh);
+      if (f->mk[0] || f->mk[1] || f->mk[2])
+        markers(D, f, SHAPES[shape], &drawn, line, col, sh);
+    }
     f->skip = 1;                     /* shapes have no rendered children */
   } else if (strcmp(tag, "use") == 0) {
     const char *href = svgdoc_attr(atts, "href");
@@ -635,12 +716,57 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
       u->vp = *vp;
       u->visible = f->visible, u->paint = f->paint;
       u->has_w = hw, u->w = uw, u->has_h = hh, u->h = uh;
+      u->sw = f->sw;
+      memcpy(u->mks, f->mk, sizeof u->mks);
+      u->mset = NULL;
+      u->inmk = sh ? (sh->u->mset ? sh->u->mset : sh->u->inmk) : NULL;
+      u->inmk_id = sh ? (sh->u->mset ? sh->u->href : sh->u->inmk_id) : NULL;
       u->chain = sh ? sh->chain : NULL;
       u->nchain = sh ? sh->nchain : 0;
       if (sh) expand(D, u);
       else use_at_top(D, u);
     }
     f->skip = 1;                     /* use's children are not rendered */
+  }
+}
+
+/* The instances of marker set u->mset: the marker's content (the events
+** after the marker's start, before its end) replayed for each vertex
+** under the placement marker.c computes, from a frame of what the marker
+** element inherits where it stands (SVG 2 11.6.2). */
+static void expand_marker(svgdoc *D, const svgdoc_use *u, size_t start,
+                          size_t last, svgdoc_frame *stack,
+                          const svgdoc_shadow *sh) {
+  const svgdoc_event *m = &D->events[start];
+  size_t v, i, top;
+  for (v = 0; v < u->mset->n; v++) {
+    svgdoc_viewport vp;
+    if (!svgdoc_marker_place(D, u->mset, v, m->atts, m->mdef, m->line, m->col,
+                             &vp))
+      continue;
+    /* linear in the vertices, but a marker of many elements on many
+    ** vertices is still a bomb: the events replayed are capped */
+    D->mreplayed += last - start + 1;
+    if (D->mreplayed > SVGDOC_MAX_MARKER_REPLAYED)
+      svgdoc_fail(D, u->line, u->col, "markers replay more than %ld elements "
+                  "(their content's start and end events, per vertex)",
+                  (long)SVGDOC_MAX_MARKER_REPLAYED);
+    memset(&stack[0], 0, sizeof stack[0]);
+    svgdoc_translate(0, 0, stack[0].ctm);  /* the content's own coordinates */
+    stack[0].vp = vp;
+    stack[0].visible = m->mdef->visible, stack[0].paint = m->mdef->paint;
+    stack[0].sw = m->mdef->sw, stack[0].props = 1;
+    stack[0].layer = u->layer;
+    for (i = start + 1, top = 0; i < last; i++) {
+      const svgdoc_event *x = &D->events[i];
+      if (x->tag) {
+        open_element(D, &stack[top], &stack[top + 1], x->svgns, x->tag,
+                     x->atts, x->line, x->col, sh);
+        top++;
+      } else {
+        top--;
+      }
+    }
   }
 }
 
@@ -653,8 +779,19 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
   const char **chain;
   if (!find_id(&D->ids, u->href, strlen(u->href), &start)) {
     /* SVG 2 section 5.6: a use with an invalid reference is not rendered */
-    lenient(D, u->line, u->col, svgdoc_format(D, "<use> of '#%s': no element "
-            "has that id", u->href), "nothing drawn");
+    lenient(D, u->line, u->col, u->mset
+            ? svgdoc_format(D, "%s of '#%s': no <marker> has that id",
+                            MARKER_PROPS[u->mset->which], u->href)
+            : svgdoc_format(D, "<use> of '#%s': no element has that id",
+                            u->href), "nothing drawn");
+    return;
+  }
+  if (u->mset && (!D->events[start].svgns || D->events[start].mdef == NULL ||
+                  strcmp(D->events[start].tag, "marker") != 0)) {
+    /* kept for a <use>, but no marker: an invalid reference (SVG 2 11.6.2) */
+    lenient(D, u->line, u->col, svgdoc_format(D, "%s of '#%s': the element "
+            "with that id is not a <marker>", MARKER_PROPS[u->mset->which],
+            u->href), "nothing drawn");
     return;
   }
   for (k = 0; k < u->nchain; k++) {
@@ -684,10 +821,12 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
   chain = svgdoc_alloc(D, (u->nchain + 1) * sizeof *chain);
   if (u->nchain) memcpy(chain, u->chain, u->nchain * sizeof *chain);
   chain[u->nchain] = u->href;
-  D->replayed += last - start + 1;
-  if (D->replayed > SVGDOC_MAX_REPLAYED)
-    svgdoc_fail(D, u->line, u->col, "<use> expansions replay more than %d "
-                "elements", SVGDOC_MAX_REPLAYED);
+  if (u->mset == NULL) {                 /* markers have their own budget */
+    D->replayed += last - start + 1;
+    if (D->replayed > SVGDOC_MAX_REPLAYED)
+      svgdoc_fail(D, u->line, u->col, "<use> expansions replay more than %d "
+                  "elements", SVGDOC_MAX_REPLAYED);
+  }
   root_sh.root = 1, root_sh.u = u, root_sh.chain = chain;
   root_sh.nchain = u->nchain + 1;
   sh = root_sh;
@@ -701,10 +840,16 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
     D->xstacks[u->nchain] = stack;
   }
   memset(&stack[0], 0, sizeof stack[0]);
+  if (u->mset) {
+    expand_marker(D, u, start, last, stack, &sh);
+    return;
+  }
   memcpy(stack[0].ctm, u->ctm, sizeof stack[0].ctm);
   stack[0].vp = u->vp;
   stack[0].visible = u->visible, stack[0].paint = u->paint;
   stack[0].layer = u->layer;
+  stack[0].sw = u->sw, stack[0].props = 1;
+  memcpy(stack[0].mk, u->mks, sizeof stack[0].mk);
   for (i = start; i <= last; i++) {
     const svgdoc_event *x = &D->events[i];
     if (x->tag) {
@@ -805,7 +950,8 @@ static void drain(svgdoc *D, int force) {
 static void use_at_top(svgdoc *D, svgdoc_use *u) {
   svgdoc_use *c;
   char *at;
-  size_t budget = SVGDOC_MAX_REPLAYED;
+  size_t budget = SVGDOC_MAX_REPLAYED, size;
+  int k;
   if (!D->record ||               /* nothing kept: the missing id, now */
       (svgdoc_bloom_absent(D, u->href, strlen(u->href), 0) &&
        !find_id(&D->ids, u->href, strlen(u->href), NULL)) ||
@@ -815,14 +961,25 @@ static void use_at_top(svgdoc *D, svgdoc_use *u) {
     return;
   }
   held_room(D);
-  c = malloc(sizeof *c + strlen(u->href) + 1 + (u->id ? strlen(u->id) + 1 : 0) +
-             (u->layer ? strlen(u->layer) + 1 : 0));
+  /* a marker set's vertices first (aligned as c is), then the strings */
+  size = sizeof *c + strlen(u->href) + 1 + (u->id ? strlen(u->id) + 1 : 0) +
+         (u->layer ? strlen(u->layer) + 1 : 0);
+  if (u->mset) size += sizeof *u->mset + 3 * u->mset->n * sizeof(double);
+  for (k = 0; k < 3; k++) size += u->mks[k] ? strlen(u->mks[k]) + 1 : 0;
+  c = malloc(size);
   if (c == NULL) svgdoc_nomem(D);
   *c = *u;
   at = (char *)(c + 1);
+  if (u->mset) {
+    c->mset = memcpy(at, u->mset, sizeof *u->mset);
+    at += sizeof *u->mset;
+    c->mset->v = memcpy(at, u->mset->v, 3 * u->mset->n * sizeof(double));
+    at += 3 * u->mset->n * sizeof(double);
+  }
   c->href = own(&at, u->href);
   c->id = own(&at, u->id);
   c->layer = own(&at, u->layer);
+  for (k = 0; k < 3; k++) c->mks[k] = own(&at, u->mks[k]);
   c->chain = NULL, c->nchain = 0;        /* at the top level */
   if (D->waiting == u->href) D->waiting = c->href;   /* u's pool goes */
   if (!holding(D)) D->held_head = D->held_tail = 0;
@@ -898,6 +1055,11 @@ static void open_root(svgdoc *D, const char **atts, unsigned long line,
     f->visible = 0;
   paint_servers(D, line, col, P);
   svgdoc_paint_apply(&f->paint, P, NULL);
+  f->sw = svgdoc_stroke_width(P[SVGDOC_STROKE_WIDTH], 1, &f->vp);
+  f->mk[0] = svgdoc_marker_ref(D, P[SVGDOC_MARKER_START], NULL);
+  f->mk[1] = svgdoc_marker_ref(D, P[SVGDOC_MARKER_MID], NULL);
+  f->mk[2] = svgdoc_marker_ref(D, P[SVGDOC_MARKER_END], NULL);
+  f->props = 1;
   if ((s = svgdoc_attr(atts, "transform")) != NULL) {  /* SVG 2 allows it */
     svgdoc_matrix T;
     svgdoc_transform(D, line, col, s, T);
@@ -912,11 +1074,12 @@ static void position(svgdoc *D, unsigned long *line, unsigned long *col) {
   *col = (unsigned long)XML_GetCurrentColumnNumber((XML_Parser)D->parser) + 1;
 }
 
-/* Does s[0 .. n-1] contain what could be a <use> element? */
+/* Does s[0 .. n-1] contain what could be a <use> or <marker> element? */
 static int may_use(const char *s, size_t n) {
   size_t i;
   for (i = 0; i + 4 <= n; i++)
-    if ((s[i] == '<' || s[i] == ':') && memcmp(s + i + 1, "use", 3) == 0)
+    if ((s[i] == '<' || s[i] == ':') && (memcmp(s + i + 1, "use", 3) == 0 ||
+                                         (i + 7 <= n && memcmp(s + i + 1, "marker", 6) == 0)))
       return 1;
   return 0;
 }
@@ -942,10 +1105,68 @@ static void keep(svgdoc *D, int svgns, const char *tag, const char **atts,
   x = &D->events[D->nevents];
   x->tag = copy(D, tag), x->atts = a, x->line = line, x->col = col;
   D->arena = &D->tmp;
-  x->close = 0, x->svgns = svgns, x->ready = 0;
+  x->close = 0, x->svgns = svgns, x->ready = 0, x->mdef = NULL;
   D->open_ev[D->rec++] = D->nevents;
   if (id) add_id(D, &D->ids, svgdoc_attr(a, "id"), D->nevents);
   D->nevents++;
+}
+
+/* Element (atts) at depth (its ancestors open below it) applied to what a
+** marker's content inherits: its cascaded properties (sheets matched
+** live), whatever its display. */
+static void marker_inherit(svgdoc *D, svgdoc_marker_def *m,
+                           svgdoc_viewport *vp, const char **atts,
+                           size_t depth, unsigned long line,
+                           unsigned long col) {
+  const char *P[SVGDOC_NPROPS], *s;
+  svgdoc_css_match M;
+  svgdoc_css_for(D, atts, 1, depth, line, col, &M);
+  svgdoc_properties(D, line, col, atts, &M, P);
+  vp->em = m->em = svgdoc_font_size(D, line, col, P[SVGDOC_FONT_SIZE], m->em,
+                                    vp->rem);
+  if ((s = P[SVGDOC_VISIBILITY]) != NULL) {
+    if (strcmp(s, "hidden") == 0 || strcmp(s, "collapse") == 0) m->visible = 0;
+    else if (strcmp(s, "visible") == 0) m->visible = 1;
+  }
+  /* warned of where the element itself was read */
+  P[SVGDOC_FILL] = svgdoc_paint_server(D, P[SVGDOC_FILL]);
+  P[SVGDOC_STROKE] = svgdoc_paint_server(D, P[SVGDOC_STROKE]);
+  svgdoc_paint_apply(&m->paint, P, NULL);
+  m->sw = svgdoc_stroke_width(P[SVGDOC_STROKE_WIDTH], m->sw, vp);
+  s = P[SVGDOC_OVERFLOW];              /* the marker's own counts (the last) */
+  m->clip = !(s && (strcmp(s, "visible") == 0 || strcmp(s, "auto") == 0));
+}
+
+/* What the content of the <marker> (atts) starting now inherits: its own
+** properties over those of its ancestors (SVG 2 11.6.2: from the marker's
+** ancestors, whatever their display, never from the shape that references
+** it): from the nearest ancestor whose frame computed them, then down the
+** open elements whose frames did not (inside <defs>, display:none), as
+** the style sheets' matcher keeps them; and its overflow (the UA sheet's
+** hidden: clipped to its viewport unless visible or auto). */
+static svgdoc_marker_def *marker_def(svgdoc *D, const char **atts,
+                                     unsigned long line, unsigned long col) {
+  svgdoc_marker_def *m;
+  svgdoc_viewport vp = {0, 0, 0, 16, 16};
+  size_t k, from = 0;
+  D->arena = &D->keep;
+  m = svgdoc_alloc(D, sizeof *m);
+  D->arena = &D->tmp;
+  svgdoc_paint_initial(&m->paint);
+  m->visible = 1, m->sw = 1, m->em = 16;
+  if (D->depth > 0) vp.em = vp.rem = m->em = D->stack[0].vp.rem;
+  for (k = D->depth; k-- > 0;)
+    if (D->stack[k].props) {
+      const svgdoc_frame *a = &D->stack[k];
+      m->paint = a->paint, m->visible = a->visible, m->sw = a->sw;
+      m->em = a->vp.em, vp = a->vp;
+      from = k + 1;
+      break;
+    }
+  for (k = from; k < D->depth; k++)
+    marker_inherit(D, m, &vp, D->nodes[k].atts, k, line, col);
+  marker_inherit(D, m, &vp, atts, D->depth, line, col);
+  return m;
 }
 
 /* Is the subtree of the element with this id (NULL: none) kept for
@@ -986,6 +1207,7 @@ static void start_element(svgdoc *D, const char *qname, const char **atts) {
   ** the depth counts */
   if (parent && parent->skip && !keep_it) {
     D->stack[D->depth].skip = 1;
+    D->stack[D->depth].props = 0;
     D->stack[D->depth].depth = parent->depth + 1;
     D->depth++;
     return;
@@ -1010,6 +1232,8 @@ static void start_element(svgdoc *D, const char *qname, const char **atts) {
     keep(D, svgns, tag, atts, line, col, id);
     atts = D->events[D->nevents - 1].atts;
     tag = D->events[D->nevents - 1].tag;
+    if (svgns && strcmp(tag, "marker") == 0)
+      D->events[D->nevents - 1].mdef = marker_def(D, atts, line, col);
   }
   open_element(D, &D->stack[D->depth - 1], &D->stack[D->depth], svgns, tag,
                atts, line, col, NULL);
@@ -1023,6 +1247,7 @@ static void end_element(svgdoc *D) {
     D->events = grow(D, D->events, &D->events_room, D->nevents, sizeof *D->events);
     D->events[D->nevents].tag = NULL;
     D->events[D->nevents].ready = 0;
+    D->events[D->nevents].mdef = NULL;
     x = &D->events[D->open_ev[D->rec - 1]];
     D->events[D->open_ev[D->rec - 1]].close = D->nevents;
     D->nevents++;
@@ -1159,7 +1384,7 @@ void svgdoc_free(svgdoc *D) {
   svgdoc_free_pool(D);
   for (k = 0; k < SVGDOC_NPROPS; k++) free(D->props[k].s);
   for (k = 0; k <= SVGDOC_MAX_USE_DEPTH; k++) free(D->xstacks[k]);
-  free(D->scratch.s), free(D->held.s);
+  free(D->scratch.s), free(D->held.s), free(D->marker_buf.s);
   svgdoc_css_free(D);
   free(D->nodes), free(D->style_text.s), free(D->style_media.s);
   free(D->stack), free(D->open_ev), free(D->events);
@@ -1201,10 +1426,15 @@ static void XMLCALL on_scan_start(void *ud, const XML_Char *qname,
        (in_svg_ns(qname, tag) && lookup(PAINT_SERVERS, tag) >= 0 &&
         svgdoc_bloom_add(D, id, strlen(id), 1) != 0)))
     D->scan_lost = 1;                    /* out of memory: ids unknown */
-  if (strcmp(tag, "use") != 0) return;
-  href = svgdoc_attr(atts, "href");
-  if (href == NULL) href = svgdoc_attr(atts, XLINK_HREF);
-  if (!ref_id(href, &id, &n) || find_id(&D->refs, id, n, NULL)) return;
+  if (strcmp(tag, "marker") == 0 && id != NULL) {
+    n = strlen(id);                      /* every marker is kept: properties */
+  } else {                               /* and style sheets refer to them */
+    if (strcmp(tag, "use") != 0) return;
+    href = svgdoc_attr(atts, "href");
+    if (href == NULL) href = svgdoc_attr(atts, XLINK_HREF);
+    if (!ref_id(href, &id, &n)) return;
+  }
+  if (find_id(&D->refs, id, n, NULL)) return;
   D->on_error = &jb;
   if (setjmp(jb) == 0) {
     D->arena = &D->keep;

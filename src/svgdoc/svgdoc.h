@@ -22,6 +22,7 @@
 #define SVGDOC_MAX_ELEMENTS 1000000    /* drawn elements collected (not stream) */
 #define SVGDOC_MAX_HELD 1000000        /* drawn elements behind a forward use */
 #define SVGDOC_MAX_REPLAYED 250000     /* events replayed by <use> */
+#define SVGDOC_MAX_MARKER_REPLAYED 4000000L  /* events replayed by markers */
 #define SVGDOC_MAX_ENTITIES 1000       /* entity declarations */
 #define SVGDOC_MAX_ENTITY_LEN 65536    /* an entity's replacement text */
 #define SVGDOC_MAX_WARNINGS 1000
@@ -75,6 +76,7 @@ void svgdoc_shape_d(const svgdoc_shape *s,
 typedef struct svgdoc_element {
   const char *id, *tag, *layer;
   const char *use;      /* the id a <use> instantiated this from */
+  const char *marker;   /* the id of the <marker> whose content this is */
   svgdoc_shape shape;   /* what it is drawn of, in its own coordinates */
   unsigned long line, col;
   int stroked, filled;  /* its stroke, its fill paints something */
