@@ -429,15 +429,16 @@ local function length_doc(src, name, opts)
   local n, rows_json, dk = 0, opts.json, nil
   local json_open = false
   if rows_json then dk = json_lib() end
+  local write, row_g17 = io.write, numtext.g17_now()
   local function row(e)
     n = n + 1
     local id = e.id or (e.tag .. n)
     if rows_json then
-      io.write(json_open and "," or "{\"paths\":[", json({id = id, tag = e.tag, layer = e.layer,
+      write(json_open and "," or "{\"paths\":[", json({id = id, tag = e.tag, layer = e.layer,
         length = e.length, segments = e.path:segments(), use = e.use}))
       json_open = true
     else
-      io.write(id, "\t", g17(e.length), "\n")
+      write(id, "\t", row_g17(e.length), "\n")
     end
   end
   local doc = each_svg(src, name, opts, row, true)

@@ -124,10 +124,15 @@ local function stream(o, name, next_chunk, uses, scan, on_element, size)
   local info
   next_chunk, info = input.chunks(svgdoc, name, next_chunk)
   if scan then scan = input.chunks(svgdoc, name, scan) end
+  local from_subpaths, tol, method = path._from_subpaths, o.tol, o.method
+  -- each element's length computed in C as it is read, its path made
+  -- when first asked for (e.path)
   local r = svgdoc.new({arc_tol = o.arc_tol or o.tol, hidden = o.hidden, arcs = o.arcs,
     stroked = o.stroked, painted = o.painted, lang = o.lang, strict = o.strict,
     max_depth = o.max_depth or MAX_DEPTH, uses = uses,
-    unit_px = o.units ~= "user" and UNITS[o.units] or 0, stream = true})
+    unit_px = o.units ~= "user" and UNITS[o.units] or 0, stream = true,
+    tol = tol, method = o.measure and method or nil,
+    path = function(subpaths) return from_subpaths(subpaths, tol, method) end})
   if scan then
     for _ = 1, huge do
       local chunk = scan()
@@ -135,9 +140,8 @@ local function stream(o, name, next_chunk, uses, scan, on_element, size)
       r:scan(chunk)
     end
   end
-  local from_subpaths, tol, method = path._from_subpaths, o.tol, o.method
   local measure, cap, progress = o.measure, o.max_elements, o.progress
-  local count, total, bytes = 0, 0, 0
+  local count, total, comp, bytes = 0, 0, 0, 0
   local function take(list)
     for k = 1, #list do
       local e = list[k]
@@ -145,20 +149,27 @@ local function stream(o, name, next_chunk, uses, scan, on_element, size)
       if count > cap then         -- checked as they come, not at the end
         fail(e.line, e.col, format("more than %d drawn elements", cap))
       end
-      local ok, p = pcall(from_subpaths, e.subpaths, tol, method)
-      if not ok then element_fail(e, p) end
-      e.path, e.subpaths = p, nil
       if measure then
-        local ok2, L, err = pcall(p.length, p)
-        if not ok2 then element_fail(e, L) end
-        if L == nil then element_fail(e, err) end
-        if not isfinite(L) then element_fail(e, nil) end
-        e.length = L
-        if not isfinite(total + L) then
+        local L = rawget(e, "length")
+        if L == nil then          -- the reader's measure failed: the path's own, and its error
+          local ok, p = pcall(function() return e.path end)
+          if not ok then element_fail(e, p) end
+          local ok2, err
+          ok2, L, err = pcall(p.length, p)
+          if not ok2 then element_fail(e, L) end
+          if L == nil then element_fail(e, err) end
+          if not isfinite(L) then element_fail(e, nil) end
+          e.length = L
+        end
+        local t = total + L
+        if not isfinite(t) then
           fail(e.line, e.col, format("<%s>: the total length overflows here (%s before it, %s in it)",
             e.tag, shortest(total), shortest(L)))
         end
-        total = total + L
+        -- Neumaier's compensated sum: 10^5 lengths within an ulp or two
+        if abs(total) >= abs(L) then comp = comp + ((total - t) + L)
+        else comp = comp + ((L - t) + total) end
+        total = t
       end
       on_element(e)
     end
@@ -174,7 +185,7 @@ local function stream(o, name, next_chunk, uses, scan, on_element, size)
   local res = r:finish(name)
   take(res.elements)
   return {name = name, warnings = res.warnings, skipped = res.skipped, units = o.units,
-    kept = res.kept, total = measure and total or nil, count = count, bytes = bytes,
+    kept = res.kept, total = measure and total + comp or nil, count = count, bytes = bytes,
     width = res.width, height = res.height, viewbox = res.viewbox}
 end
 

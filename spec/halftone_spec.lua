@@ -1,0 +1,66 @@
+-- spec/halftone_spec.lua -- a halftone drawing measured as a stream
+-- (issue 31: 10^5 circles exact to 1e-15): spec/data/halftone1000.svg,
+-- 1000 circles under ten transforms (ellipses under non-uniform scale,
+-- skew, matrix), against tools/ref_halftone.py's mpmath perimeters; the
+-- lengths computed in C as the reader reads them (src/svgdoc/measure.c)
+-- equal to the paths' own, made lazily.
+local svg = require("helpers").optional("arclen.svg")
+local helpers = require("helpers")
+
+local FILE = "spec/data/halftone1000.svg"
+
+local function refs()
+  local r = {}
+  for _, row in ipairs(helpers.tsv("halftone1000.tsv")) do r[row.id] = tonumber(row.length) end
+  return r
+end
+
+describe("a halftone drawing of 1000 circles #svgdoc", function()
+  it("the whole file's length within 1e-15 of mpmath; each circle's within its points' rounding", function()
+    local ref, worst = refs(), helpers.worst()
+    local doc = svg.read(FILE)
+    assert.are.equal(1000, #doc.elements)
+    for _, e in ipairs(doc.elements) do
+      -- the conics' points are rounded once at up to 2^7 beside radii
+      -- from 0.05 (scaled): ~1e-14 of a circle's length at most
+      worst:add(helpers.relerr(e.length, ref[e.id]), e.id)
+    end
+    local err = helpers.relerr(doc.total, ref.total)
+    print(("\n  halftone: total %.2e relative, worst circle %.2e (%s)"):format(err, worst.err, worst.id))
+    assert.is_true(worst.err <= 1e-13, worst.id .. ": " .. worst.err)
+    assert.is_true(err <= 1e-15, "total: " .. err)
+  end)
+  it("each length is its lazy path's, bit for bit; the element keeps its documented fields", function()
+    local n = 0
+    svg.each(FILE, function(e)
+      n = n + 1
+      assert.are.equal("number", type(rawget(e, "length")))    -- measured in C
+      assert.is_nil(rawget(e, "path"))                         -- not made yet
+      local p = e.path
+      assert.is_true(require("arclen").path.is_path(p))
+      assert.are.equal(p, e.path)                              -- made once, kept
+      assert.are.equal(e.length, p:length())
+      assert.are.equal("circle", e.tag)
+      assert.are.equal(6, #e.ctm)
+      assert.matches("^M", e.d)
+      assert.is_nil(e.subpaths)                                -- the reader's, not shown
+      assert.are.equal("number", type(e.line))
+    end)
+    assert.are.equal(1000, n)
+  end)
+  it("the total with the method elliptic and with metapost (measured by the paths)", function()
+    local a = svg.read(FILE, {method = "elliptic"})
+    local ref = refs()
+    assert.is_true(helpers.relerr(a.total, ref.total) <= 1e-15)
+    local m = svg.read(FILE, {method = "metapost"})
+    assert.are.equal(m.elements[1].length, m.elements[1].path:length())
+  end)
+  it("arclen length prints the total within 1e-15", function()
+    local lua = helpers.interpreter()
+    local h = io.popen(lua .. " bin/arclen length " .. FILE)
+    local out = h:read("*a")
+    h:close()
+    local total = tonumber(out:match("\ntotal\t(%S+)\n$"))
+    assert.is_true(helpers.relerr(total, refs().total) <= 1e-15, out:sub(-60))
+  end)
+end)
