@@ -22,8 +22,8 @@
 ** a circle): the rest is then below tau^2 L = 2^-60 L.  The roundings of a
 ** circle's points pass (a radius of 0.2 at x = 1000: D ~ 3e-13; a short
 ** arc's rounded w: D ~ 1e-16/(1-w^2)); an ellipse of axes 1 and 1 + 1e-6
-** does not.  Rounding: acos, hypot, sqrt and the quotients are each within
-** an ulp, the legs one rounding of the points; |U|'s digits lost to d's
+** does not.  Rounding: acos, the norms, sqrt and the quotients are each within
+** an ulp or two, the legs one rounding of the points; |U|'s digits lost to d's
 ** cancellation on a short arc weigh (1-w^2)/3 in L; so the result is
 ** within a few ulps (spec/circle_spec.lua: against mpmath and against the
 ** general path, arclen_conic_length, which stays the one for every other
@@ -40,26 +40,36 @@
 int arclen_rquad_circular(const double q[6], double w, double *len) {
   double ax = q[2] - q[0], ay = q[3] - q[1];     /* a = P1 - P0 */
   double kx = q[4] - q[0], ky = q[5] - q[1];     /* k = P2 - P0 */
-  double mx, hx, hy, dx, dy, onew, sq, nu, nv, dd, uv, al, L;
+  double mx, sc, hx, hy, dx, dy, onew, sq, ld, lh, nu, nv, dd, uv, al, L;
   int e;
   if (!(w > 0 && w < 1)) return 0;               /* parabolas, hyperbolas */
   mx = fmax(fmax(fabs(ax), fabs(ay)), fmax(fabs(kx), fabs(ky)));
-  if (!(mx > 0 && mx <= 0x1p1000)) return 0;     /* a point, or near overflow */
-  /* the legs scaled into [1/2, 1) so that no square under- or overflows */
+  /* a point, or legs near the ends of the double range: the general path */
+  if (!(mx >= 0x1p-1000 && mx <= 0x1p1000)) return 0;
+  /* the legs scaled into [1/2, 1) so that no square under- or overflows,
+  ** by a power of two (normal here: exact products, and cheaper than
+  ** ldexp, which took a sixth of the time) */
   frexp(mx, &e);
-  ax = ldexp(ax, -e), ay = ldexp(ay, -e);
-  hx = ldexp(kx, -e - 1), hy = ldexp(ky, -e - 1);
+  sc = ldexp(1, -e);
+  ax *= sc, ay *= sc;
+  hx = kx * (sc / 2), hy = ky * (sc / 2);
   dx = ax - hx, dy = ay - hy;
   onew = (1 - w) * (1 + w);                      /* 1 - w^2: 1 - w is exact */
   sq = sqrt(onew);
-  nv = hypot(hx, hy) / sq;                       /* |V| */
-  nu = hypot(dx, dy) * (w / onew);               /* |U| */
+  /* norms as square roots of sums of squares, not hypot (a third of the
+  ** time): the parts are below 1, and a |d| or |h| below 2^-500, whose
+  ** squares could underflow, is left to the general path */
+  ld = sqrt(dx * dx + dy * dy);
+  lh = sqrt(hx * hx + hy * hy);
+  if (!(ld > 0x1p-500 && lh > 0x1p-500)) return 0;
+  nv = lh / sq;                                  /* |V| */
+  nu = ld * (w / onew);                          /* |U| */
   if (!(nu > 0x1p-500 && nv > 0x1p-500 && nu < 0x1p500 && nv < 0x1p500))
     return 0;                                    /* extremes: the general path */
   dd = fabs(nu - nv) / fmin(nu, nv);                       /* D */
   if (!(dd <= CIRCLE_NEAR && dd * sq <= CIRCLE_TAU)) return 0;
   /* Q = U.V / (|U| |V|) = d.h / (|d| |h|) */
-  uv = (dx * hx + dy * hy) / (hypot(dx, dy) * hypot(hx, hy));
+  uv = (dx * hx + dy * hy) / (ld * lh);
   if (!(fabs(uv) * sq <= CIRCLE_TAU)) return 0;
   al = acos(w);
   L = al * (nu + nv) + (w * sq) * (nv - nu);

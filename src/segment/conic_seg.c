@@ -241,10 +241,12 @@ static int whole_length(const double *p, int dim, double *len,
     for (k = 0; k < 4; k++)
       if (!(fabs(p[k + 2] - p[k]) <= 0x1p1020)) big = 1;
     for (k = 0; k < 6; k++) q[k] = big ? p[k] / 4 : p[k];
-    flat = arclen_conic_degenerate(q);
+    /* a circular arc first: its triangle is not flat (its angle at P1 is
+    ** pi minus the arc's), and the flatness test cost as much again */
+    if (circular(q, w, &L, info)) rc = ARCLEN_OK, flat = 0;
+    else if (!(flat = arclen_conic_degenerate(q)))
+      rc = arclen_conic_length(q, w, &L, info);
     if (!flat) {
-      if (circular(q, w, &L, info)) rc = ARCLEN_OK;
-      else rc = arclen_conic_length(q, w, &L, info);
       if (rc == ARCLEN_OK && big) {
         L *= 4;
         if (!isfinite(L)) rc = ARCLEN_EOVERFLOW;
