@@ -432,7 +432,7 @@ local function length_doc(src, name, opts)
   local write, row_g17 = io.write, numtext.g17_now()
   local function row(e)
     n = n + 1
-    local id = e.id or (e.tag .. n)
+    local id = rawget(e, "id") or (e.tag .. n)   -- id is never made lazily: no __index
     if rows_json then
       write(json_open and "," or "{\"paths\":[", json({id = id, tag = e.tag, layer = e.layer,
         length = e.length, segments = e.path:segments(), use = e.use}))

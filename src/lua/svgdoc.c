@@ -374,7 +374,11 @@ static void set_lazy(lua_State *L, const svgdoc_element *e) {
 /* An element, with element_index and the list below it on the stack. */
 static void push_element(lua_State *L, const reader *R,
                          const svgdoc_element *e) {
-  lua_createtable(L, 0, 10);
+  /* sized for its fields (Lua rounds up to a power of two): the collector's
+  ** work grows with the bytes allocated, and 16 slots were twice a
+  ** circle's */
+  lua_createtable(L, 0, 6 + (e->id != NULL) + (e->layer != NULL) +
+                  (e->use != NULL) + (e->shape.kind == SVGDOC_SHAPE_PATH));
   set_string(L, "id", e->id);
   lua_pushstring(L, e->tag);
   lua_setfield(L, -2, "tag");

@@ -15,27 +15,28 @@
 
 int svgdoc_measure(const arclen_pathdata *pd, const arclen_method *m,
                    const arclen_opts *o, double *len) {
-  double out[RUN], total = 0, z = 0;
-  size_t i = 0, j, n = pd->ncubics;
+  double out[RUN], total = 0;
+  size_t i = 0, j, k, n = pd->ncubics;
   *len = NAN;
-  /* x - x is 0 for a finite x: one test for all the records */
-  for (j = 0; j < ARCLEN_PD_STRIDE * n; j++) z += pd->cubics[j] - pd->cubics[j];
-  if (z != 0) return ARCLEN_EINVAL;
   while (i < n) {                         /* capped: i grows each time */
     const double *rec = pd->cubics + ARCLEN_PD_STRIDE * i;
     int kind = arclen_segment_kind_of_letter(pd->kinds[i]), rc;
     if (kind == ARCLEN_SEG_CUBIC) {
       long failed;
-      size_t k;
+      double z = 0;
       for (j = i + 1; j < n && j - i < RUN && pd->kinds[j] == ARCLEN_PD_CUBIC; j++) {}
+      /* arclen_lengths takes its cubics as checked (batch.c checks them):
+      ** x - x is 0 for a finite x, one test for the run */
+      for (k = 0; k < ARCLEN_PD_STRIDE * (j - i); k++) z += rec[k] - rec[k];
+      if (z != 0) return ARCLEN_EINVAL;
       rc = arclen_lengths(rec, (long)(j - i), 2, m, o, out, &failed);
       if (rc != ARCLEN_OK) return rc;
       for (k = i; k < j; k++) total += out[k - i];
       i = j;
     } else {
       double L;
-      rc = arclen_segment_check(kind, 2, rec);
-      if (rc == ARCLEN_OK) rc = arclen_segment_length(kind, 2, rec, m, o, &L, NULL);
+      /* checked there (finite numbers, a conic's weight > 0) */
+      rc = arclen_segment_length(kind, 2, rec, m, o, &L, NULL);
       if (rc != ARCLEN_OK) return rc;
       total += L;
       i++;
