@@ -48,6 +48,22 @@ describe("a halftone drawing of 1000 circles #svgdoc", function()
     end)
     assert.are.equal(1000, n)
   end)
+  it("every file of spec/data/svg: e.length is e.path:length(), bit for bit", function()
+    local seen, n = {}, 0
+    for _, row in ipairs(helpers.tsv("svg_refs.tsv")) do
+      if not seen[row.file] then
+        seen[row.file] = true
+        local ok, doc = pcall(svg.read, "spec/data/svg/" .. row.file)
+        if ok then
+          for _, e in ipairs(doc.elements) do
+            assert.are.equal(e.path:length(), e.length, row.file .. ": " .. tostring(e.id))
+            n = n + 1
+          end
+        end
+      end
+    end
+    assert.is_true(n >= 400, "elements: " .. n)     -- 451 on 2026-12-03
+  end)
   it("the total with the method elliptic and with metapost (measured by the paths)", function()
     local a = svg.read(FILE, {method = "elliptic"})
     local ref = refs()
@@ -55,12 +71,17 @@ describe("a halftone drawing of 1000 circles #svgdoc", function()
     local m = svg.read(FILE, {method = "metapost"})
     assert.are.equal(m.elements[1].length, m.elements[1].path:length())
   end)
-  it("arclen length prints the total within 1e-15", function()
+  it("arclen length and arclen stat print the total within 1e-15", function()
     local lua = helpers.interpreter()
     local h = io.popen(lua .. " bin/arclen length " .. FILE)
     local out = h:read("*a")
     h:close()
     local total = tonumber(out:match("\ntotal\t(%S+)\n$"))
     assert.is_true(helpers.relerr(total, refs().total) <= 1e-15, out:sub(-60))
+    h = io.popen(lua .. " bin/arclen stat " .. FILE)
+    out = h:read("*a")
+    h:close()
+    total = tonumber(out:match("Totals.-Length: (%S+)"))
+    assert.is_true(helpers.relerr(total, refs().total) <= 1e-15, out:sub(-300))
   end)
 end)

@@ -17,8 +17,9 @@
 -- streaming, nothing like a DOM is built.  Every basic shape becomes path
 -- data as SVG 2 defines it (section 10, "Basic shapes"), mapped by the
 -- element's current transformation matrix (nested transform attributes,
--- nested viewports) and read into cubics; this module makes each drawn
--- element an arclen.path and measures it, as the reader hands it over.
+-- nested viewports) and read into segments; the reader measures each
+-- drawn element as it hands it over (src/svgdoc/measure.c: the double
+-- e.path:length() gives), and e.path is made when first read.
 -- <use> may point forwards: when the document may contain a <use>
 -- element, the subtrees of the elements with an id that uses refer to are
 -- kept (a scan of the file first; from a stream, every subtree with an id),
@@ -389,6 +390,14 @@ end
 local Stats = {}
 Stats.__index = Stats
 
+-- s + x as Neumaier's compensated sum: the new sum and compensation (the
+-- result is sum + comp); 10^5 terms within an ulp or two.
+local function neumaier(sum, comp, x)
+  local t = sum + x
+  if abs(sum) >= abs(x) then return t, comp + ((sum - t) + x) end
+  return t, comp + ((x - t) + sum)
+end
+
 function M.stats()
   return setmetatable({layers = {}, by = {}}, Stats)
 end
@@ -396,12 +405,13 @@ end
 function Stats:add(e)
   local L = self.by[e.layer]
   if not L then
-    L = {name = e.layer, length = 0, travel = 0, paths = 0, elements = 0, segments = 0, box = {}}
+    L = {name = e.layer, length = 0, travel = 0, paths = 0, elements = 0, segments = 0, box = {},
+         lc = 0, tc = 0}                     -- the sums' compensations
     self.by[e.layer] = L
     self.layers[#self.layers + 1] = L
   end
   local p = e.path
-  L.length = L.length + (e.length or p:length())
+  L.length, L.lc = neumaier(L.length, L.lc, e.length or p:length())
   L.elements = L.elements + 1
   L.paths = L.paths + p.nsub
   L.segments = L.segments + p.n
@@ -410,7 +420,7 @@ function Stats:add(e)
     local last, lastkind = p:segment(p.first[j + 1] - 1)
     if L.endx then
       local dx, dy = first[1] - L.endx, first[2] - L.endy
-      L.travel = L.travel + sqrt(dx * dx + dy * dy)
+      L.travel, L.tc = neumaier(L.travel, L.tc, sqrt(dx * dx + dy * dy))
     end
     L.endx, L.endy = svgpath.segment_end(last, lastkind)
   end
@@ -421,18 +431,22 @@ end
 
 function Stats:result()
   local total = {name = "total", length = 0, travel = 0, paths = 0, elements = 0, segments = 0, box = {}}
-  local out = {}
+  local out, lc, tc = {}, 0, 0
   for i, L in ipairs(self.layers) do
-    total.length = total.length + L.length
-    total.travel = total.travel + L.travel
+    local length, travel = L.length + L.lc, L.travel + L.tc
+    total.length, lc = neumaier(total.length, lc, L.length)
+    total.length, lc = neumaier(total.length, lc, L.lc)
+    total.travel, tc = neumaier(total.travel, tc, L.travel)
+    total.travel, tc = neumaier(total.travel, tc, L.tc)
     total.paths = total.paths + L.paths
     total.elements = total.elements + L.elements
     total.segments = total.segments + L.segments
     if L.box[1] then box_add(total.box, L.box[1], L.box[2], L.box[3], L.box[4]) end
-    out[i] = {name = L.name, length = L.length, travel = L.travel, paths = L.paths,
+    out[i] = {name = L.name, length = length, travel = travel, paths = L.paths,
               elements = L.elements, segments = L.segments,
               bbox = L.box[1] and {L.box[1], L.box[2], L.box[3], L.box[4]} or nil}
   end
+  total.length, total.travel = total.length + lc, total.travel + tc
   total.bbox = total.box[1] and total.box or nil
   total.box = nil
   return {layers = out, total = total}
