@@ -429,16 +429,20 @@ local function length_doc(src, name, opts)
   local n, rows_json, dk = 0, opts.json, nil
   local json_open = false
   if rows_json then dk = json_lib() end
-  local write, row_g17 = io.write, numtext.g17_now()
+  -- a row in one string, one write: "id\tlength\n", or "tagN\tlength\n"
+  local write, with_id, with_tag = io.write, numtext.format_now("%s\t%.17g\n"),
+    numtext.format_now("%s%d\t%.17g\n")
   local function row(e)
     n = n + 1
-    local id = rawget(e, "id") or (e.tag .. n)   -- id is never made lazily: no __index
+    local id = rawget(e, "id")        -- never made lazily: no __index
     if rows_json then
-      write(json_open and "," or "{\"paths\":[", json({id = id, tag = e.tag, layer = e.layer,
-        length = e.length, segments = e.path:segments(), use = e.use}))
+      write(json_open and "," or "{\"paths\":[", json({id = id or (e.tag .. n), tag = e.tag,
+        layer = e.layer, length = e.length, segments = e.path:segments(), use = e.use}))
       json_open = true
+    elseif id then
+      write(with_id(id, e.length))
     else
-      write(id, "\t", row_g17(e.length), "\n")
+      write(with_tag(e.tag, n, e.length))
     end
   end
   local doc = each_svg(src, name, opts, row, true)
