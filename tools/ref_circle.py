@@ -6,8 +6,9 @@ spec/circle_spec.lua.
 Conics (P0, P1, P2; w), Floater's eq. 1, as doubles: circular arcs of
 central angles from 1e-6 to pi - 1e-6, radii from 1e-200 to 1e200, rotated,
 centred far from the origin (the points' roundings make them slightly
-non-circular, as a drawing's circles are), and ellipses on both sides of
-the closed form's gate (axes 1 and 1 + e, e from 2^-34 to 2^-8).  For each,
+non-circular, as a drawing's circles are), ellipses on both sides of the
+closed form's gate (axes 1 and 1 + e, e from 2^-34 to 2^-8) and short
+arcs of ellipses up to 1 + 2^-10.  For each,
 independently of arclen: the exact length of the conic the doubles
 describe, by mpmath at 30 digits -- the speed |N'D - ND'|/D^2 of N(t)/D(t)
 from the definition, integrated by tanh-sinh on [0, 1] split at points
@@ -112,6 +113,11 @@ def cases():
         for span in [0.2, math.pi / 2, 3.0]:
             out.append(("ellipse 1+2^-%d span %g" % (k, span),
                         arc(0.25, 0.75, 1.0, 0.1, span, ry=1 + e, rot=0.7)))
+    # short arcs of eccentric ellipses: D up to 2^-10 passes when D sin(al)
+    # stays below 2^-30 (the bound is second order in D sin(al), not in D)
+    for k, span in [(10, 1e-6), (10, 1e-5), (12, 2e-6), (16, 1e-4)]:
+        out.append(("short arc of 1+2^-%d span %g" % (k, span),
+                    arc(-3.5, 2.0, 2.0, 0.4, span, ry=2 * (1 + 2.0 ** -k), rot=-0.3)))
     return out
 
 
