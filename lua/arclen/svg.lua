@@ -126,14 +126,15 @@ local function stream(o, name, next_chunk, uses, scan, on_element, size)
   next_chunk, info = input.chunks(svgdoc, name, next_chunk)
   if scan then scan = input.chunks(svgdoc, name, scan) end
   local from_subpaths, tol, method = path._from_subpaths, o.tol, o.method
-  -- each element's length computed in C as it is read (with the C core:
-  -- the Lua engine's paths measure their own), its path made when first
-  -- asked for (e.path)
+  -- each element's length computed in C as it is read (with the C core
+  -- and the default method: the Lua engine's paths, and paths of other
+  -- methods, which make their conics cubics, measure their own), its path
+  -- made when first asked for (e.path)
   local r = svgdoc.new({arc_tol = o.arc_tol or o.tol, hidden = o.hidden, arcs = o.arcs,
     stroked = o.stroked, painted = o.painted, lang = o.lang, strict = o.strict,
     max_depth = o.max_depth or MAX_DEPTH, uses = uses,
     unit_px = o.units ~= "user" and UNITS[o.units] or 0, stream = true,
-    tol = tol, method = o.measure and core.engine == "c" and method or nil,
+    tol = tol, method = o.measure and core.engine == "c" and method == "gauss" and method or nil,
     path = function(subpaths) return from_subpaths(subpaths, tol, method) end})
   if scan then
     for _ = 1, huge do

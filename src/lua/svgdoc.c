@@ -25,7 +25,8 @@
 **   svgdoc.gzip, svgdoc.gunzip    gzip input (svgdoc_gzip.c)
 **                                 method, tol: each element's length
 **                                 computed as it is read (svgdoc/measure.c;
-**                                 not for method "metapost"), path: a
+**                                 not for method "metapost"; arclen.svg
+**                                 asks it for "gauss" only), path: a
 **                                 function(subpaths) -> the element's path
 ** A located error is raised as {line =, col =, msg =}; arclen.svg names
 ** the document in it.  Each element is {id, tag, layer, line, col,
