@@ -67,6 +67,25 @@ describe("a halftone drawing of 1000 circles #svgdoc", function()
     end
     assert.is_true(n >= 400, "elements: " .. n)     -- 451 on 2026-12-03
   end)
+  it("svg.stats() from the segments in C: the same numbers as from the paths", function()
+    local files = {FILE}
+    local seen = {}
+    for _, row in ipairs(helpers.tsv("svg_refs.tsv")) do
+      if not seen[row.file] then
+        seen[row.file] = true
+        files[#files + 1] = "spec/data/svg/" .. row.file
+      end
+    end
+    for _, f in ipairs(files) do
+      local fast, slow = svg.stats(), svg.stats()
+      local ok = pcall(svg.each, f, function(e)
+        fast:add(e)               -- the reader's segments (C)
+        local _ = e.path          -- made: the path's own walk (Lua)
+        slow:add(e)
+      end)
+      if ok then assert.are.same(slow:result(), fast:result(), f) end
+    end
+  end)
   helpers.c_only(it, "methods elliptic and metapost")("the total with the method elliptic and with metapost (measured by the paths)", function()
     -- a path of another method makes its conics cubics (within tol): its
     -- own length, not the reader's exact one

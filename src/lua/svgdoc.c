@@ -22,6 +22,8 @@
 **                           elements are the ones completed at the end)
 **   svgdoc.isatty([which]) -> boolean  is stderr (or "stdout") a terminal
 **                                 (the command line's progress line)
+**   svgdoc.stat_add(e, acc) -> boolean  svg.stats()'s add of an element
+**                                 without its path (l_stat_add)
 **   svgdoc.gzip, svgdoc.gunzip    gzip input (svgdoc_gzip.c)
 **                                 method, tol: each element's length
 **                                 computed as it is read (svgdoc/measure.c;
@@ -39,6 +41,7 @@
 ** (element_index), which halved the cost of a drawing of circles.
 ** Warnings come formatted as "NAME:LINE:COL: message".
 */
+#include <math.h>
 #include <string.h>
 
 #include "lua/binding.h"
@@ -258,14 +261,19 @@ static void set_string(lua_State *L, const char *k, const char *v) {
 ** each), the shape's numbers, the subpaths, the kinds (a byte each). */
 typedef union element_head {
   struct {
+    const char *magic;               /* ELEMENT_MAGIC: one of these */
     size_t n, nsub, nnums;           /* segments, subpaths, shape numbers */
     int kind;                        /* the shape's (SVGDOC_SHAPE_*) */
+    int flat;                        /* its path keeps these segments (gauss) */
     double ctm[6];
   } h;
   double align;                      /* the numbers follow, aligned */
 } element_head;
 
 #define REC_BYTES (ARCLEN_PD_STRIDE * sizeof(double))
+
+/* What marks an element's userdata (its address; never written). */
+static const char ELEMENT_MAGIC[] = "arclen.svgdoc.element";
 
 static const double *head_records(const element_head *u) {
   return (const double *)(u + 1);
@@ -344,7 +352,7 @@ static int element_index(lua_State *L) {
 
 /* The element's metatable: element_index (below the list and the element
 ** on the stack) and the userdata of its lazy fields. */
-static void set_lazy(lua_State *L, const svgdoc_element *e) {
+static void set_lazy(lua_State *L, const reader *R, const svgdoc_element *e) {
   const arclen_pathdata *pd = &e->pd;
   const svgdoc_shape *s = &e->shape;
   size_t nnums = s->kind == SVGDOC_SHAPE_PATH ? 0 : s->n;
@@ -355,6 +363,8 @@ static void set_lazy(lua_State *L, const svgdoc_element *e) {
   lua_setfield(L, -2, "__index");
   u = (element_head *)lua_newuserdata(L, sizeof *u + pd->ncubics * REC_BYTES +
       nnums * sizeof(double) + pd->nsubpaths * sizeof(arclen_subpath) + pd->ncubics);
+  u->h.magic = ELEMENT_MAGIC;
+  u->h.flat = R->method != NULL && strcmp(R->method->name, "gauss") == 0;
   u->h.n = pd->ncubics;
   u->h.nsub = pd->nsubpaths;
   u->h.nnums = nnums;
@@ -401,7 +411,216 @@ static void push_element(lua_State *L, const reader *R,
       lua_setfield(L, -2, "length");
     }
   }
-  set_lazy(L, e);
+  set_lazy(L, R, e);
+}
+
+/* ---- svg.stats()'s add in C (svgdoc.stat_add) ------------------------
+** The same numbers as lua/arclen/svg.lua's Stats:add computes from the
+** element's path, by the same operations in the same order (its
+** svgpath.segment_box and segment_end), without making the path: `arclen
+** stat` spent most of its time there. */
+
+static double lmin(double a, double b) { return b < a ? b : a; }  /* math.min */
+static double lmax(double a, double b) { return a < b ? b : a; }  /* math.max */
+
+typedef struct span { double lo, hi; } span;
+
+static void span_add(span *r, double v) {
+  if (v < r->lo) r->lo = v;
+  if (v > r->hi) r->hi = v;
+}
+
+/* The value at t of one coordinate p of a segment of kind (svgpath.lua's
+** callbacks of range). */
+static double coord_at(int kind, const double *p, double w, double t) {
+  double u = 1 - t;
+  if (kind == ARCLEN_SEG_QUAD) return u * u * p[0] + 2 * u * t * p[1] + t * t * p[2];
+  if (kind == ARCLEN_SEG_CUBIC)
+    return u * u * u * p[0] + 3 * u * u * t * p[1] + 3 * u * t * t * p[2] + t * t * t * p[3];
+  {
+    double b0 = u * u, b1 = 2 * w * t * u, b2 = t * t;
+    return (b0 * p[0] + b1 * p[1] + b2 * p[2]) / (b0 + b1 + b2);
+  }
+}
+
+static void at01(int kind, const double *p, double w, double t, span *r) {
+  if (t > 0 && t < 1) span_add(r, coord_at(kind, p, w, t));
+}
+
+/* svgpath.lua's roots01: the real roots in (0, 1) of a t^2 + b t + c. */
+static void roots01(double a, double b, double c, int kind, const double *p,
+                    double w, span *r) {
+  double disc, q;
+  if (fabs(a) < 1e-300) {
+    if (b != 0) at01(kind, p, w, -c / b, r);
+    return;
+  }
+  disc = b * b - 4 * a * c;
+  if (disc < 0) return;
+  q = -0.5 * (b + (b >= 0 ? 1 : -1) * sqrt(disc));
+  at01(kind, p, w, q / a, r);
+  if (q != 0) at01(kind, p, w, c / q, r);
+}
+
+/* svgpath.lua's range: one coordinate's extremes on [0, 1]. */
+static span coord_range(int kind, const double *p, double w) {
+  span r;
+  int last = kind == ARCLEN_SEG_LINE ? 1 : kind == ARCLEN_SEG_CUBIC ? 3 : 2;
+  r.lo = lmin(p[0], p[last]);
+  r.hi = lmax(p[0], p[last]);
+  if (kind == ARCLEN_SEG_QUAD) {
+    roots01(0, p[0] - 2 * p[1] + p[2], p[1] - p[0], kind, p, w, &r);
+  } else if (kind == ARCLEN_SEG_CUBIC) {
+    roots01(-p[0] + 3 * p[1] - 3 * p[2] + p[3], 2 * (p[0] - 2 * p[1] + p[2]),
+            p[1] - p[0], kind, p, w, &r);
+  } else if (kind == ARCLEN_SEG_CONIC) {
+    double a0 = w * (p[1] - p[0]), a1 = p[2] - p[0], a2 = w * (p[2] - p[1]);
+    roots01(a0 - a1 + a2, a1 - 2 * a0, a0, kind, p, w, &r);
+  }
+  return r;
+}
+
+/* Neumaier's step, as svg.lua's neumaier. */
+static void neumaier(double *sum, double *comp, double x) {
+  double t = *sum + x;
+  if (fabs(*sum) >= fabs(x)) *comp += (*sum - t) + x;
+  else *comp += (x - t) + *sum;
+  *sum = t;
+}
+
+static double get_num(lua_State *L, int t, const char *k) {
+  double v;
+  lua_getfield(L, t, k);
+  v = lua_tonumber(L, -1);
+  lua_pop(L, 1);
+  return v;
+}
+
+static void set_num(lua_State *L, int t, const char *k, double v) {
+  lua_pushnumber(L, v);
+  lua_setfield(L, t, k);
+}
+
+static void add_int(lua_State *L, int t, const char *k, lua_Integer d) {
+  lua_Integer v;
+  lua_getfield(L, t, k);
+  v = lua_tointeger(L, -1);
+  lua_pop(L, 1);
+  lua_pushinteger(L, v + d);
+  lua_setfield(L, t, k);
+}
+
+/* svgdoc.stat_add(e, acc) -> true, acc updated as Stats:add would; false
+** (nothing done) for an element that is not the reader's, whose path has
+** been made or is not made of these segments, or without a length. */
+static int l_stat_add(lua_State *L) {
+  const element_head *u;
+  const double *rec;
+  const unsigned char *kinds;
+  const arclen_subpath *sub;
+  double length, sum, comp, endx = 0, endy = 0, box[4];
+  int has_end, has_box, j;
+  size_t k, first;
+  luaL_checktype(L, 1, LUA_TTABLE);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  lua_settop(L, 2);
+  lua_pushboolean(L, 0);                          /* 3: the answer "no" */
+  if (!lua_getmetatable(L, 1)) return 1;
+  lua_rawgeti(L, -1, 1);
+  u = (const element_head *)lua_touserdata(L, -1);
+  if (u == NULL || lua_rawlen(L, -1) < sizeof *u || u->h.magic != ELEMENT_MAGIC ||
+      !u->h.flat) {
+    lua_pushboolean(L, 0);
+    return 1;
+  }
+  lua_settop(L, 2);
+  lua_pushliteral(L, "path");
+  lua_rawget(L, 1);
+  lua_pushliteral(L, "length");
+  lua_rawget(L, 1);
+  if (!lua_isnil(L, 3) || lua_type(L, 4) != LUA_TNUMBER) {
+    lua_pushboolean(L, 0);
+    return 1;
+  }
+  length = lua_tonumber(L, 4);
+  lua_settop(L, 2);
+  rec = head_records(u);
+  kinds = head_kinds(u);
+  sub = head_subpaths(u);
+  sum = get_num(L, 2, "length"), comp = get_num(L, 2, "lc");
+  neumaier(&sum, &comp, length);
+  set_num(L, 2, "length", sum), set_num(L, 2, "lc", comp);
+  add_int(L, 2, "elements", 1);
+  /* the path's subpaths: those with segments (path.lua, build_flat) */
+  {
+    lua_Integer nsub = 0;
+    for (k = 0; k < u->h.nsub; k++) nsub += sub[k].n > 0;
+    add_int(L, 2, "paths", nsub);
+    add_int(L, 2, "segments", (lua_Integer)u->h.n);
+  }
+  lua_getfield(L, 2, "endx");
+  has_end = !lua_isnil(L, -1);
+  lua_pop(L, 1);
+  if (has_end) endx = get_num(L, 2, "endx"), endy = get_num(L, 2, "endy");
+  sum = get_num(L, 2, "travel"), comp = get_num(L, 2, "tc");
+  for (first = 0, k = 0; k < u->h.nsub; k++) {     /* capped: the subpaths */
+    size_t last;
+    const double *a, *b;
+    int lk;
+    if (sub[k].n == 0) continue;
+    a = rec + ARCLEN_PD_STRIDE * first;
+    last = first + sub[k].n - 1;
+    b = rec + ARCLEN_PD_STRIDE * last;
+    if (has_end) {
+      double dx = a[0] - endx, dy = a[1] - endy;
+      neumaier(&sum, &comp, sqrt(dx * dx + dy * dy));
+    }
+    lk = arclen_segment_kind_of_letter(kinds[last]);
+    j = lk == ARCLEN_SEG_LINE ? 2 : lk == ARCLEN_SEG_CUBIC ? 6 : 4;   /* segment_end */
+    endx = b[j], endy = b[j + 1], has_end = 1;
+    first = last + 1;
+  }
+  set_num(L, 2, "travel", sum), set_num(L, 2, "tc", comp);
+  if (has_end) set_num(L, 2, "endx", endx), set_num(L, 2, "endy", endy);
+  /* the bounding box (svg.lua's box_add of each segment_box) */
+  lua_getfield(L, 2, "box");
+  if (lua_type(L, 3) != LUA_TTABLE) {
+    lua_pushboolean(L, 0);       /* cannot happen: Stats:add makes it */
+    return 1;
+  }
+  lua_rawgeti(L, 3, 1);
+  has_box = !lua_isnil(L, -1);
+  lua_pop(L, 1);
+  for (j = 0; j < 4 && has_box; j++) {
+    lua_rawgeti(L, 3, j + 1);
+    box[j] = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+  }
+  for (k = 0; k < u->h.n; k++) {
+    const double *c = rec + ARCLEN_PD_STRIDE * k;
+    int kind = arclen_segment_kind_of_letter(kinds[k]), m, i;
+    double xs[4], ys[4];
+    span x, y;
+    m = kind == ARCLEN_SEG_LINE ? 2 : kind == ARCLEN_SEG_CUBIC ? 4 : 3;
+    for (i = 0; i < m; i++) xs[i] = c[2 * i], ys[i] = c[2 * i + 1];
+    x = coord_range(kind, xs, c[6]);
+    y = coord_range(kind, ys, c[6]);
+    if (!has_box) {
+      box[0] = x.lo, box[1] = y.lo, box[2] = x.hi, box[3] = y.hi;
+      has_box = 1;
+      continue;
+    }
+    if (x.lo < box[0]) box[0] = x.lo;
+    if (y.lo < box[1]) box[1] = y.lo;
+    if (x.hi > box[2]) box[2] = x.hi;
+    if (y.hi > box[3]) box[3] = y.hi;
+  }
+  for (j = 0; j < 4 && has_box; j++) {
+    lua_pushnumber(L, box[j]);
+    lua_rawseti(L, 3, j + 1);
+  }
+  lua_pushboolean(L, 1);
+  return 1;
 }
 
 /* reader:finish(name) */
@@ -461,7 +680,7 @@ static const luaL_Reg reader_methods[] = {
   {"scan", l_scan}, {"feed", l_feed}, {"finish", l_finish}, {NULL, NULL}};
 
 static const luaL_Reg funcs[] = {{"new", l_new}, {"isatty", l_isatty},
-                                 {NULL, NULL}};
+                                 {"stat_add", l_stat_add}, {NULL, NULL}};
 
 #if defined(_WIN32)
 __declspec(dllexport)
