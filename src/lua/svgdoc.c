@@ -9,7 +9,12 @@
 **                                 max_held (the queue behind a forward use),
 **                                 shape_text (for the specs: basic shapes
 **                                 written as path data and that parsed),
-**                                 strict (warnings are errors)
+**                                 strict (warnings are errors),
+**                                 method, tol: each element's length
+**                                 computed as it is read (svgdoc/measure.c;
+**                                 not for method "metapost"; arclen.svg
+**                                 asks it for "gauss" only), path: a
+**                                 function(subpaths) -> the element's path
 **   reader:scan(s)                optional, before feed: the whole document
 **                                 once, for the ids <use> refers to
 **   reader:feed(s) -> elements    the next bytes of the document; with
@@ -25,11 +30,6 @@
 **   svgdoc.stat_add(e, acc) -> boolean  svg.stats()'s add of an element
 **                                 without its path (l_stat_add)
 **   svgdoc.gzip, svgdoc.gunzip    gzip input (svgdoc_gzip.c)
-**                                 method, tol: each element's length
-**                                 computed as it is read (svgdoc/measure.c;
-**                                 not for method "metapost"; arclen.svg
-**                                 asks it for "gauss" only), path: a
-**                                 function(subpaths) -> the element's path
 ** A located error is raised as {line =, col =, msg =}; arclen.svg names
 ** the document in it.  Each element is {id, tag, layer, line, col,
 ** stroked, filled, use, d, ctm = {a, b, c, d, e, f}, subpaths, length,
