@@ -67,6 +67,31 @@ describe("a halftone drawing of 1000 circles #svgdoc", function()
     end
     assert.is_true(n >= 400, "elements: " .. n)     -- 451 on 2026-12-03
   end)
+  it("path = false: measured elements come with their numbers only", function()
+    local n, total = 0, 0
+    local doc = svg.each(FILE, function(e)
+      n = n + 1
+      total = total + e.length
+      assert.are.equal("number", type(e.line))
+      assert.are.equal("circle", e.tag)
+      if C then
+        assert.is_nil(e.path)
+        assert.is_nil(e.ctm)
+        assert.is_nil(e.d)
+      end
+    end, {path = false})
+    assert.are.equal(1000, n)
+    assert.is_true(helpers.relerr(doc.total, refs().total) <= 1e-15)
+    -- not measured (measure = false): nothing to leave out
+    svg.each(FILE, function(e) assert.is_true(e.path ~= nil and e.ctm ~= nil) end,
+      {path = false, measure = false})
+    -- an element the reader cannot measure is measured by its path, and reported
+    local ok, err = pcall(svg.parse, '<svg xmlns="http://www.w3.org/2000/svg">'
+      .. '<path d="M0 0 L1e308 0 L-1e308 0"/></svg>', {path = false})
+    assert.is_false(ok)
+    assert.matches("<string>:1:%d+: <path>: the path's length overflows", err)
+    assert.matches("path must be a boolean", select(2, pcall(svg.each, FILE, print, {path = 1})))
+  end)
   it("svg.stats() from the segments in C: the same numbers as from the paths", function()
     local files = {FILE}
     local seen = {}

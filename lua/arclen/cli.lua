@@ -325,9 +325,10 @@ end
 -- prints: on_element writes to stdout (when stdout is the terminal too,
 -- the progress line is cleared first, lest they mix).  Returns the document without its
 -- elements; when it fails, exits, or with soft returns nil and the message.
-local function each_svg(src, name, opts, on_element, prints, soft)
+local function each_svg(src, name, opts, on_element, prints, soft, bare)
   local svg = svg_lib()
   local o = svg_opts(opts)
+  if bare then o.path = false end
   local P = progress_for(name, opts)
   local fn = on_element
   if P then
@@ -445,7 +446,8 @@ local function length_doc(src, name, opts)
       write(with_tag(e.tag, n, e.length))
     end
   end
-  local doc = each_svg(src, name, opts, row, true)
+  -- the rows need each element's numbers only (JSON: its segments too)
+  local doc = each_svg(src, name, opts, row, true, false, not rows_json)
   if n == 0 then io.stderr:write("arclen: warning: ", doc.name, ": nothing drawn\n") end
   if rows_json then
     -- the keys in order, as json() writes a whole object: paths, total, units

@@ -135,7 +135,8 @@ local function stream(o, name, next_chunk, uses, scan, on_element, size)
     max_depth = o.max_depth or MAX_DEPTH, uses = uses,
     unit_px = o.units ~= "user" and UNITS[o.units] or 0, stream = true,
     tol = tol, method = o.measure and core.engine == "c" and method == "gauss" and method or nil,
-    path = function(subpaths) return from_subpaths(subpaths, tol, method) end})
+    path = function(subpaths) return from_subpaths(subpaths, tol, method) end,
+    bare = o.path == false})
   if scan then
     for _ = 1, huge do
       local chunk = scan()
@@ -195,7 +196,9 @@ end
 
 -- The options of read, parse and each: tol, arc_tol, method, units,
 -- hidden, stroked, painted, lang, strict (the reader's warnings are errors),
--- measure, max_depth, arcs, max_elements, progress; each's name.
+-- measure, max_depth, arcs, max_elements, progress, path (false: the
+-- elements the reader measures come without path, ctm and a basic shape's
+-- d: the command line's rows need their numbers only); each's name.
 -- n: the options' argument position.
 local function read_opts(opts, fname, cap, n)
   n = n or 2
@@ -235,6 +238,8 @@ local function read_opts(opts, fname, cap, n)
       if type(v) ~= "number" or not (v >= 0) or (v ~= floor(v) and v ~= huge) then
         argerror4(2, fname, "max_elements must be a whole number >= 0 (or math.huge)")
       end
+    elseif k == "path" then
+      if type(v) ~= "boolean" then argerror4(2, fname, "path must be a boolean") end
     elseif k == "progress" then
       if type(v) ~= "function" then argerror4(2, fname, "progress must be a function") end
     elseif k == "name" and fname == "arclen.svg.each" then

@@ -14,7 +14,10 @@
 **                                 computed as it is read (svgdoc/measure.c;
 **                                 not for method "metapost"; arclen.svg
 **                                 asks it for "gauss" only), path: a
-**                                 function(subpaths) -> the element's path
+**                                 function(subpaths) -> the element's path,
+**                                 bare: an element measured comes without
+**                                 its lazy fields (d of a basic shape,
+**                                 ctm, subpaths, path)
 **   reader:scan(s)                optional, before feed: the whole document
 **                                 once, for the ids <use> refers to
 **   reader:feed(s) -> elements    the next bytes of the document; with
@@ -72,6 +75,7 @@ typedef struct reader {
   const arclen_method *method;           /* NULL: lengths not computed */
   arclen_opts o;
   int index_ref;
+  int bare;                              /* measured elements without lazy fields */
 } reader;
 
 static svgdoc **check_reader(lua_State *L) {
@@ -183,6 +187,7 @@ static int l_new(lua_State *L) {
   lua_insert(L, -2);
   R->index_ref = luaL_ref(L, LUA_REGISTRYINDEX);
   R->method = method;
+  R->bare = opt_boolean(L, "bare");
   arclen_opts_init(&R->o);
   R->o.rtol = tol;
   R->D = svgdoc_new(&o);
@@ -409,6 +414,7 @@ static void push_element(lua_State *L, const reader *R,
     if (svgdoc_measure(&e->pd, R->method, &R->o, &len) == ARCLEN_OK) {
       lua_pushnumber(L, len);
       lua_setfield(L, -2, "length");
+      if (R->bare) return;               /* its numbers are all it needs */
     }
   }
   set_lazy(L, R, e);
