@@ -56,6 +56,7 @@ build = {
         "src/methods/methods.c",
         "src/roots/roots.c",
         "src/roots/roots3d.c",
+        "src/segment/conic_circle.c",
         "src/segment/conic_seg.c",
         "src/segment/invert.c",
         "src/segment/line.c",

@@ -325,9 +325,10 @@ end
 -- prints: on_element writes to stdout (when stdout is the terminal too,
 -- the progress line is cleared first, lest they mix).  Returns the document without its
 -- elements; when it fails, exits, or with soft returns nil and the message.
-local function each_svg(src, name, opts, on_element, prints, soft)
+local function each_svg(src, name, opts, on_element, prints, soft, bare)
   local svg = svg_lib()
   local o = svg_opts(opts)
+  if bare then o.path = false end
   local P = progress_for(name, opts)
   local fn = on_element
   if P then
@@ -429,18 +430,24 @@ local function length_doc(src, name, opts)
   local n, rows_json, dk = 0, opts.json, nil
   local json_open = false
   if rows_json then dk = json_lib() end
+  -- a row in one string, one write: "id\tlength\n", or "tagN\tlength\n"
+  local write, with_id, with_tag = io.write, numtext.format_now("%s\t%.17g\n"),
+    numtext.format_now("%s%d\t%.17g\n")
   local function row(e)
     n = n + 1
-    local id = e.id or (e.tag .. n)
+    local id = rawget(e, "id")        -- never made lazily: no __index
     if rows_json then
-      io.write(json_open and "," or "{\"paths\":[", json({id = id, tag = e.tag, layer = e.layer,
-        length = e.length, segments = e.path:segments(), use = e.use}))
+      write(json_open and "," or "{\"paths\":[", json({id = id or (e.tag .. n), tag = e.tag,
+        layer = e.layer, length = e.length, segments = e.path:segments(), use = e.use}))
       json_open = true
+    elseif id then
+      write(with_id(id, e.length))
     else
-      io.write(id, "\t", g17(e.length), "\n")
+      write(with_tag(e.tag, n, e.length))
     end
   end
-  local doc = each_svg(src, name, opts, row, true)
+  -- the rows need each element's numbers only (JSON: its segments too)
+  local doc = each_svg(src, name, opts, row, true, false, not rows_json)
   if n == 0 then io.stderr:write("arclen: warning: ", doc.name, ": nothing drawn\n") end
   if rows_json then
     -- the keys in order, as json() writes a whole object: paths, total, units

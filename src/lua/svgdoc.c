@@ -9,7 +9,15 @@
 **                                 max_held (the queue behind a forward use),
 **                                 shape_text (for the specs: basic shapes
 **                                 written as path data and that parsed),
-**                                 strict (warnings are errors)
+**                                 strict (warnings are errors),
+**                                 method, tol: each element's length
+**                                 computed as it is read (svgdoc/measure.c;
+**                                 not for method "metapost"; arclen.svg
+**                                 asks it for "gauss" only), path: a
+**                                 function(subpaths) -> the element's path,
+**                                 bare: an element measured comes without
+**                                 its lazy fields (d of a basic shape,
+**                                 ctm, subpaths, path)
 **   reader:scan(s)                optional, before feed: the whole document
 **                                 once, for the ids <use> refers to
 **   reader:feed(s) -> elements    the next bytes of the document; with
@@ -22,18 +30,26 @@
 **                           elements are the ones completed at the end)
 **   svgdoc.isatty([which]) -> boolean  is stderr (or "stdout") a terminal
 **                                 (the command line's progress line)
+**   svgdoc.stat_add(e, acc) -> boolean  svg.stats()'s add of an element
+**                                 without its path (l_stat_add)
 **   svgdoc.gzip, svgdoc.gunzip    gzip input (svgdoc_gzip.c)
 ** A located error is raised as {line =, col =, msg =}; arclen.svg names
 ** the document in it.  Each element is {id, tag, layer, line, col,
-** stroked, filled, use, d, ctm = {a, b, c, d, e, f}, subpaths} (subpaths as
-** arclen.core.svg_pathdata returns them; a basic shape's d is written
-** when first read, element_index).  Warnings come formatted as
-** "NAME:LINE:COL: message".
+** stroked, filled, use, d, ctm = {a, b, c, d, e, f}, subpaths, length,
+** path} (subpaths as arclen.core.svg_pathdata returns them, not given
+** when opts.path is; length with opts.method, unless it fails: the caller
+** measures such an element itself and reports it; path with opts.path).
+** Only the strings and numbers are made up front: a basic shape's d,
+** ctm, subpaths and path are made when first read and kept
+** (element_index), which halved the cost of a drawing of circles.
+** Warnings come formatted as "NAME:LINE:COL: message".
 */
+#include <math.h>
 #include <string.h>
 
 #include "lua/binding.h"
 #include "svgdoc/cond.h"
+#include "svgdoc/measure.h"
 #include "svgdoc/svgdoc.h"
 
 #include <stdio.h>
@@ -51,6 +67,17 @@
 
 void arclenL_open_gzip(lua_State *L);    /* svgdoc_gzip.c */
 
+/* The reader's userdata: the document's reader (first, so that a pointer
+** to it is a svgdoc **), how its elements are measured, and the reference
+** of their __index closure (element_index). */
+typedef struct reader {
+  svgdoc *D;
+  const arclen_method *method;           /* NULL: lengths not computed */
+  arclen_opts o;
+  int index_ref;
+  int bare;                              /* measured elements without lazy fields */
+} reader;
+
 static svgdoc **check_reader(lua_State *L) {
   svgdoc **D = (svgdoc **)luaL_checkudata(L, 1, READER);
   if (*D == NULL) luaL_argerror(L, 1, "the reader has finished");
@@ -58,11 +85,15 @@ static svgdoc **check_reader(lua_State *L) {
 }
 
 static int reader_gc(lua_State *L) {
-  svgdoc **D = (svgdoc **)luaL_checkudata(L, 1, READER);
-  svgdoc_free(*D);
-  *D = NULL;
+  reader *R = (reader *)luaL_checkudata(L, 1, READER);
+  svgdoc_free(R->D);
+  R->D = NULL;
+  if (R->index_ref != LUA_NOREF) luaL_unref(L, LUA_REGISTRYINDEX, R->index_ref);
+  R->index_ref = LUA_NOREF;
   return 0;
 }
+
+static int element_index(lua_State *L);
 
 static double opt_number(lua_State *L, const char *k, double dflt) {
   double v = dflt;
@@ -87,8 +118,9 @@ static int opt_boolean(lua_State *L, const char *k) {
 /* svgdoc.new(opts) */
 static int l_new(lua_State *L) {
   svgdoc_options o;
-  svgdoc **D;
-  double depth, held;
+  reader *R;
+  const arclen_method *method = NULL;
+  double depth, held, tol;
   luaL_checktype(L, 1, LUA_TTABLE);
   o.arc_tol = opt_number(L, "arc_tol", 1e-12);
   o.unit_px = opt_number(L, "unit_px", 0);
@@ -127,12 +159,39 @@ static int l_new(lua_State *L) {
     if (strcmp(a, "cubics") == 0) o.arcs = ARCLEN_PD_ARCS_CUBICS;
   }
   lua_pop(L, 1);
-  D = (svgdoc **)lua_newuserdata(L, sizeof *D);
-  *D = NULL;
+  lua_getfield(L, 1, "method");
+  if (!lua_isnil(L, -1)) {
+    if (lua_type(L, -1) != LUA_TSTRING ||
+        (method = arclen_find_method(lua_tostring(L, -1))) == NULL)
+      luaL_argerror(L, 1, "method must be the name of a known method");
+    /* MetaPost measures a path's subpaths whole, not by segments: left to
+    ** arclen.path */
+    if (strcmp(method->name, "metapost") == 0) method = NULL;
+  }
+  lua_pop(L, 1);
+  tol = opt_number(L, "tol", 1e-12);
+  luaL_argcheck(L, tol >= ARCLEN_RTOL_MIN && tol <= ARCLEN_RTOL_MAX, 1,
+                "tol out of range");
+  lua_getfield(L, 1, "path");
+  luaL_argcheck(L, lua_isnil(L, -1) || lua_type(L, -1) == LUA_TFUNCTION, 1,
+                "path must be a function");
+  /* the elements' __index: the path function (or nil), whether subpaths
+  ** are shown */
+  lua_pushboolean(L, lua_isnil(L, -1));
+  lua_pushcclosure(L, element_index, 2);
+  R = (reader *)lua_newuserdata(L, sizeof *R);
+  R->D = NULL;
+  R->index_ref = LUA_NOREF;
   luaL_getmetatable(L, READER);
   lua_setmetatable(L, -2);
-  *D = svgdoc_new(&o);
-  if (*D == NULL) return luaL_error(L, "not enough memory");
+  lua_insert(L, -2);
+  R->index_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+  R->method = method;
+  R->bare = opt_boolean(L, "bare");
+  arclen_opts_init(&R->o);
+  R->o.rtol = tol;
+  R->D = svgdoc_new(&o);
+  if (R->D == NULL) return luaL_error(L, "not enough memory");
   lua_remove(L, -2);                     /* lang, now copied */
   return 1;
 }
@@ -153,17 +212,20 @@ static int raise(lua_State *L, svgdoc **D) {
   return lua_error(L);
 }
 
-static void push_element(lua_State *L, const svgdoc_element *e);
+static void push_element(lua_State *L, const reader *R,
+                         const svgdoc_element *e);
 
 /* The elements the last call completed, as a list (nothing when none). */
-static int push_batch(lua_State *L, svgdoc *D) {
-  size_t i, n = svgdoc_count(D);
+static int push_batch(lua_State *L, const reader *R) {
+  size_t i, n = svgdoc_count(R->D);
   if (n == 0) return 0;
+  lua_rawgeti(L, LUA_REGISTRYINDEX, R->index_ref);   /* element_index */
   lua_createtable(L, n > 0x7fffffff ? 0x7fffffff : (int)n, 0);
   for (i = 0; i < n; i++) {
-    push_element(L, svgdoc_get(D, i));
+    push_element(L, R, svgdoc_get(R->D, i));
     lua_rawseti(L, -2, (int)i + 1);
   }
+  lua_remove(L, -2);
   return 1;
 }
 
@@ -182,7 +244,7 @@ static int l_feed(lua_State *L) {
   size_t n;
   const char *s = luaL_checklstring(L, 2, &n);
   if (svgdoc_feed(*D, s, n) != 0) return raise(L, D);
-  return svgdoc_streaming(*D) ? push_batch(L, *D) : 0;
+  return svgdoc_streaming(*D) ? push_batch(L, (const reader *)D) : 0;
 }
 
 /* svgdoc.isatty([which]) */
@@ -199,73 +261,148 @@ static void set_string(lua_State *L, const char *k, const char *v) {
   lua_setfield(L, -2, k);
 }
 
-/* A basic shape's numbers, kept in a userdata for its d. */
-typedef union shape_head {
+/* What an element's lazy fields are made of, in one userdata (in its
+** metatable, [1]): the header, then the segments' records (8 doubles
+** each), the shape's numbers, the subpaths, the kinds (a byte each). */
+typedef union element_head {
   struct {
-    size_t n;
-    int kind;
+    const char *magic;               /* ELEMENT_MAGIC: one of these */
+    size_t n, nsub, nnums;           /* segments, subpaths, shape numbers */
+    int kind;                        /* the shape's (SVGDOC_SHAPE_*) */
+    int flat;                        /* its path keeps these segments (gauss) */
+    double ctm[6];
   } h;
-  double align;                  /* the numbers follow, aligned */
-} shape_head;
+  double align;                      /* the numbers follow, aligned */
+} element_head;
+
+#define REC_BYTES (ARCLEN_PD_STRIDE * sizeof(double))
+
+/* What marks an element's userdata (its address; never written). */
+static const char ELEMENT_MAGIC[] = "arclen.svgdoc.element";
+
+static const double *head_records(const element_head *u) {
+  return (const double *)(u + 1);
+}
+static const double *head_numbers(const element_head *u) {
+  return head_records(u) + ARCLEN_PD_STRIDE * u->h.n;
+}
+static const arclen_subpath *head_subpaths(const element_head *u) {
+  return (const arclen_subpath *)(head_numbers(u) + u->h.nnums);
+}
+static const unsigned char *head_kinds(const element_head *u) {
+  return (const unsigned char *)(head_subpaths(u) + u->h.nsub);
+}
 
 static void add_bytes(void *b, const char *bytes, size_t n) {
   luaL_addlstring((luaL_Buffer *)b, bytes, n);
 }
 
-/* __index of a basic shape's element: its d written when first asked for
-** (the numbers of the shape in the metatable) and kept; nil for any other
-** key.  Writing each d up front was half the reader's work (doc/benchmarks.md). */
+/* The subpaths of u as arclenL_pushsubpaths pushes a reader's. */
+static void push_head_subpaths(lua_State *L, const element_head *u) {
+  arclen_pathdata pd;
+  arclen_pathdata_init(&pd);
+  pd.cubics = (double *)head_records(u);
+  pd.kinds = (unsigned char *)head_kinds(u);
+  pd.ncubics = u->h.n;
+  pd.subpaths = (arclen_subpath *)head_subpaths(u);
+  pd.nsubpaths = u->h.nsub;
+  arclenL_pushsubpaths(L, &pd);
+}
+
+/* __index of an element (a C closure: upvalue 1 the path function or nil,
+** 2 whether subpaths are shown): a basic shape's d, ctm, subpaths, path,
+** made from the userdata when first asked for and kept in the element;
+** nil for any other key.  Writing each d up front was half the reader's
+** work, making each path in Lua half of `arclen length`'s on circles
+** (doc/benchmarks.md). */
 static int element_index(lua_State *L) {
-  const shape_head *u;
-  svgdoc_shape s;
-  luaL_Buffer b;
-  if (lua_type(L, 2) != LUA_TSTRING || strcmp(lua_tostring(L, 2), "d") != 0)
-    return 0;
-  if (!lua_getmetatable(L, 1)) return 0;
-  lua_getfield(L, -1, "shape");
-  u = (const shape_head *)lua_touserdata(L, -1);
+  const element_head *u;
+  const char *k;
+  if (lua_type(L, 2) != LUA_TSTRING || !lua_getmetatable(L, 1)) return 0;
+  k = lua_tostring(L, 2);
+  lua_rawgeti(L, -1, 1);
+  u = (const element_head *)lua_touserdata(L, -1);
   if (u == NULL) return 0;
-  s.kind = u->h.kind;
-  s.d = NULL;
-  s.n = u->h.n;
-  s.v = (const double *)(u + 1);
-  luaL_buffinit(L, &b);
-  svgdoc_shape_d(&s, add_bytes, &b);
-  luaL_pushresult(&b);
-  lua_pushliteral(L, "d");
+  if (strcmp(k, "d") == 0 && u->h.kind != SVGDOC_SHAPE_PATH) {
+    svgdoc_shape s;
+    luaL_Buffer b;
+    s.kind = u->h.kind;
+    s.d = NULL;
+    s.n = u->h.nnums;
+    s.v = head_numbers(u);
+    luaL_buffinit(L, &b);
+    svgdoc_shape_d(&s, add_bytes, &b);
+    luaL_pushresult(&b);
+  } else if (strcmp(k, "ctm") == 0) {
+    int j;
+    lua_createtable(L, 6, 0);
+    for (j = 0; j < 6; j++) {
+      lua_pushnumber(L, u->h.ctm[j]);
+      lua_rawseti(L, -2, j + 1);
+    }
+  } else if (strcmp(k, "subpaths") == 0 && lua_toboolean(L, lua_upvalueindex(2))) {
+    push_head_subpaths(L, u);
+  } else if (strcmp(k, "path") == 0 && lua_isfunction(L, lua_upvalueindex(1))) {
+    lua_pushvalue(L, lua_upvalueindex(1));
+    push_head_subpaths(L, u);
+    lua_call(L, 1, 1);
+  } else {
+    return 0;
+  }
+  lua_pushvalue(L, 2);
   lua_pushvalue(L, -2);
-  lua_rawset(L, 1);
+  lua_rawset(L, 1);                      /* kept: the same object each time */
   return 1;
 }
 
-/* d: a path's as written; a basic shape's made on first access (its
-** numbers copied into the element's metatable). */
-static void set_d(lua_State *L, const svgdoc_shape *s) {
-  shape_head *u;
-  if (s->kind == SVGDOC_SHAPE_PATH) {
-    set_string(L, "d", s->d);
-    return;
-  }
-  lua_createtable(L, 0, 2);
-  lua_pushcfunction(L, element_index);
+/* The element's metatable: element_index (below the list and the element
+** on the stack) and the userdata of its lazy fields. */
+static void set_lazy(lua_State *L, const reader *R, const svgdoc_element *e) {
+  const arclen_pathdata *pd = &e->pd;
+  const svgdoc_shape *s = &e->shape;
+  size_t nnums = s->kind == SVGDOC_SHAPE_PATH ? 0 : s->n;
+  element_head *u;
+  char *at;
+  lua_createtable(L, 1, 1);
+  lua_pushvalue(L, -4);
   lua_setfield(L, -2, "__index");
-  u = (shape_head *)lua_newuserdata(L, sizeof *u + s->n * sizeof *s->v);
-  u->h.n = s->n;
+  u = (element_head *)lua_newuserdata(L, sizeof *u + pd->ncubics * REC_BYTES +
+      nnums * sizeof(double) + pd->nsubpaths * sizeof(arclen_subpath) + pd->ncubics);
+  u->h.magic = ELEMENT_MAGIC;
+  u->h.flat = R->method != NULL && strcmp(R->method->name, "gauss") == 0;
+  u->h.n = pd->ncubics;
+  u->h.nsub = pd->nsubpaths;
+  u->h.nnums = nnums;
   u->h.kind = s->kind;
-  if (s->n) memcpy(u + 1, s->v, s->n * sizeof *s->v);
-  lua_setfield(L, -2, "shape");
+  memcpy(u->h.ctm, e->ctm, sizeof u->h.ctm);
+  at = (char *)(u + 1);
+  if (pd->ncubics) memcpy(at, pd->cubics, pd->ncubics * REC_BYTES);
+  at += pd->ncubics * REC_BYTES;
+  if (nnums) memcpy(at, s->v, nnums * sizeof(double));
+  at += nnums * sizeof(double);
+  if (pd->nsubpaths) memcpy(at, pd->subpaths, pd->nsubpaths * sizeof(arclen_subpath));
+  at += pd->nsubpaths * sizeof(arclen_subpath);
+  if (pd->ncubics) memcpy(at, pd->kinds, pd->ncubics);
+  lua_rawseti(L, -2, 1);
   lua_setmetatable(L, -2);
 }
 
-static void push_element(lua_State *L, const svgdoc_element *e) {
-  int k;
-  lua_createtable(L, 0, 10);
+/* An element, with element_index and the list below it on the stack. */
+static void push_element(lua_State *L, const reader *R,
+                         const svgdoc_element *e) {
+  /* sized for its fields (Lua rounds up to a power of two): the collector's
+  ** work grows with the bytes allocated, and 16 slots were twice a
+  ** circle's */
+  lua_createtable(L, 0, 6 + (e->id != NULL) + (e->layer != NULL) +
+                  (e->use != NULL) + (e->marker != NULL) +
+                  (e->shape.kind == SVGDOC_SHAPE_PATH));
   set_string(L, "id", e->id);
-  set_string(L, "tag", e->tag);
+  lua_pushstring(L, e->tag);
+  lua_setfield(L, -2, "tag");
   set_string(L, "layer", e->layer);
   set_string(L, "use", e->use);
   set_string(L, "marker", e->marker);
-  set_d(L, &e->shape);
+  if (e->shape.kind == SVGDOC_SHAPE_PATH) set_string(L, "d", e->shape.d);
   lua_pushinteger(L, (lua_Integer)e->line);
   lua_setfield(L, -2, "line");
   lua_pushinteger(L, (lua_Integer)e->col);
@@ -274,14 +411,224 @@ static void push_element(lua_State *L, const svgdoc_element *e) {
   lua_setfield(L, -2, "stroked");
   lua_pushboolean(L, e->filled);
   lua_setfield(L, -2, "filled");
-  lua_createtable(L, 6, 0);
-  for (k = 0; k < 6; k++) {
-    lua_pushnumber(L, e->ctm[k]);
-    lua_rawseti(L, -2, k + 1);
+  if (R->method) {
+    double len;
+    if (svgdoc_measure(&e->pd, R->method, &R->o, &len) == ARCLEN_OK) {
+      lua_pushnumber(L, len);
+      lua_setfield(L, -2, "length");
+      if (R->bare) return;               /* its numbers are all it needs */
+    }
   }
-  lua_setfield(L, -2, "ctm");
-  arclenL_pushsubpaths(L, &e->pd);
-  lua_setfield(L, -2, "subpaths");
+  set_lazy(L, R, e);
+}
+
+/* ---- svg.stats()'s add in C (svgdoc.stat_add) ------------------------
+** The same numbers as lua/arclen/svg.lua's Stats:add computes from the
+** element's path, by the same operations in the same order (its
+** svgpath.segment_box and segment_end), without making the path: `arclen
+** stat` spent most of its time there. */
+
+static double lmin(double a, double b) { return b < a ? b : a; }  /* math.min */
+static double lmax(double a, double b) { return a < b ? b : a; }  /* math.max */
+
+typedef struct span { double lo, hi; } span;
+
+static void span_add(span *r, double v) {
+  if (v < r->lo) r->lo = v;
+  if (v > r->hi) r->hi = v;
+}
+
+/* The value at t of one coordinate p of a segment of kind (svgpath.lua's
+** callbacks of range). */
+static double coord_at(int kind, const double *p, double w, double t) {
+  double u = 1 - t;
+  if (kind == ARCLEN_SEG_QUAD) return u * u * p[0] + 2 * u * t * p[1] + t * t * p[2];
+  if (kind == ARCLEN_SEG_CUBIC)
+    return u * u * u * p[0] + 3 * u * u * t * p[1] + 3 * u * t * t * p[2] + t * t * t * p[3];
+  {
+    double b0 = u * u, b1 = 2 * w * t * u, b2 = t * t;
+    return (b0 * p[0] + b1 * p[1] + b2 * p[2]) / (b0 + b1 + b2);
+  }
+}
+
+static void at01(int kind, const double *p, double w, double t, span *r) {
+  if (t > 0 && t < 1) span_add(r, coord_at(kind, p, w, t));
+}
+
+/* svgpath.lua's roots01: the real roots in (0, 1) of a t^2 + b t + c. */
+static void roots01(double a, double b, double c, int kind, const double *p,
+                    double w, span *r) {
+  double disc, q;
+  if (fabs(a) < 1e-300) {
+    if (b != 0) at01(kind, p, w, -c / b, r);
+    return;
+  }
+  disc = b * b - 4 * a * c;
+  if (disc < 0) return;
+  q = -0.5 * (b + (b >= 0 ? 1 : -1) * sqrt(disc));
+  at01(kind, p, w, q / a, r);
+  if (q != 0) at01(kind, p, w, c / q, r);
+}
+
+/* svgpath.lua's range: one coordinate's extremes on [0, 1]. */
+static span coord_range(int kind, const double *p, double w) {
+  span r;
+  int last = kind == ARCLEN_SEG_LINE ? 1 : kind == ARCLEN_SEG_CUBIC ? 3 : 2;
+  r.lo = lmin(p[0], p[last]);
+  r.hi = lmax(p[0], p[last]);
+  if (kind == ARCLEN_SEG_QUAD) {
+    roots01(0, p[0] - 2 * p[1] + p[2], p[1] - p[0], kind, p, w, &r);
+  } else if (kind == ARCLEN_SEG_CUBIC) {
+    roots01(-p[0] + 3 * p[1] - 3 * p[2] + p[3], 2 * (p[0] - 2 * p[1] + p[2]),
+            p[1] - p[0], kind, p, w, &r);
+  } else if (kind == ARCLEN_SEG_CONIC) {
+    double a0 = w * (p[1] - p[0]), a1 = p[2] - p[0], a2 = w * (p[2] - p[1]);
+    roots01(a0 - a1 + a2, a1 - 2 * a0, a0, kind, p, w, &r);
+  }
+  return r;
+}
+
+/* Neumaier's step, as svg.lua's neumaier. */
+static void neumaier(double *sum, double *comp, double x) {
+  double t = *sum + x;
+  if (fabs(*sum) >= fabs(x)) *comp += (*sum - t) + x;
+  else *comp += (x - t) + *sum;
+  *sum = t;
+}
+
+static double get_num(lua_State *L, int t, const char *k) {
+  double v;
+  lua_getfield(L, t, k);
+  v = lua_tonumber(L, -1);
+  lua_pop(L, 1);
+  return v;
+}
+
+static void set_num(lua_State *L, int t, const char *k, double v) {
+  lua_pushnumber(L, v);
+  lua_setfield(L, t, k);
+}
+
+static void add_int(lua_State *L, int t, const char *k, lua_Integer d) {
+  lua_Integer v;
+  lua_getfield(L, t, k);
+  v = lua_tointeger(L, -1);
+  lua_pop(L, 1);
+  lua_pushinteger(L, v + d);
+  lua_setfield(L, t, k);
+}
+
+/* svgdoc.stat_add(e, acc) -> true, acc updated as Stats:add would; false
+** (nothing done) for an element that is not the reader's, whose path has
+** been made or is not made of these segments, or without a length. */
+static int l_stat_add(lua_State *L) {
+  const element_head *u;
+  const double *rec;
+  const unsigned char *kinds;
+  const arclen_subpath *sub;
+  double length, sum, comp, endx = 0, endy = 0, box[4];
+  int has_end, has_box, j;
+  size_t k, first;
+  luaL_checktype(L, 1, LUA_TTABLE);
+  luaL_checktype(L, 2, LUA_TTABLE);
+  lua_settop(L, 2);
+  lua_pushboolean(L, 0);                          /* 3: the answer "no" */
+  if (!lua_getmetatable(L, 1)) return 1;
+  lua_rawgeti(L, -1, 1);
+  u = (const element_head *)lua_touserdata(L, -1);
+  if (u == NULL || lua_rawlen(L, -1) < sizeof *u || u->h.magic != ELEMENT_MAGIC ||
+      !u->h.flat) {
+    lua_pushboolean(L, 0);
+    return 1;
+  }
+  lua_settop(L, 2);
+  lua_pushliteral(L, "path");
+  lua_rawget(L, 1);
+  lua_pushliteral(L, "length");
+  lua_rawget(L, 1);
+  if (!lua_isnil(L, 3) || lua_type(L, 4) != LUA_TNUMBER) {
+    lua_pushboolean(L, 0);
+    return 1;
+  }
+  length = lua_tonumber(L, 4);
+  lua_settop(L, 2);
+  rec = head_records(u);
+  kinds = head_kinds(u);
+  sub = head_subpaths(u);
+  sum = get_num(L, 2, "length"), comp = get_num(L, 2, "lc");
+  neumaier(&sum, &comp, length);
+  set_num(L, 2, "length", sum), set_num(L, 2, "lc", comp);
+  add_int(L, 2, "elements", 1);
+  /* the path's subpaths: those with segments (path.lua, build_flat) */
+  {
+    lua_Integer nsub = 0;
+    for (k = 0; k < u->h.nsub; k++) nsub += sub[k].n > 0;
+    add_int(L, 2, "paths", nsub);
+    add_int(L, 2, "segments", (lua_Integer)u->h.n);
+  }
+  lua_getfield(L, 2, "endx");
+  has_end = !lua_isnil(L, -1);
+  lua_pop(L, 1);
+  if (has_end) endx = get_num(L, 2, "endx"), endy = get_num(L, 2, "endy");
+  sum = get_num(L, 2, "travel"), comp = get_num(L, 2, "tc");
+  for (first = 0, k = 0; k < u->h.nsub; k++) {     /* capped: the subpaths */
+    size_t last;
+    const double *a, *b;
+    int lk;
+    if (sub[k].n == 0) continue;
+    a = rec + ARCLEN_PD_STRIDE * first;
+    last = first + sub[k].n - 1;
+    b = rec + ARCLEN_PD_STRIDE * last;
+    if (has_end) {
+      double dx = a[0] - endx, dy = a[1] - endy;
+      neumaier(&sum, &comp, sqrt(dx * dx + dy * dy));
+    }
+    lk = arclen_segment_kind_of_letter(kinds[last]);
+    j = lk == ARCLEN_SEG_LINE ? 2 : lk == ARCLEN_SEG_CUBIC ? 6 : 4;   /* segment_end */
+    endx = b[j], endy = b[j + 1], has_end = 1;
+    first = last + 1;
+  }
+  set_num(L, 2, "travel", sum), set_num(L, 2, "tc", comp);
+  if (has_end) set_num(L, 2, "endx", endx), set_num(L, 2, "endy", endy);
+  /* the bounding box (svg.lua's box_add of each segment_box) */
+  lua_getfield(L, 2, "box");
+  if (lua_type(L, 3) != LUA_TTABLE) {
+    lua_pushboolean(L, 0);       /* cannot happen: Stats:add makes it */
+    return 1;
+  }
+  lua_rawgeti(L, 3, 1);
+  has_box = !lua_isnil(L, -1);
+  lua_pop(L, 1);
+  for (j = 0; j < 4 && has_box; j++) {
+    lua_rawgeti(L, 3, j + 1);
+    box[j] = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+  }
+  for (k = 0; k < u->h.n; k++) {
+    const double *c = rec + ARCLEN_PD_STRIDE * k;
+    int kind = arclen_segment_kind_of_letter(kinds[k]), m, i;
+    double xs[4], ys[4];
+    span x, y;
+    m = kind == ARCLEN_SEG_LINE ? 2 : kind == ARCLEN_SEG_CUBIC ? 4 : 3;
+    for (i = 0; i < m; i++) xs[i] = c[2 * i], ys[i] = c[2 * i + 1];
+    x = coord_range(kind, xs, c[6]);
+    y = coord_range(kind, ys, c[6]);
+    if (!has_box) {
+      box[0] = x.lo, box[1] = y.lo, box[2] = x.hi, box[3] = y.hi;
+      has_box = 1;
+      continue;
+    }
+    if (x.lo < box[0]) box[0] = x.lo;
+    if (y.lo < box[1]) box[1] = y.lo;
+    if (x.hi > box[2]) box[2] = x.hi;
+    if (y.hi > box[3]) box[3] = y.hi;
+  }
+  for (j = 0; j < 4 && has_box; j++) {
+    lua_pushnumber(L, box[j]);
+    lua_rawseti(L, 3, j + 1);
+  }
+  lua_pushboolean(L, 1);
+  return 1;
 }
 
 /* reader:finish(name) */
@@ -292,13 +639,8 @@ static int l_finish(lua_State *L) {
   const size_t *skipped;
   size_t i, n;
   if (svgdoc_finish(*D) != 0) return raise(L, D);
-  n = svgdoc_count(*D);
   lua_createtable(L, 0, 8);
-  lua_createtable(L, n > 0x7fffffff ? 0x7fffffff : (int)n, 0);
-  for (i = 0; i < n; i++) {
-    push_element(L, svgdoc_get(*D, i));
-    lua_rawseti(L, -2, (int)i + 1);
-  }
+  if (!push_batch(L, (const reader *)D)) lua_newtable(L);
   lua_setfield(L, -2, "elements");
   n = svgdoc_nwarnings(*D);
   lua_createtable(L, (int)n, 0);
@@ -346,7 +688,7 @@ static const luaL_Reg reader_methods[] = {
   {"scan", l_scan}, {"feed", l_feed}, {"finish", l_finish}, {NULL, NULL}};
 
 static const luaL_Reg funcs[] = {{"new", l_new}, {"isatty", l_isatty},
-                                 {NULL, NULL}};
+                                 {"stat_add", l_stat_add}, {NULL, NULL}};
 
 #if defined(_WIN32)
 __declspec(dllexport)

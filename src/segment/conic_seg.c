@@ -166,11 +166,23 @@ static double collinear_length(double leg[3][3], int dim, double w) {
   return L;
 }
 
+/* A circular arc's length in closed form (conic_circle.c); 0 for any
+** other conic. */
+static int circular(const double q[6], double w, double *L,
+                    arclen_info *info) {
+  if (!arclen_rquad_circular(q, w, L)) return 0;
+  if (info) {
+    arclen_info_init(info);
+    info->branch = "circle";
+  }
+  return 1;
+}
+
 /* The whole arc's length. */
 static int whole_length(const double *p, int dim, double *len,
                         arclen_info *info) {
   double leg[3][3], q[6], w = p[3 * dim], L;
-  int e = scaled_legs(p, dim, leg), flat, rc;
+  int e, flat, rc;
   if (dim == 3) {
     /* the isometric image in the plane, P1 at the origin: P0 -> (-|a|, 0),
     ** P2 -> |c| (cos, sin) of the angle between a and c, so both legs keep
@@ -209,7 +221,8 @@ static int whole_length(const double *p, int dim, double *len,
       q[0] = -ldexp(la, ea); q[1] = 0; q[2] = 0; q[3] = 0;
       q[4] = ldexp(dot(as, cs, 3) / la, ec);
       q[5] = ldexp(lx / la, ec);
-      rc = arclen_conic_length(q, w, &L, info);
+      if (circular(q, w, &L, info)) rc = ARCLEN_OK;
+      else rc = arclen_conic_length(q, w, &L, info);
       /* EDOMAIN: the image is flat after all (a leg at the bottom of the
       ** double range, 5e-324 beside 100, rounds its direction away) */
       if (rc != ARCLEN_EDOMAIN) {
@@ -228,9 +241,12 @@ static int whole_length(const double *p, int dim, double *len,
     for (k = 0; k < 4; k++)
       if (!(fabs(p[k + 2] - p[k]) <= 0x1p1020)) big = 1;
     for (k = 0; k < 6; k++) q[k] = big ? p[k] / 4 : p[k];
-    flat = arclen_conic_degenerate(q);
-    if (!flat) {
+    /* a circular arc first: its triangle is not flat (its angle at P1 is
+    ** pi minus the arc's), and the flatness test cost as much again */
+    if (circular(q, w, &L, info)) rc = ARCLEN_OK, flat = 0;
+    else if (!(flat = arclen_conic_degenerate(q)))
       rc = arclen_conic_length(q, w, &L, info);
+    if (!flat) {
       if (rc == ARCLEN_OK && big) {
         L *= 4;
         if (!isfinite(L)) rc = ARCLEN_EOVERFLOW;
@@ -239,8 +255,10 @@ static int whole_length(const double *p, int dim, double *len,
       return rc;
     }
   }
-  /* flat: the points on a line */
+  /* flat: the points on a line (the scaled legs only here: a circle's
+  ** quarter spent a third of its time on them) */
   if (info) info->branch = "collinear";
+  e = scaled_legs(p, dim, leg);
   L = ldexp(collinear_length(leg, dim, w), e);
   *len = L;
   return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;

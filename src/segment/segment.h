@@ -36,6 +36,11 @@ void arclen_rquad_derivative(const double *p, int dim, double t,
 void arclen_rquad_sub(const double *p, int dim, double t0, double t1,
                       double *out);
 
+/* conic_circle.c: 1 and *len when the 2D conic (q = P0 P1 P2; w) is a
+** circular arc to within 2^-30 (its length in closed form, within a few
+** ulps), else 0 (the general path, arclen_conic_length). */
+int arclen_rquad_circular(const double q[6], double w, double *len);
+
 /* invert.c: the t in [0, 1] with |len(0, t) - s| <= tol, for len(0, t)
 ** increasing with derivative speed(t) >= 0: Newton's method on a
 ** Gauss-Legendre model of the length, certified by an exact length or

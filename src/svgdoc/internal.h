@@ -121,6 +121,9 @@ struct svgdoc {
   unsigned long style_line, style_col;
   svgdoc_buffer style_text, style_media;
   int style_has_media;
+  /* the segments of the element being drawn (reader.c, draw): copied into
+  ** the element's block, the arrays kept for the next */
+  arclen_pathdata draw_pd;
   /* input held back while expat has an unfinished token (reader.c) */
   svgdoc_buffer held;
   size_t held_need;

@@ -56,8 +56,8 @@ static const char *const MARKER_PROPS[] = {"marker-start", "marker-mid",
 /* The entry of tag in list[0 .. n-1], or -1. */
 static int find_tag(const char *const *list, int n, const char *tag) {
   int k;
-  for (k = 0; k < n; k++)
-    if (strcmp(list[k], tag) == 0) return k;
+  for (k = 0; k < n; k++)       /* the first byte first: a strcmp a name */
+    if (list[k][0] == tag[0] && strcmp(list[k], tag) == 0) return k;
   return -1;
 }
 #define lookup(list, tag) find_tag(list, (int)(sizeof list / sizeof *list), tag)
@@ -213,9 +213,7 @@ static const char *copy(svgdoc *D, const char *s) {
 }
 
 static void free_element(svgdoc_element *e) {
-  if (e == NULL) return;
-  arclen_pathdata_free(&e->pd);
-  free(e);
+  free(e);                        /* its segments are in its block (draw) */
 }
 
 /* Is a use waiting in the queue for its target, so that what is drawn
@@ -368,24 +366,23 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
                  C[4] == 0 && C[5] == 0;
   const char *d;
   svgdoc_shape cut;
-  arclen_pathdata pd;
+  arclen_pathdata *pd = &D->draw_pd;   /* its arrays reused, element to element */
   svgdoc_element *e;
   char *at;
-  size_t size, nums = shape->n * sizeof *shape->v;
+  size_t size, nums = shape->n * sizeof *shape->v, recs, subs;
   reserve_out(D, line, col);
-  arclen_pathdata_init(&pd);
-  if (svgdoc_shape_parse(D, &pd, shape, identity ? NULL : C, &d) !=
+  if (svgdoc_shape_parse(D, pd, shape, identity ? NULL : C, &d) !=
       ARCLEN_PD_OK) {
-    const char *m = shape_size_message(D, &pd, tag, atts), *what;
-    size_t good = pd.err.start;
+    const char *m = shape_size_message(D, pd, tag, atts), *what;
+    size_t good = pd->err.start;
     if (m == NULL) {
-      m = pathdata_message(D, &pd, d);
+      m = pathdata_message(D, pd, d);
       if (strcmp(tag, "path") == 0) m = svgdoc_format(D, "d: %s", m);
     }
     what = svgdoc_format(D, "<%s%s%s%s>: %s", tag, id ? " id='" : "",
                          id ? id : "", id ? "'" : "", m);
-    if (!syntax_error(pd.err.kind) || strcmp(tag, "path") != 0) {
-      arclen_pathdata_free(&pd);
+    if (!syntax_error(pd->err.kind) || strcmp(tag, "path") != 0) {
+      arclen_pathdata_free(pd);
       svgdoc_fail(D, line, col, "%s", what);
     }
     /* SVG 2 section 9.5.4 (SVG 1.1 F.2): the path is rendered up to the
@@ -394,7 +391,7 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
     while (good > 0 && (svgdoc_space((unsigned char)d[good - 1]) ||
                         d[good - 1] == ','))
       good--;
-    arclen_pathdata_free(&pd);          /* lenient may jump (strict) */
+    arclen_pathdata_free(pd);          /* lenient may jump (strict) */
     if (good == 0) {
       lenient(D, line, col, what, "nothing drawn");
       return;
@@ -404,11 +401,10 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
     cut = *shape;
     cut.d = svgdoc_strdup(D, d, good);
     shape = &cut;                       /* the element keeps the data drawn */
-    arclen_pathdata_init(&pd);
-    if (svgdoc_shape_parse(D, &pd, shape, identity ? NULL : C, &d) !=
+    if (svgdoc_shape_parse(D, pd, shape, identity ? NULL : C, &d) !=
         ARCLEN_PD_OK) {               /* only a range error can be left */
-      m = pathdata_message(D, &pd, d);
-      arclen_pathdata_free(&pd);
+      m = pathdata_message(D, pd, d);
+      arclen_pathdata_free(pd);
       svgdoc_fail(D, line, col, "<%s%s%s%s>: d: %s", tag, id ? " id='" : "",
                   id ? id : "", id ? "'" : "", m);
     }
@@ -422,39 +418,48 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
   {
     /* a control point beyond the doubles (a line from -1e308 to 1e308
     ** has its thirds there): the length cannot be a double either */
-    size_t k, n = 8 * pd.ncubics;
+    size_t k, n = 8 * pd->ncubics;
     double top = 0;
     int finite = 1;
     for (k = 0; k < n; k++) {
-      double v = fabs(pd.cubics[k]);
+      double v = fabs(pd->cubics[k]);
       if (!(v <= DBL_MAX)) finite = 0;
       else if (v > top) top = v;
     }
     if (!finite) {
       char num[32];
       short_num(num, top);
-      arclen_pathdata_free(&pd);
+      arclen_pathdata_free(pd);
       svgdoc_fail(D, line, col, "<%s%s%s%s>: the path's length overflows "
                   "(coordinates up to %s)", tag, id ? " id='" : "",
                   id ? id : "", id ? "'" : "", num);
     }
   }
-  /* the element and its strings in one block, its own: it outlives the
-  ** open elements' pool (a stream hands it over, the queue holds it) */
-  size = sizeof *e + nums + (shape->d ? strlen(shape->d) + 1 : 0) +
+  recs = pd->ncubics * ARCLEN_PD_STRIDE * sizeof *pd->cubics;
+  subs = pd->nsubpaths * sizeof *pd->subpaths;
+  /* the element, its segments and its strings in one block, its own: it
+  ** outlives the open elements' pool (a stream hands it over, the queue
+  ** holds it); one allocation an element (the segments' own arrays, grown
+  ** and freed, were a sixth of a circle's cost) */
+  size = sizeof *e + nums + recs + subs + pd->ncubics +
+         (shape->d ? strlen(shape->d) + 1 : 0) +
          (id ? strlen(id) + 1 : 0) + (f->layer ? strlen(f->layer) + 1 : 0) +
          (use ? strlen(use) + 1 : 0) + (marker ? strlen(marker) + 1 : 0);
   e = malloc(size);
-  if (e == NULL) {
-    arclen_pathdata_free(&pd);
-    svgdoc_nomem(D);
-  }
+  if (e == NULL) svgdoc_nomem(D);
   at = (char *)(e + 1);             /* the numbers first: aligned as e is */
   e->shape = *shape;
   if (nums) e->shape.v = memcpy(at, shape->v, nums);
   at += nums;
+  e->pd = *pd;
+  e->pd.cubics = recs ? memcpy(at, pd->cubics, recs) : NULL;
+  at += recs;
+  e->pd.subpaths = subs ? memcpy(at, pd->subpaths, subs) : NULL;
+  at += subs;
+  e->pd.kinds = pd->ncubics ? memcpy(at, pd->kinds, pd->ncubics) : NULL;
+  at += pd->ncubics;
+  e->pd.cubics_room = pd->ncubics, e->pd.subpaths_room = pd->nsubpaths;
   e->shape.d = own(&at, shape->d);
-  e->pd = pd;
   e->id = own(&at, id);
   e->tag = tag;                        /* one of SHAPES */
   e->layer = own(&at, f->layer);
@@ -1381,6 +1386,7 @@ void svgdoc_free(svgdoc *D) {
     free(D->held_q[k].u);
   }
   free(D->expanding_use);
+  arclen_pathdata_free(&D->draw_pd);
   svgdoc_free_pool(D);
   for (k = 0; k < SVGDOC_NPROPS; k++) free(D->props[k].s);
   for (k = 0; k <= SVGDOC_MAX_USE_DEPTH; k++) free(D->xstacks[k]);
