@@ -169,7 +169,11 @@ static double cross2(double ax, double ay, double cx, double cy) {
 
 /* E = w + sqrt(w^2 - 1) (= e^acosh w) for w > 1 as a double-double:
 ** w^2 - 1 exactly (TwoProduct, TwoSum), its square root corrected by one
-** Newton step on the residual. */
+** Newton step on the residual, and the sum renormalised so that E.hi is
+** E rounded: near w = 1 the part of w^2 - 1 below ph - 1 is up to 2^-26
+** of it (w = 1 + 2^-26: 5e-9) and the step moves sqrt by that half, so
+** the unrenormalised E.hi was 3.3e-13 off, and so was every U -+ V
+** divided by 2 E.hi (w^2 - 1) (4.3e-15 of a sub-arc's length). */
 static arclen_dd exp_acosh(double w) {
   double ph = w * w, sh, r;
   arclen_dd q = arclen_two_sum(ph, -1), E;
@@ -178,7 +182,7 @@ static arclen_dd exp_acosh(double w) {
   r = arclen_fma(-sh, sh, q.hi) + q.lo;          /* w^2 - 1 - sh^2 */
   E = arclen_two_sum(w, sh);
   E.lo += r / (2 * sh);
-  return E;
+  return arclen_two_sum(E.hi, E.lo);
 }
 
 /* E^2 u - v for a double-double E^2, to about an ulp of the result: the
@@ -220,12 +224,20 @@ static double parabola(double ax, double ay, double ex, double ey,
 ** and the triangle's area are, so that all of them describe one triangle.
 ** (The legs a, c, k are each one rounding of the inputs, so a + c - k is
 ** up to an ulp of k; near w = 1 al ~ 2^52 turned that into 3e-10 of a
-** flat triangle's U + V when U + V was formed from c.)  For w > 1 and a
-** short leg, al and -s agree to 1/(2 w^2) relative and one of the sums
-** cancels; there d + h = a = p1 - p0, h - d = c = p2 - p1 (each one
-** rounding of the inputs) and g = -(al + s) = 1/((w^2-1)(w +
-** sqrt(w^2-1))) give it without cancellation.  Returns 1 when U -+ V
-** came from a and c, else 0. */
+** flat triangle's U + V when U + V was formed from c.)  For w > 1 and
+** nearly parallel legs with |a| ~ E^2 |c| or |c| ~ E^2 |a| (E = w +
+** sqrt(w^2 - 1) = e^acosh w: a thin hyperbola whose arc lies far out on
+** one arm) one of the sums cancels.  There, with h = (a + c)/2, al = -w
+** s^2, s - |al| = -s^2/E and w = (E + 1/E)/2:
+**   U - V = (c - E^2 a)/den,  U + V = (E^2 c - a)/den,  den = 2 E (w^2 - 1),
+** from a and c = p2 - p1 alone (each one rounding of the inputs), E^2 in
+** double-double and each product exact, so each sum is within about an ulp
+** of itself however far it cancels.  (The earlier form al a + g h, g =
+** s^2/E, switched to this one only below 2^-10 of its terms and lost up to
+** 2^10 ulps above: 1.3e-14 of the length of w = 1.1598 with |a| = E^2 |c|
+** and the legs 0.18 degrees from parallel; a sub-arc of w = 6.77 lost
+** 1e-12 before either, found by fuzz/fuzz_segment.)  Returns 1 when U -+
+** V came from a and c, else 0. */
 static int umvm(double x1, double y1, double x2, double y2, double cx,
                 double cy, double w, double onew, double s, double mv[4]) {
   double al = w / onew, hx = x2 / 2, hy = y2 / 2;
@@ -235,27 +247,14 @@ static int umvm(double x1, double y1, double x2, double y2, double cx,
   sz = fabs(al) * hypot(dx, dy) + s * hypot(hx, hy);
   if (w > 1 && (hypot(mv[0], mv[1]) < 0.25 * sz ||
                 hypot(mv[2], mv[3]) < 0.25 * sz)) {
-    /* U - V = al a + g h,  U + V = -al c - g h */
-    double g = 1 / ((-onew) * (w + sqrt(-onew)));
-    mv[0] = al * x1 + g * hx; mv[1] = al * y1 + g * hy;
-    mv[2] = -al * cx - g * hx; mv[3] = -al * cy - g * hy;
-    /* A thin hyperbola (nearly parallel legs, |a| ~ E^2 |c| or |c| ~ E^2
-    ** |a|, E = w + sqrt(w^2 - 1)) makes one of these sums cancel to 1e-9
-    ** of its terms too (a sub-arc of w = 6.77 lost 1e-12 relative; found
-    ** by fuzz/fuzz_segment).  There, with h = (a + c)/2 and E^2 = 2 w E -
-    ** 1: U - V = (c - E^2 a)/den, U + V = (E^2 c - a)/den, den = 2 E (w^2
-    ** - 1), E^2 in double-double and each product exact. */
-    if (hypot(mv[0], mv[1]) < 0x1p-10 * (fabs(al) * hypot(x1, y1) + g * hypot(hx, hy)) ||
-        hypot(mv[2], mv[3]) < 0x1p-10 * (fabs(al) * hypot(cx, cy) + g * hypot(hx, hy))) {
-      arclen_dd E = exp_acosh(w), E2;
-      double den = 2 * E.hi * (-onew);
-      E2.hi = E.hi * E.hi;
-      E2.lo = arclen_fma(E.hi, E.hi, -E2.hi) + 2 * E.hi * E.lo;
-      mv[0] = -e2u_minus_v(E2, x1, cx) / den;
-      mv[1] = -e2u_minus_v(E2, y1, cy) / den;
-      mv[2] = e2u_minus_v(E2, cx, x1) / den;
-      mv[3] = e2u_minus_v(E2, cy, y1) / den;
-    }
+    arclen_dd E = exp_acosh(w), E2;
+    double den = 2 * E.hi * (-onew);
+    E2.hi = E.hi * E.hi;
+    E2.lo = arclen_fma(E.hi, E.hi, -E2.hi) + 2 * E.hi * E.lo;
+    mv[0] = -e2u_minus_v(E2, x1, cx) / den;
+    mv[1] = -e2u_minus_v(E2, y1, cy) / den;
+    mv[2] = e2u_minus_v(E2, cx, x1) / den;
+    mv[3] = e2u_minus_v(E2, cy, y1) / den;
     return 1;
   }
   return 0;
