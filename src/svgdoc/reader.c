@@ -410,7 +410,7 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
     }
   }
   if (mk) {
-    if (svgdoc_clip_map(&pd, mk->clip ? mk->box : NULL, mk->outer) != 0)
+    if (svgdoc_clip_map(pd, mk->clip ? mk->box : NULL, mk->outer) != 0)
       svgdoc_nomem(D);
     svgdoc_mul(mk->outer, C, full);
     C = full;
