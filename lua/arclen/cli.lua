@@ -30,6 +30,8 @@ commands:
                                'M0 0 C10 0 10 10 0 0'   SVG path data
                                FILE.svg                 every drawn shape of the document
                                                         (see doc/svg.md), and the total
+                               FILE.svg FILE.svg ...    each file so, then the sum; a file
+                                                        that fails is reported (exit 1)
                                -                        SVG file or path data on stdin
   stat FILE.svg ...          per layer (Inkscape layers, else top-level groups) and in
                              total: length, pen-up travel, paths (subpaths), elements,
@@ -355,6 +357,12 @@ local function markup(text)
   return text:find("<") ~= nil or require("arclen.svginput").sniff(text:sub(1, 12)) ~= nil
 end
 
+-- Is argument a path data rather than a file name?  Path data starts with
+-- a moveto and its first number (SVG 2 section 9.3.9), so "map.svg" is a file.
+local function path_data(a)
+  return a:find("^%s*[Mm][%s,]*[%d%.%+%-]") ~= nil
+end
+
 -- The paths named by args[from..]: {{label =, path =}...}, or a cubic.
 local function targets(args, from, opts, what)
   local arclen = require("arclen")
@@ -380,7 +388,7 @@ local function targets(args, from, opts, what)
   local text, source = nil, nil
   if a == "-" then
     text, source = read_file("-"), "stdin"
-  elseif not a:find("^%s*[Mm]") then
+  elseif not path_data(a) then
     local f, err, code = io.open(a, "rb")
     if not f and code ~= 2 then     -- not ENOENT: permission denied...
       fail(a .. ": " .. require("arclen.svginput").reason(err))
@@ -425,20 +433,24 @@ function commands.henkel()
   io.write(require("arclen.repro.henkel").report())
 end
 
--- length of a document, streamed: a row per element as it is read.
-local function length_doc(src, name, opts)
+-- length of a document, streamed: a row per element as it is read.  In a
+-- batch (several files) the JSON object is one of a list, and a file that
+-- fails returns nil and its message instead of ending the run.
+local function length_doc(src, name, opts, batch)
   local n, rows_json, dk = 0, opts.json, nil
   local json_open = false
   if rows_json then dk = json_lib() end
   -- a row in one string, one write: "id\tlength\n", or "tagN\tlength\n"
   local write, with_id, with_tag = io.write, numtext.format_now("%s\t%.17g\n"),
     numtext.format_now("%s%d\t%.17g\n")
+  local head = rows_json and (batch and "{\"file\":" .. dk.encode(name) .. ",\"paths\":[" or "{\"paths\":[")
   local function row(e)
     n = n + 1
     local id = rawget(e, "id")        -- never made lazily: no __index
     if rows_json then
-      write(json_open and "," or "{\"paths\":[", json({id = id or (e.tag .. n), tag = e.tag,
-        layer = e.layer, length = e.length, segments = e.path:segments(), use = e.use}))
+      write(json_open and "," or head, json({id = id or (e.tag .. n), tag = e.tag,
+        layer = e.layer, length = e.length, segments = e.path:segments(), use = e.use,
+        marker = e.marker}))
       json_open = true
     elseif id then
       write(with_id(id, e.length))
@@ -446,15 +458,56 @@ local function length_doc(src, name, opts)
       write(with_tag(e.tag, n, e.length))
     end
   end
+  if batch and not rows_json then write("== ", name, "\n") end
   -- the rows need each element's numbers only (JSON: its segments too)
-  local doc = each_svg(src, name, opts, row, true, false, not rows_json)
+  local doc, err = each_svg(src, name, opts, row, true, batch, not rows_json)
+  if doc == nil then
+    io.stderr:write("arclen: ", err, "\n")
+    if rows_json then
+      write(json_open and "" or head, "],\"error\":", dk.encode(err), "}")
+    end
+    return nil, err
+  end
   if n == 0 then io.stderr:write("arclen: warning: ", doc.name, ": nothing drawn\n") end
   if rows_json then
     -- the keys in order, as json() writes a whole object: paths, total, units
-    io.write(json_open and "" or "{\"paths\":[", "],\"total\":", shortest(doc.total),
-      ",\"units\":", dk.encode(doc.units), "}\n")
+    write(json_open and "" or head, "],\"total\":", shortest(doc.total),
+      ",\"units\":", dk.encode(doc.units), batch and "}" or "}\n")
   else
     print("total\t" .. g17(doc.total))
+  end
+  return doc
+end
+
+-- length of several documents: each as one alone, under its name, then
+-- the sum of those measured; a file that fails is reported with its place
+-- and the others are still measured (exit status 1, as stat).
+local function length_docs(files, opts)
+  local sum, sum_c, failed, units = 0, 0, 0, nil
+  if opts.json then io.write("{\"files\":[") end
+  for i, f in ipairs(files) do
+    if opts.json and i > 1 then io.write(",") end
+    local doc = length_doc(f, f, opts, true)
+    if doc then
+      -- Neumaier's sum, as the documents' own totals
+      local t = sum + doc.total
+      if math.abs(sum) >= math.abs(doc.total) then sum_c = sum_c + ((sum - t) + doc.total)
+      else sum_c = sum_c + ((doc.total - t) + sum) end
+      sum, units = t, doc.units
+    else
+      failed = failed + 1
+    end
+  end
+  sum = sum + sum_c
+  if opts.json then
+    io.write("],\"total\":", shortest(sum), ",\"units\":", json_lib().encode(units or "user"), "}\n")
+  else
+    io.write("== ", numtext.tostring(#files - failed), " of ", numtext.tostring(#files), " files\n")
+    print("total\t" .. g17(sum))
+  end
+  if failed > 0 then
+    io.stderr:write(format("arclen: length: %d of %d files failed\n", failed, #files))
+    os.exit(1)
   end
 end
 
@@ -473,7 +526,7 @@ local function document_arg(args, from)
       return io.stdin:read(CHUNK)
     end, "stdin"
   end
-  if a:find("^%s*[Mm]") then return nil end
+  if path_data(a) then return nil end
   local f = io.open(a, "rb")
   if not f then return nil end
   f:close()
@@ -484,6 +537,14 @@ function commands.length(opts, args)
   local arclen = require("arclen")
   local src, name = document_arg(args, 2)
   if src then return length_doc(src, name, opts) end
+  if #args > 2 then                 -- several documents (not numbers, not path data)
+    local files = {}
+    for i = 2, #args do
+      if tonumber(args[i]) or path_data(args[i]) or args[i] == "-" then files = nil break end
+      files[#files + 1] = args[i]
+    end
+    if files then return length_docs(files, opts) end
+  end
   local list, nums = targets(args, 2, opts, "length")
   if nums then                    -- one cubic: also the cost and error estimate
     local o = method_opts(opts)
