@@ -106,6 +106,7 @@ SHAPES = {"path", "rect", "circle", "ellipse", "line", "polyline", "polygon"}
 TEXT = {"text", "flowRoot"}
 NUM = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:[eE][+-]?\d+)?")
 DEVICE = 2.0 ** 22                              # the page's width in device units
+NORM = 1000.0                                   # the document's size in the page's units
 MARGIN = 1000                                   # the first page around the document, in its sizes
 TURN = math.degrees(math.atan2(21, 20))         # the page's turn: no axis-parallel fills
 MODES = ("default", "stroked", "painted")
@@ -147,10 +148,10 @@ def prepare(data, mode, markers, box=None):
     outer = etree.Element("{%s}svg" % SVG_NS, nsmap={None: SVG_NS,
                                                      "xlink": "http://www.w3.org/1999/xlink"})
     if box is None:                             # a page to find the drawing's extent on
-        x0 = y0 = -MARGIN * size
-        page = (2 * MARGIN + 1) * size
+        x0 = y0 = -MARGIN * NORM
+        page = (2 * MARGIN + 1) * NORM
     else:                                       # the drawing's extent and an eighth more
-        page = max(box[2] - box[0], box[3] - box[1], size / 1e3) * 1.25
+        page = max(box[2] - box[0], box[3] - box[1], NORM / 1e3) * 1.25
         x0 = (box[0] + box[2]) / 2 - page / 2
         y0 = (box[1] + box[3]) / 2 - page / 2
     outer.set("viewBox", "%r %r %r %r" % (x0, y0, page, page))
@@ -162,19 +163,20 @@ def prepare(data, mode, markers, box=None):
     if m:
         outer.set("style", "font-size:" + m.group(1))
     turn = etree.SubElement(outer, "{%s}g" % SVG_NS)
-    turn.set("transform", "rotate(%r %r %r)" % (TURN, size / 2, size / 2))
+    k = NORM / size                             # the page's units: the document is NORM wide
+    turn.set("transform", "scale(%r) rotate(%r %r %r)" % (k, TURN, size / 2, size / 2))
     turn.append(root)
-    k = 0
+    nth = 0
     for el in root.iter():
-        if not isinstance(el.tag, str) or not el.tag.startswith("{%s}" % SVG_NS):
-            continue
+        if not isinstance(el.tag, str) or (el.tag.startswith("{") and not el.tag.startswith("{%s}" % SVG_NS)):
+            continue                            # no namespace: SVG to librsvg and to arclen
         name = local(el.tag)
         if mode == "painted" and name in SHAPES | {"g", "use", "a", "switch"}:
             # a shift of its own for each element, below 1e-3 of the size:
             # the fill and the stroke of one drawing share it, two drawings
             # (two uses of one shape) differ by more than cairo's rounding
-            k += 1
-            dx, dy = (size * 1e-3 * ((k * x) % 1) for x in (0.6180339887, 0.4142135624))
+            nth += 1
+            dx, dy = (size * 1e-3 * ((nth * x) % 1) for x in (0.6180339887, 0.4142135624))
             el.set("transform", "translate(%r %r) %s" % (dx, dy, el.get("transform") or ""))
         decls = ["clip-path:none", "mask:none", "filter:none"]
         if name in ("svg", "symbol"):
@@ -188,7 +190,7 @@ def prepare(data, mode, markers, box=None):
         if not markers and name in SHAPES:
             decls += ["marker-start:none", "marker-mid:none", "marker-end:none"]
         add_style(el, decls)
-    return etree.tostring(outer), (x0, y0, page), DEVICE / page
+    return etree.tostring(outer), (x0, y0, page), DEVICE / page * k
 
 
 def render(svgtext, page, scale):
@@ -212,7 +214,7 @@ def extent(svgtext, page):
     handle = Rsvg.Handle.new_from_data(svgtext)
     handle.set_dpi(96)
     vp = Rsvg.Rectangle()
-    vp.x, vp.y, vp.width, vp.height = 0, 0, page[2], page[2]
+    vp.x, vp.y, vp.width, vp.height = 0, 0, DEVICE, DEVICE     # within cairo's fixed point
     size = page[2] / (2 * MARGIN + 1)
     try:
         ok, ink, _ = handle.get_geometry_for_layer(None, vp)
@@ -220,6 +222,7 @@ def extent(svgtext, page):
         return (-16 * size, -16 * size, 17 * size, 17 * size)
     if not ok or ink.width <= 0 and ink.height <= 0:
         return (0, 0, size, size)
+    # the ink is in the page's user units, from the corner of its viewBox
     return (page[0] + ink.x, page[1] + ink.y, page[0] + ink.x + ink.width, page[1] + ink.y + ink.height)
 
 
