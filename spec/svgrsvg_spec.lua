@@ -8,11 +8,11 @@
 -- The bar on a total is what librsvg and cairo do to it, not our error:
 --   - librsvg makes every elliptical arc (circles, ellipses, rounded
 --     corners) cubics of at most 90 degrees with handles 4/3 tan(theta/4):
---     a quarter circle's cubic is 1.403e-4 longer than the arc, and under
---     an affine map of any aspect ratio (1 to 1e6, any start angle) the
---     image of such a cubic is within 8.02e-4 of the image of its arc
---     (measured by tools/ref_rsvg.py's quadrature against mpmath's): the
---     bar takes 1e-3 of the length of our exact conics;
+--     a quarter circle's cubic is 1.41e-4 longer than the arc, and under
+--     a map of aspect ratio 1 to 1e6 (start angles every 0.05 rad) the
+--     image of such a cubic is within 7.62e-4 of the image of its arc
+--     (`tools/ref_rsvg.py --arcs`, the arcs by mpmath): the bar takes 1e-3
+--     of the length of our exact conics;
 --   - cairo's 24.8 fixed point and its 6 printed decimals: the column
 --     quant, computed by the script for each total (2 d per line, 6 d per
 --     cubic, d the largest displacement of a point);

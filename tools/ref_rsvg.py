@@ -23,7 +23,9 @@ The choices, each forced by how librsvg and cairo work:
     document's centre (a fill of an axis-parallel line has no extent, and
     cairo drops it; lengths do not change) and whose viewBox is the extent
     of librsvg's ink (get_geometry_for_layer on a page 2001 document sizes
-    wide) and an eighth more; the old root's font-size goes with it.  The
+    wide, the document scaled to 1000 units so that librsvg's extents stay
+    inside cairo's fixed point) and an eighth more; the old root's
+    font-size goes with it.  The
     nested <svg>, every <svg> and <symbol>, get overflow:visible, and every
     element clip-path, mask and filter none (arclen applies none of them; a
     filter would make a raster image of the geometry), as !important
@@ -42,9 +44,10 @@ The choices, each forced by how librsvg and cairo work:
     most 2 d).
   - Arcs.  librsvg makes each elliptical arc (and circles, ellipses,
     rounded corners) cubics of at most 90 degrees (+0.001 rad) with the
-    handle length 4/3 tan(theta/4): a quarter circle's cubic is 1.403e-4
-    longer than the arc, 60 degrees 1.23e-5, 45 degrees 2.2e-6.  Lengths of
-    documents with arcs agree with arclen to that, not to its 1e-12.
+    handle length 4/3 tan(theta/4): a quarter circle's cubic is 1.41e-4
+    longer than the arc, 60 degrees 1.23e-5, 45 degrees 2.2e-6; under a
+    map of aspect ratio up to 1e6, 7.62e-4 (--arcs).  Lengths of documents
+    with arcs agree with arclen to that, not to its 1e-12.
   - Three modes, as doc/svg.md defines them:
     * default (all geometry whatever its paint): a copy in which every
       shape says stroke:#000; stroke-opacity:1; stroke-width:1 and every
@@ -84,7 +87,7 @@ the total), shapes_nomarkers, length_nomarkers, quant_nomarkers, images.
 
 Usage: /usr/bin/python3 tools/ref_rsvg.py [FILE...]   (from the repository
 root; with no FILE every document under spec/data/svg/ and the TSV is
-written; with files, their rows are printed)
+written; with files, their rows are printed; --arcs: the arcs' bound)
 """
 import math
 import os
@@ -426,7 +429,31 @@ def rows_of(path, name):
     return rows
 
 
+def arc_bound():
+    """The worst relative length error of librsvg's arc cubics (up to 90
+    degrees + 0.001 rad, handles 4/3 tan(theta/4)) on a unit circle and
+    under scale(r, 1), r from 1 to 1e6, start angles every 0.05 rad, the
+    arcs' lengths by mpmath: what spec/svgrsvg_spec.lua's ARC_BAR covers."""
+    import mpmath as mp
+    dth = math.pi / 2 + 0.001
+    h = 4 / 3 * math.tan(dth / 4)
+    for r in (1, 1.5, 3, 10, 100, 1e4, 1e6):
+        worst = 0.0
+        for i in range(126):
+            a, b = 0.05 * i, 0.05 * i + dth
+            c0, c3 = (math.cos(a), math.sin(a)), (math.cos(b), math.sin(b))
+            q = [c0, (c0[0] - h * c0[1], c0[1] + h * c0[0]), (c3[0] + h * c3[1], c3[1] - h * c3[0]), c3]
+            Lc = cubic_len([(r * x, y) for x, y in q])
+            f = lambda t: mp.sqrt((r * mp.sin(t)) ** 2 + mp.cos(t) ** 2)
+            cuts = [a] + [k * mp.pi for k in range(int(a // math.pi) + 1, int(b // math.pi) + 1)] + [b]
+            Le = float(mp.quad(f, cuts))
+            worst = max(worst, abs(Lc - Le) / Le)
+        print("aspect %-8g worst relative error %.4g" % (r, worst))
+
+
 def main():
+    if sys.argv[1:] == ["--arcs"]:
+        return arc_bound()
     repo = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     base = os.path.join(repo, "spec", "data", "svg")
     if len(sys.argv) > 1:
