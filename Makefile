@@ -269,6 +269,11 @@ check-builds:
 bench-peers: $(BUILD)/libarclen.a
 	sh bench/peers/run.sh
 
+# librsvg's opinion on spec/data/svg/: spec/data/svg_rsvg.tsv (sh tools/deps.sh refs)
+ref-rsvg:
+	/usr/bin/python3 tools/ref_rsvg.py >/dev/null
+.PHONY: ref-rsvg
+
 bench-svg:
 	sh bench/bench_svg.sh
 

@@ -17,7 +17,9 @@
 #           lua-dkjson for --json)
 #   refs    regenerate spec/data (python3-mpmath, real MetaPost;
 #           python3-svgelements: tools/ref_svg.py's second opinion;
-#           python3-tinycss2, python3-cssselect2: its style sheets)
+#           python3-tinycss2, python3-cssselect2: its style sheets;
+#           gir1.2-rsvg-2.0, python3-gi, python3-gi-cairo, python3-cairo,
+#           python3-lxml: tools/ref_rsvg.py, librsvg's opinion)
 # Without dpkg and apt-get (macOS, Alpine, Fedora, Arch, FreeBSD, MSYS2) it
 # prints what to install there for base -- a C compiler, make, Lua 5.4 with
 # its headers, busted, expat, zlib, pkg-config -- and fails unless the commands are
@@ -81,7 +83,7 @@ other_system() {
 }
 BASE="gcc make libc6-dev lua5.4 liblua5.4-dev lua-busted libexpat1-dev zlib1g-dev lua-dkjson"
 MATRIX="lua5.1 liblua5.1-0-dev lua5.2 liblua5.2-dev lua5.3 liblua5.3-dev luajit libluajit-5.1-dev texlive-binaries texlive-base texlive-luatex texlive-latex-base texlive-metapost luarocks poppler-utils python3 locales git zip texlive-pictures"
-REFS="python3 python3-mpmath python3-svgelements python3-tinycss2 python3-cssselect2 texlive-binaries texlive-base python3-fonttools fonts-urw-base35"
+REFS="python3 python3-mpmath python3-svgelements python3-tinycss2 python3-cssselect2 gir1.2-rsvg-2.0 python3-gi python3-gi-cairo python3-cairo python3-lxml texlive-binaries texlive-base python3-fonttools fonts-urw-base35"
 case "${1:-base}" in
   base) WANT="$BASE" ;;
   matrix) WANT="$BASE $MATRIX" ;;
