@@ -44,15 +44,14 @@ local DIFFER = {
     why = "librsvg's initial font-size is 12 px, CSS's medium 16 px: #em (2em) is 24 there",
     rsvg = {24}, ours = {32}},
   ["hand/paint.svg stroked"] = {
-    why = "#s-url-none (url(#missing) none): librsvg takes the fallback as SVG 2 section 13.2 says, "
-      .. "we count any paint server as painting (doc/svg.md); #s-neg-width (stroke-width -1): librsvg "
+    why = "#s-neg-width (stroke-width -1): librsvg "
       .. "keeps the invalid negative width and strokes nothing, CSS drops the declaration; "
       .. "#w-initial (stroke-width=\"initial\" as an attribute): librsvg rejects the CSS-wide "
       .. "keyword there and inherits 0",
-    rsvg = {}, ours = {61, 73, 83}},
+    rsvg = {}, ours = {73, 83}},
   ["hand/paint.svg painted"] = {
-    why = "#s-url-none and #s-neg-width as stroked (#w-initial is filled)",
-    rsvg = {}, ours = {61, 73}},
+    why = "#s-neg-width as stroked (#w-initial is filled)",
+    rsvg = {}, ours = {73}},
   ["hand/shapes.svg painted"] = {
     why = "#polygon-one (one point) is filled: its fill has no extent and cairo drops it "
       .. "(librsvg hands it over)",
@@ -70,16 +69,6 @@ for _, mode in ipairs({"default", "stroked", "painted"}) do
       .. "fills nothing there, we list the element, of length 0",
     rsvg = {}, ours = {0}}
 end
-
--- Files where librsvg draws markers (issue 32 item 5, not read yet): they are
--- compared with librsvg's rendering without markers (the *_nomarkers
--- columns); when markers are read, the entries go and the columns with
--- markers apply.
-local MARKERS = {
-  ["hand/use.svg"] = "marker-end on #marked: librsvg draws the marker's path",
-  ["real/inkscape-tutorials-making_markers.svg"] = "Inkscape's arrowheads and dots, "
-    .. "marker-start/mid/end on the tutorial's paths",
-}
 
 local function sum(t)
   local s = 0
@@ -116,14 +105,9 @@ describe("arclen.svg against librsvg's structure #svgdoc", function()
     end
   end)
 
-  it("the exceptions are rows of the file, and only markers make the two renderings differ", function()
+  it("the exceptions are rows of the file", function()
     local keys = {}
-    for _, r in ipairs(rows) do
-      keys[r.file .. " " .. r.mode] = true
-      if r.shapes ~= r.shapes_nomarkers or r.length ~= r.length_nomarkers then
-        assert.is_truthy(MARKERS[r.file], r.file .. ": markers drawn, not in MARKERS")
-      end
-    end
+    for _, r in ipairs(rows) do keys[r.file .. " " .. r.mode] = true end
     for k in pairs(DIFFER) do assert.is_true(keys[k], k) end
   end)
 
@@ -132,9 +116,7 @@ describe("arclen.svg against librsvg's structure #svgdoc", function()
       local o = {}
       if r.mode ~= "default" then o[r.mode] = true end
       local doc = svg.read(DIR .. r.file, o)
-      local nm = MARKERS[r.file] and "_nomarkers" or ""
-      local shapes, L = tonumber(r["shapes" .. nm]), tonumber(r["length" .. nm])
-      local quant = tonumber(r["quant" .. nm])
+      local shapes, L, quant = tonumber(r.shapes), tonumber(r.length), tonumber(r.quant)
       local d = DIFFER[r.file .. " " .. r.mode]
       if d then
         shapes = shapes - #d.rsvg + #d.ours
