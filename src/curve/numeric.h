@@ -107,4 +107,25 @@ static inline void arclen_sum_add(arclen_sum *g, double x) {
   g->s = t;
 }
 
+/* u in (0, 1) where the cubic Hermite interpolant of a length s(u) -- 0
+** and total at the ends, slopes fa and fb there (the speeds times the
+** width) -- reaches goal: Newton's steps from u0, at most steps of them,
+** the last one kept inside (0, 1).  A first guess of the time at a length
+** for a cubic's piece (gauss/time.c) and a quadratic (segment.c). */
+static inline double arclen_hermite_invert(double total, double fa, double fb,
+                                           double goal, double u, int steps) {
+  int it;
+  for (it = 0; it < steps; it++) {
+    double u2 = u * u, u3 = u2 * u;
+    double g = total * (3 * u2 - 2 * u3) + fa * (u - 2 * u2 + u3) +
+               fb * (u3 - u2) - goal;
+    double dg = total * (6 * u - 6 * u2) + fa * (1 - 4 * u + 3 * u2) +
+                fb * (3 * u2 - 2 * u);
+    double next = dg > 0 ? u - g / dg : -1;
+    if (!(next > 0 && next < 1)) break;      /* keep the last good u */
+    u = next;
+  }
+  return u;
+}
+
 #endif

@@ -113,20 +113,9 @@ static double reversion_step(const cauchy *cb, double d, double f,
 #define HERMITE_STEPS 2
 static double hermite_guess(double a, double b, double fa, double fb,
                             double plen, double goal) {
-  double w = b - a, u = goal / plen;
-  int it;
-  fa *= w;
-  fb *= w;
-  for (it = 0; it < HERMITE_STEPS; it++) {
-    double u2 = u * u, u3 = u2 * u;
-    double s = plen * (3 * u2 - 2 * u3) + fa * (u - 2 * u2 + u3) +
-               fb * (u3 - u2) - goal;
-    double ds = plen * (6 * u - 6 * u2) + fa * (1 - 4 * u + 3 * u2) +
-                fb * (3 * u2 - 2 * u);
-    double next = ds > 0 ? u - s / ds : -1;
-    if (!(next > 0 && next < 1)) break;      /* keep the last good u */
-    u = next;
-  }
+  double w = b - a;
+  double u = arclen_hermite_invert(plen, fa * w, fb * w, goal, goal / plen,
+                                   HERMITE_STEPS);
   return a + w * u;
 }
 

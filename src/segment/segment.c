@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "arclen.h"
+#include "curve/numeric.h"
 #include "segment/segment.h"
 
 static const char *const names[ARCLEN_SEG_NKINDS] = {
@@ -194,19 +195,8 @@ static double quad_slope_at(const void *ctx, double t) {
 ** first guess in a piece, src/gauss/time.c); ~1e-2 of t where the length
 ** fraction is ~1e-1, an exact length fewer. */
 static double quad_guess(const seg_ctx *c, double total, double s) {
-  double fa = speed_at(c, 0), fb = speed_at(c, 1), u = s / total;
-  int it;
-  for (it = 0; it < 2; it++) {
-    double u2 = u * u, u3 = u2 * u;
-    double g = total * (3 * u2 - 2 * u3) + fa * (u - 2 * u2 + u3) +
-               fb * (u3 - u2) - s;
-    double dg = total * (6 * u - 6 * u2) + fa * (1 - 4 * u + 3 * u2) +
-                fb * (3 * u2 - 2 * u);
-    double next = dg > 0 ? u - g / dg : -1;
-    if (!(next > 0 && next < 1)) break;      /* keep the last good u */
-    u = next;
-  }
-  return u;
+  return arclen_hermite_invert(total, speed_at(c, 0), speed_at(c, 1), s,
+                               s / total, 2);
 }
 
 /* The n-point Gauss-Legendre rule's error for a conic's speed over [a, b]

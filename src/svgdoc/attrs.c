@@ -21,9 +21,6 @@
 ** tolower('I') is 'I' under tr_TR.UTF-8 (0xFD under tr_TR.ISO-8859-9), so
 ** "1IN" would be an unknown unit, and 8-bit locales make bytes above 127
 ** letters. */
-int svgdoc_space(unsigned char c) {
-  return c == ' ' || (c >= '\t' && c <= '\r');   /* \t \n \v \f \r */
-}
 static int is_letter(unsigned char c) {
   return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z');
 }

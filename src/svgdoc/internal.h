@@ -178,7 +178,10 @@ const char *svgdoc_attr(const char **atts, const char *name);
 /* Is s empty or only whitespace?  (Whitespace is C's isspace in the C
 ** locale, as Lua's %s and the number scanner of svg/decimal.c take it.) */
 int svgdoc_blank(const char *s);
-int svgdoc_space(unsigned char c);
+/* Is c whitespace so?  (Inline: every area of the reader asks.) */
+static inline int svgdoc_space(unsigned char c) {
+  return c == ' ' || (c >= '\t' && c <= '\r');   /* \t \n \v \f \r */
+}
 
 /* %.17g of x in any locale (shapes and messages write numbers so). */
 void svgdoc_num(char buf[32], double x);
