@@ -618,6 +618,37 @@ def speed_minima(ctrl, imag=mp.mpf(10) ** -20):
     return out
 
 
+def arc_centre(rx, ry, phi, fa, fs, x1, y1, x2, y2):
+    """SVG 1.1 F.6.5, F.6.6: the centre parametrisation of an arc with
+    non-zero radii, (c, s, rx, ry, cx, cy, th1, dth): cos and sin of its
+    rotation, the radii scaled up if too small, the centre, the start angle
+    and the signed sweep.  F.6.5.2 takes the square root of a difference
+    that cancels for half ellipses (k ~ sqrt(rounding)): the conversion runs
+    at twice the digits."""
+    with mp.workdps(2 * mp.mp.dps):
+        ph = mp.radians(phi)
+        c, s = mp.cos(ph), mp.sin(ph)
+        dx, dy = (x1 - x2) / 2, (y1 - y2) / 2        # F.6.5.1
+        xp, yp = c * dx + s * dy, -s * dx + c * dy
+        lam = xp ** 2 / rx ** 2 + yp ** 2 / ry ** 2  # F.6.6
+        if lam > 1:
+            rx, ry = mp.sqrt(lam) * rx, mp.sqrt(lam) * ry
+        num = rx ** 2 * ry ** 2 - rx ** 2 * yp ** 2 - ry ** 2 * xp ** 2
+        den = rx ** 2 * yp ** 2 + ry ** 2 * xp ** 2
+        k = mp.sqrt(max(num / den, 0)) * (-1 if fa == fs else 1)
+        cxp, cyp = k * rx * yp / ry, -k * ry * xp / rx
+        cx = c * cxp - s * cyp + (x1 + x2) / 2
+        cy = s * cxp + c * cyp + (y1 + y2) / 2
+    ang = lambda ux, uy, vx, vy: mp.atan2(ux * vy - uy * vx, ux * vx + uy * vy)
+    th1 = ang(1, 0, (xp - cxp) / rx, (yp - cyp) / ry)   # F.6.5.5, F.6.5.6
+    dth = ang((xp - cxp) / rx, (yp - cyp) / ry, (-xp - cxp) / rx, (-yp - cyp) / ry)
+    if not fs and dth > 0:
+        dth -= 2 * mp.pi
+    elif fs and dth < 0:
+        dth += 2 * mp.pi
+    return c, s, rx, ry, cx, cy, th1, dth
+
+
 def measure(prim, A):
     """Length of the primitive's image; for arcs also the image's size."""
     kind = prim[0]
@@ -647,25 +678,7 @@ def measure(prim, A):
         return 2 * chord2, None
     size = max(sing(rx * (A[0] * c + A[2] * s), rx * (A[1] * c + A[3] * s),
                     ry * (-A[0] * s + A[2] * c), ry * (-A[1] * s + A[3] * c))[0], chord2)
-    # F.6.5.2 takes the square root of a difference that cancels for half
-    # ellipses (k ~ sqrt(rounding)): the conversion runs at twice the digits
-    with mp.workdps(2 * mp.mp.dps):
-        dx, dy = (x1 - x2) / 2, (y1 - y2) / 2        # F.6.5.1
-        xp, yp = c * dx + s * dy, -s * dx + c * dy
-        lam = xp ** 2 / rx ** 2 + yp ** 2 / ry ** 2  # F.6.6
-        if lam > 1:
-            rx, ry = mp.sqrt(lam) * rx, mp.sqrt(lam) * ry
-        num = rx ** 2 * ry ** 2 - rx ** 2 * yp ** 2 - ry ** 2 * xp ** 2
-        den = rx ** 2 * yp ** 2 + ry ** 2 * xp ** 2
-        k = mp.sqrt(max(num / den, 0)) * (-1 if fa == fs else 1)
-        cxp, cyp = k * rx * yp / ry, -k * ry * xp / rx
-    ang = lambda ux, uy, vx, vy: mp.atan2(ux * vy - uy * vx, ux * vx + uy * vy)
-    th1 = ang(1, 0, (xp - cxp) / rx, (yp - cyp) / ry)   # F.6.5.5, F.6.5.6
-    dth = ang((xp - cxp) / rx, (yp - cyp) / ry, (-xp - cxp) / rx, (-yp - cyp) / ry)
-    if not fs and dth > 0:
-        dth -= 2 * mp.pi
-    elif fs and dth < 0:
-        dth += 2 * mp.pi
+    c, s, rx, ry, _, _, th1, dth = arc_centre(rx, ry, phi, fa, fs, x1, y1, x2, y2)
 
     def speed(t):
         v = apply(A, (c * (-rx * mp.sin(t)) - s * (ry * mp.cos(t)),
@@ -718,27 +731,7 @@ def prim_param(prim):
             prim = ("line", (x1, y1), (x2, y2))
             kind = "line"
         else:
-            with mp.workdps(2 * mp.mp.dps):
-                ph = mp.radians(phi)
-                c, s = mp.cos(ph), mp.sin(ph)
-                dx, dy = (x1 - x2) / 2, (y1 - y2) / 2        # SVG 1.1 F.6.5
-                xp, yp = c * dx + s * dy, -s * dx + c * dy
-                lam = xp ** 2 / rx ** 2 + yp ** 2 / ry ** 2  # F.6.6
-                if lam > 1:
-                    rx, ry = mp.sqrt(lam) * rx, mp.sqrt(lam) * ry
-                num = rx ** 2 * ry ** 2 - rx ** 2 * yp ** 2 - ry ** 2 * xp ** 2
-                den = rx ** 2 * yp ** 2 + ry ** 2 * xp ** 2
-                k = mp.sqrt(max(num / den, 0)) * (-1 if fa == fs else 1)
-                cxp, cyp = k * rx * yp / ry, -k * ry * xp / rx
-                cx = c * cxp - s * cyp + (x1 + x2) / 2
-                cy = s * cxp + c * cyp + (y1 + y2) / 2
-                th1 = mp.atan2((yp - cyp) / ry, (xp - cxp) / rx)
-                th2 = mp.atan2((-yp - cyp) / ry, (-xp - cxp) / rx)
-                dth = th2 - th1
-                if not fs and dth > 0:
-                    dth -= 2 * mp.pi
-                elif fs and dth < 0:
-                    dth += 2 * mp.pi
+            c, s, rx, ry, cx, cy, th1, dth = arc_centre(rx, ry, phi, fa, fs, x1, y1, x2, y2)
 
             def P(t):
                 th = th1 + t * dth
