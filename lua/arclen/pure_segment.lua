@@ -187,9 +187,9 @@ end
 -- sqrt K)/a lie far from [t0, t1] (nearly straight, or a short piece),
 -- the formula would lose the digits K lost to its cancellation.  There
 -- the speed is analytic on the Bernstein ellipse rho >= 3 through them,
--- and 20-point Gauss-Legendre is within 64/15 rho^-40/(rho^2-1) < 1e-19
--- relative (Trefethen, ATAP Thm 19.3).  No turn at all (a below
--- 1e-32 c): the chord.
+-- and 20-point Gauss-Legendre is within 64/15 rho^-38/(rho^2-1) < 4e-19
+-- relative (Trefethen, ATAP Thm 19.3, whose rule has n + 1 = 20 points).
+-- No turn at all (a below 1e-32 c): the chord.
 local GL20 = rules[20]
 local function quad_length(q, t0, t1)
   if q.m == 0 or t1 <= t0 then return 0 end
@@ -386,8 +386,9 @@ local EPS = 2.220446049250313e-16
 
 -- The conic's length between angles a < b, within rtol/4 of budget
 -- (density times the width: the caller's share of tol L) by Gauss-Legendre
--- on pieces whose order meets Trefethen's bound (ATAP Thm 19.3)
---   |E| <= (64/15) hw M rho^(-2n) / (rho^2 - 1)
+-- on pieces whose order meets Trefethen's bound (ATAP Thm 19.3, whose
+-- rule has n + 1 points: for n points)
+--   |E| <= (64/15) hw M rho^(2 - 2n) / (rho^2 - 1)
 -- with rho inside the Bernstein ellipse through the nearest branch point
 -- (conic_setup) and M >= speed on it; a piece no order up to 128 meets is
 -- cut at a branch point's foot inside it, else in half.
@@ -450,13 +451,19 @@ local function conic_length_th(k, a, b, rtol, density)
       if r < rho then rho, foot = r, ft end
     end
     local target = 0.25 * rtol * density * (y - x)
+    -- the rounding's floor: the rule's own rounding is some eps of the
+    -- piece's length, and density (y - x) is its share of the whole, where
+    -- M hw can be far above both (a hyperbola's speed grows as e^|th| out
+    -- to the ellipse's ends: 4 eps M hw let 8 points on [-3.6, 3.6] of w =
+    -- 18 err 2e-10)
+    local floor_err = 2 * EPS * density * (y - x)
     local done = false
     if rho > 1.05 then
       local r = 1 + (rho - 1) * 0.9
       local M = conic_bound(k, c, hw, r)
       for _, n in ipairs(ORDERS) do
-        local bound = (64 / 15) * hw * M * r ^ (-2 * n) / (r * r - 1)
-        if bound <= target or bound <= 4 * EPS * M * hw then
+        local bound = (64 / 15) * hw * M * r ^ (2 - 2 * n) / (r * r - 1)
+        if bound <= target or bound <= floor_err then
           total = total + gl(f, x, y, rules[n])
           evals = evals + n
           done = true
