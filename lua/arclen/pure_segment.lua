@@ -49,8 +49,6 @@ local function asinh(x)
   return x < 0 and -r or r
 end
 
-local function atanh(x) return 0.5 * log1p(2 * x / (1 - x)) end
-
 -- sinh and cosh (gone from Lua 5.4's math): small |x| by the series, so
 -- that sinh keeps its relative precision.
 local function sinh_cosh(x)
@@ -76,6 +74,37 @@ end
 local function tan(x) return sin(x) / cos(x) end
 
 local atan2 = math.atan2 or math.atan          -- Lua 5.1's name, 5.4's
+
+-- Error-free transformations (Knuth's TwoSum; Dekker's TwoProduct with
+-- Veltkamp's split, as Lua 5.1-5.3 and LuaJIT have no fma): a + b = s + e
+-- and a b = p + e exactly, for operands below 2^995 (conic_scaled keeps
+-- the coordinates below 2^200).
+local SPLITTER = 134217729            -- 2^27 + 1
+local function two_sum(a, b)
+  local s = a + b
+  local bb = s - a
+  return s, (a - (s - bb)) + (b - bb)
+end
+local function split(a)
+  local t = SPLITTER * a
+  local hi = t - (t - a)
+  return hi, a - hi
+end
+local function two_prod(a, b)
+  local p = a * b
+  local ah, al = split(a)
+  local bh, bl = split(b)
+  return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+end
+
+-- a1 b2 - a2 b1 to about an ulp of itself (each product exact, then the
+-- difference of the high parts plus that of the low ones): the area of
+-- nearly parallel legs, which the plain form rounds to eps of the products.
+local function cross_exact(a1, a2, b1, b2)
+  local p, pe = two_prod(a1, b2)
+  local q, qe = two_prod(a2, b1)
+  return (p - q) + (pe - qe)
+end
 
 -- |v| for a vector of d components, scaled so that no square over- or
 -- underflows.
@@ -228,6 +257,54 @@ end
 
 -- ---- conics -------------------------------------------------------------
 
+-- E = w + sqrt(w^2 - 1) (= e^acosh w) for w > 1 as a double-double whose
+-- high part is E rounded: w^2 - 1 exactly, its square root corrected by
+-- one Newton step on the residual, the sum renormalised (near w = 1 the
+-- step moves the root by up to 2^-26 of itself; conic_length.c's
+-- exp_acosh).
+local function exp_acosh(w)
+  local ph, pe = two_prod(w, w)
+  local qh, ql = two_sum(ph, -1)
+  ql = ql + pe
+  local sh = sqrt(qh)
+  local p, e = two_prod(sh, sh)
+  local r = ((qh - p) - e) + ql               -- w^2 - 1 - sh^2 (qh - p exact)
+  local eh, el = two_sum(w, sh)
+  return two_sum(eh, el + r / (2 * sh))
+end
+
+-- E^2 u - v for a double-double E^2 to about an ulp of the result: the
+-- product u E2h exact, the difference by TwoSum.
+local function e2u_minus_v(E2h, E2l, u, v)
+  local p, pe = two_prod(u, E2h)
+  local t, tl = two_sum(p, -v)
+  return t + (tl + pe + u * E2l)
+end
+
+-- Past 1/4 of their terms (sz = |U| + |V|) one of kp = V + U, km = V - U
+-- of a hyperbola cancels: a thin hyperbola, legs nearly parallel with |a|
+-- ~ E^2 |c| or |c| ~ E^2 |a| (a = P1 - P0, c = P2 - P1), its arc far out
+-- on one arm.  There (h = (a + c)/2, w = (E + 1/E)/2)
+--   V + U = (E^2 c - a)/den,  V - U = (E^2 a - c)/den,  den = 2 E (w^2 - 1)
+-- from the legs alone, each within about an ulp of itself however far it
+-- cancels (doc/accuracy.md, thin hyperbolas: R = |kp||km|/2 fell to 0 at
+-- w = 1000 and the arc was taken for a circle).  Returns true when kp and
+-- km were so replaced.  (E^2 |a| must stay below 2^995 for the exact
+-- products: beyond w ~ 2^349 the plain sums stay.)
+local function thin_sums(a, c, w, wm1, kp, km, sz, d)
+  if not (norm(kp, d) < 0.25 * sz or norm(km, d) < 0.25 * sz) then return false end
+  local Eh, El = exp_acosh(w)
+  local E2h, E2e = two_prod(Eh, Eh)
+  if not (E2h < 2 ^ 700) then return false end
+  local E2l = E2e + 2 * Eh * El
+  local den = 2 * Eh * wm1
+  for j = 1, d do
+    kp[j] = e2u_minus_v(E2h, E2l, c[j], a[j]) / den
+    km[j] = e2u_minus_v(E2h, E2l, a[j], c[j]) / den
+  end
+  return true
+end
+
 -- The conic (P0, P1, P2; w) as c + U cos th + V sin th, th in [-al, al],
 -- al = acos w (w < 1), or c + U cosh th + V sinh th, th in [-al, al], al =
 -- acosh w (w > 1), with m = (P0 + P2)/2, D = P1 - m, h = (P2 - P0)/2:
@@ -247,23 +324,37 @@ local function conic_setup(c, d)
   local one = (1 - w) * (1 + w)              -- exact enough: 1 - w exact near 1
   local hyp = w > 1
   local s = 1 / sqrt(abs(one))
-  -- For w >> 1 the speed is |(V + U) e^th + (V - U) e^-th| / 2, and
-  -- V - U = a (P1 - P0) + g h (a = w/(w^2-1)) cancels to 1/(2 w^2) if
-  -- formed from U and V: g = 1/sqrt(w^2-1) - a = -1/((w^2-1)(w +
-  -- sqrt(w^2-1))) from the legs gives it (kp, km: V + U and V - U).
+  local sc = w / one
+  -- For w > 1 the speed is |(V + U) e^th + (V - U) e^-th| / 2 (kp, km:
+  -- V + U and V - U); see thin_sums where one of them cancels.
   local kp, km = {}, {}
-  local g = hyp and -1 / ((-one) * (w + sqrt(-one))) or 0
+  local Dv, Hv, A, C = {}, {}, {}, {}
   for j = 1, d do
     local p0, p1, p2 = c[j], c[d + j], c[2 * d + j]
     local h = (p2 - p0) / 2
     local D = (p1 - p0) - h                   -- P1 - m, from the legs
     U[j] = D * w / one
     V[j] = h * s
-    if hyp then
-      kp[j] = V[j] + U[j]
-      km[j] = (w / -one) * (p1 - p0) + g * h
-    end
+    Dv[j], Hv[j], A[j], C[j] = D, h, p1 - p0, p2 - p1
+    if hyp then kp[j], km[j] = V[j] + U[j], V[j] - U[j] end
   end
+  -- |U x V|^2 = (sc s)^2 |D x h|^2 (D x h = a x c / 2) from the sides U
+  -- and V came from, each product exact: U and V of a thin conic are
+  -- nearly parallel and their own cross product would keep only eps of
+  -- their size.
+  local cr = {}
+  local function crosses(P, Q, f)
+    if d == 2 then cr[1] = f * cross_exact(P[1], P[2], Q[1], Q[2]) return end
+    cr[1] = f * cross_exact(P[2], P[3], Q[2], Q[3])
+    cr[2] = f * cross_exact(P[3], P[1], Q[3], Q[1])
+    cr[3] = f * cross_exact(P[1], P[2], Q[1], Q[2])
+  end
+  crosses(Dv, Hv, 1)
+  if hyp and thin_sums(A, C, w, -one, kp, km, abs(sc) * norm(Dv, d) + s * norm(Hv, d), d) then
+    crosses(A, C, 0.5)                       -- a, c: the sides kp, km came from
+  end
+  local X = 0
+  for j = 1, #cr do X = X + (sc * s * cr[j]) ^ 2 end
   k.kp, k.km = kp, km
   local al
   if hyp then al = log1p((w - 1) + sqrt(-one))           -- acosh w
@@ -283,21 +374,18 @@ local function conic_setup(c, d)
   --   ellipse:   speed^2 = p + R cos(2 th - phi),  p = (vv + uu)/2,
   --              R = |((vv - uu)/2, -uv)|: zero at 2 th - phi = pi +- i eta,
   --              eta = acosh(p/R), p - R = X/(p + R);
-  --   hyperbola: speed^2 = a0 + R cosh(2 th + psi), a0 = (vv - uu)/2,
-  --              R = sqrt(b0^2 - c0^2) (b0 = (vv + uu)/2, c0 = uv,
-  --              tanh psi = c0/b0): zero at 2 th + psi = +- i eta, eta =
-  --              acos(-a0/R) = 2 asin(sqrt((R + a0)/(2R))), R + a0 = X/(R - a0).
+  --   hyperbola: speed^2 = a0 + R cosh(2 th + psi), from |kp e^th + km
+  --              e^-th|^2 / 4: a0 = kp.km/2 (= (vv - uu)/2), R = |kp||km|/2
+  --              (= sqrt(b0^2 - c0^2), b0 = (vv + uu)/2, c0 = uv, which
+  --              cancels where kp or km does), psi = log(|kp|/|km|) (=
+  --              atanh(c0/b0)): zero at 2 th + psi = +- i eta, eta =
+  --              acos(-a0/R) = 2 asin(sqrt((R + a0)/(2R))), (R + a0)(R - a0)
+  --              = X, the smaller factor from the larger.
   -- Feet (real parts) and the half-height eta/2 of the branch points;
   -- none on a circle (R = 0: the speed is constant).
   local uu, vv, uv = 0, 0, 0
   for j = 1, d do
     uu, vv, uv = uu + U[j] * U[j], vv + V[j] * V[j], uv + U[j] * V[j]
-  end
-  local X
-  if d == 2 then X = (U[1] * V[2] - U[2] * V[1]) ^ 2
-  else
-    X = (U[2] * V[3] - U[3] * V[2]) ^ 2 + (U[3] * V[1] - U[1] * V[3]) ^ 2
-        + (U[1] * V[2] - U[2] * V[1]) ^ 2
   end
   k.feet = {}
   if not hyp then
@@ -311,12 +399,14 @@ local function conic_setup(c, d)
       k.eta2 = eta / 2
     end
   else
-    local a0, b0, c0 = (vv - uu) / 2, (vv + uu) / 2, uv
-    local R = sqrt((b0 - c0) * (b0 + c0))
+    local a0, np, nm = 0, norm(kp, d), norm(km, d)
+    for j = 1, d do a0 = a0 + kp[j] * km[j] / 2 end
+    local R = np * nm / 2
     k.a0, k.R = a0, R
     if R > 0 then
-      local psi = atanh(c0 / b0)
-      local eta = 2 * math.asin(math.min(1, sqrt(X / (R - a0) / (2 * R))))
+      local psi = log(np / nm)
+      local rpa = a0 <= 0 and X / (R - a0) or R + a0
+      local eta = 2 * math.asin(math.min(1, sqrt(rpa / (2 * R))))
       k.feet[1] = -psi / 2
       k.eta2 = eta / 2
       k.psi = psi
@@ -409,8 +499,15 @@ end
 
 local function conic_length_th(k, a, b, rtol, density)
   if b <= a then return 0, 0 end
-  if not k.eta2 then                             -- a circle (or a point): constant speed
-    return (b - a) * conic_speed_th(k, (a + b) / 2), 1
+  if not k.eta2 then
+    if k.hyp then
+      -- kp or km zero (a degenerate hyperbola: collinear points): the
+      -- speed is |kp| e^th / 2 or |km| e^-th / 2
+      local np, nm = norm(k.kp, k.d), norm(k.km, k.d)
+      local shh = sinh_cosh((b - a) / 2)
+      return shh * (np * exp((a + b) / 2) + nm * exp(-(a + b) / 2)), 1
+    end
+    return (b - a) * conic_speed_th(k, (a + b) / 2), 1   -- a circle (or a point)
   end
   if not density then
     -- a lower bound of the length over the width: the chord's,
@@ -418,16 +515,24 @@ local function conic_length_th(k, a, b, rtol, density)
     --              = 2 sinh(hw) (sinh(m) U + cosh(m) V)      (hyperbola)
     -- (m, hw the middle and half-width: no cancellation); a closed conic
     -- (P0 = P2) takes a quarter of the mean speed at 16 points
+    -- (far from 0, sinh(m) U + cosh(m) V as (kp e^m + km e^-m)/2, as in
+    -- conic_speed_th)
     local m, h = (a + b) / 2, (b - a) / 2
-    local v, cu, cv = {}, nil, nil
-    if k.hyp then
-      local sh, ch = sinh_cosh(m)
-      local shh = sinh_cosh(h)
-      cu, cv = 2 * shh * sh, 2 * shh * ch
+    local v = {}
+    if k.hyp and abs(m) >= 0.5 then
+      local shh, e = sinh_cosh(h), exp(m)
+      for j = 1, k.d do v[j] = shh * (k.kp[j] * e + k.km[j] / e) end
     else
-      cu, cv = -2 * sin(h) * sin(m), 2 * sin(h) * cos(m)
+      local cu, cv
+      if k.hyp then
+        local sh, ch = sinh_cosh(m)
+        local shh = sinh_cosh(h)
+        cu, cv = 2 * shh * sh, 2 * shh * ch
+      else
+        cu, cv = -2 * sin(h) * sin(m), 2 * sin(h) * cos(m)
+      end
+      for j = 1, k.d do v[j] = cu * k.U[j] + cv * k.V[j] end
     end
-    for j = 1, k.d do v[j] = cu * k.U[j] + cv * k.V[j] end
     density = norm(v, k.d) / (b - a)
     if not (density > 0) then
       density = 0
