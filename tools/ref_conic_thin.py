@@ -34,6 +34,12 @@ the C code (no Carlson form, no semi-axes).
 Run: nice python3 tools/ref_conic_thin.py   (about 25 minutes; with
 `resume`, the rows already in the file are kept; with `times`, only the
 T and V columns are recomputed)
+
+With `short` it writes spec/data/conic_short.tsv instead: for every conic
+of conic_thin.tsv (by name) four short pieces [t0, t0 + h], h = 1e-4,
+1e-7, 1e-10 and 1e-13, t0 drawn from SHORT_STARTS with a fixed seed (the
+ends, the middle, where a piece's control points rounded at the whole
+arc's scale lose most), the same two-precision check (about 3 minutes).
 """
 import os
 import random
@@ -54,6 +60,9 @@ THETAS = [1e-1, 1e-3, 1e-5, 1e-7, 1e-9, 1e-11]
 RATIOS = [1e-8, 1e-6, 1e-4, 1e-2, 1.0, 1e2, 1e4, 1e6, 1e8]
 SUBRANGES = [(0.25, 0.75), (0.0, 0.3), (0.6, 1.0), (0.001, 0.002),
              (0.5, 0.5001), (0.9, 0.999), (0.1, 0.9)]
+
+SHORT_WIDTHS = [1e-4, 1e-7, 1e-10, 1e-13]
+SHORT_STARTS = [1e-9, 1e-3, 0.1, 0.3, 0.5, 0.7, 0.9, 0.999, None]   # None: 1 - 2h
 
 
 class Conic:
@@ -267,8 +276,31 @@ def main():
             print(name, mp.nstr(L, 20), file=sys.stderr)
 
 
+def short():
+    """spec/data/conic_short.tsv: name, then t0:t1:L for four short pieces."""
+    rnd = random.Random(31)
+    rows = open(os.path.join(DATA, "conic_thin.tsv")).read().splitlines()[1:]
+    with open(os.path.join(DATA, "conic_short.tsv"), "w") as f:
+        f.write("name\tsub\n")
+        for line in rows:
+            col = line.split("\t")
+            xs = [float(x) for x in col[1:7]]
+            p, w = ((xs[0], xs[1]), (xs[2], xs[3]), (xs[4], xs[5])), float(col[7])
+            c60, c70 = Conic(p, w, 60), Conic(p, w, 70)
+            subs = []
+            for h in SHORT_WIDTHS:
+                t0 = rnd.choice(SHORT_STARTS)
+                t0 = 1 - 2 * h if t0 is None else t0
+                t1 = t0 + h
+                subs.append("%r:%r:%s" % (t0, t1, num(checked_length(c60, c70, t0, t1))))
+            f.write("%s\t%s\n" % (col[0], " ".join(subs)))
+            f.flush()
+
+
 if __name__ == "__main__":
     if sys.argv[1:] == ["times"]:
         retime(os.path.join(DATA, "conic_thin.tsv"))
+    elif sys.argv[1:] == ["short"]:
+        short()
     else:
         main()

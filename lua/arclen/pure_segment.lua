@@ -49,8 +49,6 @@ local function asinh(x)
   return x < 0 and -r or r
 end
 
-local function atanh(x) return 0.5 * log1p(2 * x / (1 - x)) end
-
 -- sinh and cosh (gone from Lua 5.4's math): small |x| by the series, so
 -- that sinh keeps its relative precision.
 local function sinh_cosh(x)
@@ -76,6 +74,37 @@ end
 local function tan(x) return sin(x) / cos(x) end
 
 local atan2 = math.atan2 or math.atan          -- Lua 5.1's name, 5.4's
+
+-- Error-free transformations (Knuth's TwoSum; Dekker's TwoProduct with
+-- Veltkamp's split, as Lua 5.1-5.3 and LuaJIT have no fma): a + b = s + e
+-- and a b = p + e exactly, for operands below 2^995 (conic_scaled keeps
+-- the coordinates below 2^200).
+local SPLITTER = 134217729            -- 2^27 + 1
+local function two_sum(a, b)
+  local s = a + b
+  local bb = s - a
+  return s, (a - (s - bb)) + (b - bb)
+end
+local function split(a)
+  local t = SPLITTER * a
+  local hi = t - (t - a)
+  return hi, a - hi
+end
+local function two_prod(a, b)
+  local p = a * b
+  local ah, al = split(a)
+  local bh, bl = split(b)
+  return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
+end
+
+-- a1 b2 - a2 b1 to about an ulp of itself (each product exact, then the
+-- difference of the high parts plus that of the low ones): the area of
+-- nearly parallel legs, which the plain form rounds to eps of the products.
+local function cross_exact(a1, a2, b1, b2)
+  local p, pe = two_prod(a1, b2)
+  local q, qe = two_prod(a2, b1)
+  return (p - q) + (pe - qe)
+end
 
 -- |v| for a vector of d components, scaled so that no square over- or
 -- underflows.
@@ -187,9 +216,9 @@ end
 -- sqrt K)/a lie far from [t0, t1] (nearly straight, or a short piece),
 -- the formula would lose the digits K lost to its cancellation.  There
 -- the speed is analytic on the Bernstein ellipse rho >= 3 through them,
--- and 20-point Gauss-Legendre is within 64/15 rho^-40/(rho^2-1) < 1e-19
--- relative (Trefethen, ATAP Thm 19.3).  No turn at all (a below
--- 1e-32 c): the chord.
+-- and 20-point Gauss-Legendre is within 64/15 rho^-38/(rho^2-1) < 4e-19
+-- relative (Trefethen, ATAP Thm 19.3, whose rule has n + 1 = 20 points).
+-- No turn at all (a below 1e-32 c): the chord.
 local GL20 = rules[20]
 local function quad_length(q, t0, t1)
   if q.m == 0 or t1 <= t0 then return 0 end
@@ -228,6 +257,54 @@ end
 
 -- ---- conics -------------------------------------------------------------
 
+-- E = w + sqrt(w^2 - 1) (= e^acosh w) for w > 1 as a double-double whose
+-- high part is E rounded: w^2 - 1 exactly, its square root corrected by
+-- one Newton step on the residual, the sum renormalised (near w = 1 the
+-- step moves the root by up to 2^-26 of itself; conic_length.c's
+-- exp_acosh).
+local function exp_acosh(w)
+  local ph, pe = two_prod(w, w)
+  local qh, ql = two_sum(ph, -1)
+  ql = ql + pe
+  local sh = sqrt(qh)
+  local p, e = two_prod(sh, sh)
+  local r = ((qh - p) - e) + ql               -- w^2 - 1 - sh^2 (qh - p exact)
+  local eh, el = two_sum(w, sh)
+  return two_sum(eh, el + r / (2 * sh))
+end
+
+-- E^2 u - v for a double-double E^2 to about an ulp of the result: the
+-- product u E2h exact, the difference by TwoSum.
+local function e2u_minus_v(E2h, E2l, u, v)
+  local p, pe = two_prod(u, E2h)
+  local t, tl = two_sum(p, -v)
+  return t + (tl + pe + u * E2l)
+end
+
+-- Past 1/4 of their terms (sz = |U| + |V|) one of kp = V + U, km = V - U
+-- of a hyperbola cancels: a thin hyperbola, legs nearly parallel with |a|
+-- ~ E^2 |c| or |c| ~ E^2 |a| (a = P1 - P0, c = P2 - P1), its arc far out
+-- on one arm.  There (h = (a + c)/2, w = (E + 1/E)/2)
+--   V + U = (E^2 c - a)/den,  V - U = (E^2 a - c)/den,  den = 2 E (w^2 - 1)
+-- from the legs alone, each within about an ulp of itself however far it
+-- cancels (doc/accuracy.md, thin hyperbolas: R = |kp||km|/2 fell to 0 at
+-- w = 1000 and the arc was taken for a circle).  Returns true when kp and
+-- km were so replaced.  (E^2 |a| must stay below 2^995 for the exact
+-- products: beyond w ~ 2^349 the plain sums stay.)
+local function thin_sums(a, c, w, wm1, kp, km, sz, d)
+  if not (norm(kp, d) < 0.25 * sz or norm(km, d) < 0.25 * sz) then return false end
+  local Eh, El = exp_acosh(w)
+  local E2h, E2e = two_prod(Eh, Eh)
+  if not (E2h < 2 ^ 700) then return false end
+  local E2l = E2e + 2 * Eh * El
+  local den = 2 * Eh * wm1
+  for j = 1, d do
+    kp[j] = e2u_minus_v(E2h, E2l, c[j], a[j]) / den
+    km[j] = e2u_minus_v(E2h, E2l, a[j], c[j]) / den
+  end
+  return true
+end
+
 -- The conic (P0, P1, P2; w) as c + U cos th + V sin th, th in [-al, al],
 -- al = acos w (w < 1), or c + U cosh th + V sinh th, th in [-al, al], al =
 -- acosh w (w > 1), with m = (P0 + P2)/2, D = P1 - m, h = (P2 - P0)/2:
@@ -247,23 +324,37 @@ local function conic_setup(c, d)
   local one = (1 - w) * (1 + w)              -- exact enough: 1 - w exact near 1
   local hyp = w > 1
   local s = 1 / sqrt(abs(one))
-  -- For w >> 1 the speed is |(V + U) e^th + (V - U) e^-th| / 2, and
-  -- V - U = a (P1 - P0) + g h (a = w/(w^2-1)) cancels to 1/(2 w^2) if
-  -- formed from U and V: g = 1/sqrt(w^2-1) - a = -1/((w^2-1)(w +
-  -- sqrt(w^2-1))) from the legs gives it (kp, km: V + U and V - U).
+  local sc = w / one
+  -- For w > 1 the speed is |(V + U) e^th + (V - U) e^-th| / 2 (kp, km:
+  -- V + U and V - U); see thin_sums where one of them cancels.
   local kp, km = {}, {}
-  local g = hyp and -1 / ((-one) * (w + sqrt(-one))) or 0
+  local Dv, Hv, A, C = {}, {}, {}, {}
   for j = 1, d do
     local p0, p1, p2 = c[j], c[d + j], c[2 * d + j]
     local h = (p2 - p0) / 2
     local D = (p1 - p0) - h                   -- P1 - m, from the legs
     U[j] = D * w / one
     V[j] = h * s
-    if hyp then
-      kp[j] = V[j] + U[j]
-      km[j] = (w / -one) * (p1 - p0) + g * h
-    end
+    Dv[j], Hv[j], A[j], C[j] = D, h, p1 - p0, p2 - p1
+    if hyp then kp[j], km[j] = V[j] + U[j], V[j] - U[j] end
   end
+  -- |U x V|^2 = (sc s)^2 |D x h|^2 (D x h = a x c / 2) from the sides U
+  -- and V came from, each product exact: U and V of a thin conic are
+  -- nearly parallel and their own cross product would keep only eps of
+  -- their size.
+  local cr = {}
+  local function crosses(P, Q, f)
+    if d == 2 then cr[1] = f * cross_exact(P[1], P[2], Q[1], Q[2]) return end
+    cr[1] = f * cross_exact(P[2], P[3], Q[2], Q[3])
+    cr[2] = f * cross_exact(P[3], P[1], Q[3], Q[1])
+    cr[3] = f * cross_exact(P[1], P[2], Q[1], Q[2])
+  end
+  crosses(Dv, Hv, 1)
+  if hyp and thin_sums(A, C, w, -one, kp, km, abs(sc) * norm(Dv, d) + s * norm(Hv, d), d) then
+    crosses(A, C, 0.5)                       -- a, c: the sides kp, km came from
+  end
+  local X = 0
+  for j = 1, #cr do X = X + (sc * s * cr[j]) ^ 2 end
   k.kp, k.km = kp, km
   local al
   if hyp then al = log1p((w - 1) + sqrt(-one))           -- acosh w
@@ -283,21 +374,18 @@ local function conic_setup(c, d)
   --   ellipse:   speed^2 = p + R cos(2 th - phi),  p = (vv + uu)/2,
   --              R = |((vv - uu)/2, -uv)|: zero at 2 th - phi = pi +- i eta,
   --              eta = acosh(p/R), p - R = X/(p + R);
-  --   hyperbola: speed^2 = a0 + R cosh(2 th + psi), a0 = (vv - uu)/2,
-  --              R = sqrt(b0^2 - c0^2) (b0 = (vv + uu)/2, c0 = uv,
-  --              tanh psi = c0/b0): zero at 2 th + psi = +- i eta, eta =
-  --              acos(-a0/R) = 2 asin(sqrt((R + a0)/(2R))), R + a0 = X/(R - a0).
+  --   hyperbola: speed^2 = a0 + R cosh(2 th + psi), from |kp e^th + km
+  --              e^-th|^2 / 4: a0 = kp.km/2 (= (vv - uu)/2), R = |kp||km|/2
+  --              (= sqrt(b0^2 - c0^2), b0 = (vv + uu)/2, c0 = uv, which
+  --              cancels where kp or km does), psi = log(|kp|/|km|) (=
+  --              atanh(c0/b0)): zero at 2 th + psi = +- i eta, eta =
+  --              acos(-a0/R) = 2 asin(sqrt((R + a0)/(2R))), (R + a0)(R - a0)
+  --              = X, the smaller factor from the larger.
   -- Feet (real parts) and the half-height eta/2 of the branch points;
   -- none on a circle (R = 0: the speed is constant).
   local uu, vv, uv = 0, 0, 0
   for j = 1, d do
     uu, vv, uv = uu + U[j] * U[j], vv + V[j] * V[j], uv + U[j] * V[j]
-  end
-  local X
-  if d == 2 then X = (U[1] * V[2] - U[2] * V[1]) ^ 2
-  else
-    X = (U[2] * V[3] - U[3] * V[2]) ^ 2 + (U[3] * V[1] - U[1] * V[3]) ^ 2
-        + (U[1] * V[2] - U[2] * V[1]) ^ 2
   end
   k.feet = {}
   if not hyp then
@@ -311,12 +399,14 @@ local function conic_setup(c, d)
       k.eta2 = eta / 2
     end
   else
-    local a0, b0, c0 = (vv - uu) / 2, (vv + uu) / 2, uv
-    local R = sqrt((b0 - c0) * (b0 + c0))
+    local a0, np, nm = 0, norm(kp, d), norm(km, d)
+    for j = 1, d do a0 = a0 + kp[j] * km[j] / 2 end
+    local R = np * nm / 2
     k.a0, k.R = a0, R
     if R > 0 then
-      local psi = atanh(c0 / b0)
-      local eta = 2 * math.asin(math.min(1, sqrt(X / (R - a0) / (2 * R))))
+      local psi = log(np / nm)
+      local rpa = a0 <= 0 and X / (R - a0) or R + a0
+      local eta = 2 * math.asin(math.min(1, sqrt(rpa / (2 * R))))
       k.feet[1] = -psi / 2
       k.eta2 = eta / 2
       k.psi = psi
@@ -386,8 +476,9 @@ local EPS = 2.220446049250313e-16
 
 -- The conic's length between angles a < b, within rtol/4 of budget
 -- (density times the width: the caller's share of tol L) by Gauss-Legendre
--- on pieces whose order meets Trefethen's bound (ATAP Thm 19.3)
---   |E| <= (64/15) hw M rho^(-2n) / (rho^2 - 1)
+-- on pieces whose order meets Trefethen's bound (ATAP Thm 19.3, whose
+-- rule has n + 1 points: for n points)
+--   |E| <= (64/15) hw M rho^(2 - 2n) / (rho^2 - 1)
 -- with rho inside the Bernstein ellipse through the nearest branch point
 -- (conic_setup) and M >= speed on it; a piece no order up to 128 meets is
 -- cut at a branch point's foot inside it, else in half.
@@ -408,8 +499,15 @@ end
 
 local function conic_length_th(k, a, b, rtol, density)
   if b <= a then return 0, 0 end
-  if not k.eta2 then                             -- a circle (or a point): constant speed
-    return (b - a) * conic_speed_th(k, (a + b) / 2), 1
+  if not k.eta2 then
+    if k.hyp then
+      -- kp or km zero (a degenerate hyperbola: collinear points): the
+      -- speed is |kp| e^th / 2 or |km| e^-th / 2
+      local np, nm = norm(k.kp, k.d), norm(k.km, k.d)
+      local shh = sinh_cosh((b - a) / 2)
+      return shh * (np * exp((a + b) / 2) + nm * exp(-(a + b) / 2)), 1
+    end
+    return (b - a) * conic_speed_th(k, (a + b) / 2), 1   -- a circle (or a point)
   end
   if not density then
     -- a lower bound of the length over the width: the chord's,
@@ -417,16 +515,24 @@ local function conic_length_th(k, a, b, rtol, density)
     --              = 2 sinh(hw) (sinh(m) U + cosh(m) V)      (hyperbola)
     -- (m, hw the middle and half-width: no cancellation); a closed conic
     -- (P0 = P2) takes a quarter of the mean speed at 16 points
+    -- (far from 0, sinh(m) U + cosh(m) V as (kp e^m + km e^-m)/2, as in
+    -- conic_speed_th)
     local m, h = (a + b) / 2, (b - a) / 2
-    local v, cu, cv = {}, nil, nil
-    if k.hyp then
-      local sh, ch = sinh_cosh(m)
-      local shh = sinh_cosh(h)
-      cu, cv = 2 * shh * sh, 2 * shh * ch
+    local v = {}
+    if k.hyp and abs(m) >= 0.5 then
+      local shh, e = sinh_cosh(h), exp(m)
+      for j = 1, k.d do v[j] = shh * (k.kp[j] * e + k.km[j] / e) end
     else
-      cu, cv = -2 * sin(h) * sin(m), 2 * sin(h) * cos(m)
+      local cu, cv
+      if k.hyp then
+        local sh, ch = sinh_cosh(m)
+        local shh = sinh_cosh(h)
+        cu, cv = 2 * shh * sh, 2 * shh * ch
+      else
+        cu, cv = -2 * sin(h) * sin(m), 2 * sin(h) * cos(m)
+      end
+      for j = 1, k.d do v[j] = cu * k.U[j] + cv * k.V[j] end
     end
-    for j = 1, k.d do v[j] = cu * k.U[j] + cv * k.V[j] end
     density = norm(v, k.d) / (b - a)
     if not (density > 0) then
       density = 0
@@ -450,13 +556,19 @@ local function conic_length_th(k, a, b, rtol, density)
       if r < rho then rho, foot = r, ft end
     end
     local target = 0.25 * rtol * density * (y - x)
+    -- the rounding's floor: the rule's own rounding is some eps of the
+    -- piece's length, and density (y - x) is its share of the whole, where
+    -- M hw can be far above both (a hyperbola's speed grows as e^|th| out
+    -- to the ellipse's ends: 4 eps M hw let 8 points on [-3.6, 3.6] of w =
+    -- 18 err 2e-10)
+    local floor_err = 2 * EPS * density * (y - x)
     local done = false
     if rho > 1.05 then
       local r = 1 + (rho - 1) * 0.9
       local M = conic_bound(k, c, hw, r)
       for _, n in ipairs(ORDERS) do
-        local bound = (64 / 15) * hw * M * r ^ (-2 * n) / (r * r - 1)
-        if bound <= target or bound <= 4 * EPS * M * hw then
+        local bound = (64 / 15) * hw * M * r ^ (2 - 2 * n) / (r * r - 1)
+        if bound <= target or bound <= floor_err then
           total = total + gl(f, x, y, rules[n])
           evals = evals + n
           done = true
@@ -564,6 +676,65 @@ local function conic_scaled(c, d)
   return out, f
 end
 
+-- The piece [t0, t1] (t0 < t1) of the conic c as a conic of its own legs
+-- a', c', k', formed directly from the legs a = P1 - P0, c = P2 - P1, k =
+-- P2 - P0 (conic_seg.c's piece_legs, which derives them): with the
+-- blossom's weights W00, W01, W11 and H(t) = w (1-t)^2 a + t (1-t) k + w
+-- t^2 c,
+--   a' = (t1 - t0) H(t0) / (W01 W00),  c' = (t1 - t0) H(t1) / (W01 W11),
+--   k' = (t1 - t0) [2w (1-t0)(1-t1) a + ((1-t1) t0 + (1-t0) t1) k
+--                   + 2w t0 t1 c] / (W00 W11),   w' = W01 / sqrt(W00 W11);
+-- as points of which two legs are exact and the longest is their sum.
+-- Measured in the angle of the whole conic instead, a short piece lost
+-- eps |th| of its width (1.7e-13 of [0.001, 0.002] of w = 1.5).
+local function wfrac(w, x, W)            -- w x / W, no w x near 2^1024
+  if w > 1 then return x / (W / w) end
+  return w * x / W
+end
+local function piece_legs(c, d, t0, t1)
+  local w = c[3 * d + 1]
+  local W00 = (1 - t0) * (1 - t0) + 2 * w * t0 * (1 - t0) + t0 * t0
+  local W11 = (1 - t1) * (1 - t1) + 2 * w * t1 * (1 - t1) + t1 * t1
+  local W01 = (1 - t0) * (1 - t1) + w * ((1 - t0) * t1 + t0 * (1 - t1)) + t0 * t1
+  local h = t1 - t0
+  -- H(t) in positive terms: w (1 - 2t) a + t (w t + 1 - t) k for t <= 1/2,
+  -- w (2t - 1) c + (1 - t) (w (1 - t) + t) k above; returns the
+  -- coefficient of a or c, which (1: a, 2: c), and that of k
+  local function terms(t)
+    if t <= 0.5 then return w * (1 - 2 * t), 1, t * (w * t + (1 - t)) end
+    return w * (2 * t - 1), 2, (1 - t) * (w * (1 - t) + t)
+  end
+  local f0, i0, g0 = terms(t0)
+  local f1, i1, g1 = terms(t1)
+  f0, g0 = h * (f0 / W00) / W01, h * (g0 / W00) / W01
+  f1, g1 = h * (f1 / W11) / W01, h * (g1 / W11) / W01
+  local ea = 2 * (h * (1 - t0) / W00) * wfrac(w, 1 - t1, W11)
+  local ek = (h / W00) * (((1 - t1) * t0 + (1 - t0) * t1) / W11)
+  local ec = 2 * (h * t1 / W11) * wfrac(w, t0, W00)
+  local ap, cp, kp, la, lc, lk = {}, {}, {}, 0, 0, 0
+  for j = 1, d do
+    local p0, p1, p2 = c[j], c[d + j], c[2 * d + j]
+    local leg = {p1 - p0, p2 - p1}
+    local k = p2 - p0
+    ap[j] = f0 * leg[i0] + g0 * k
+    cp[j] = f1 * leg[i1] + g1 * k
+    kp[j] = ea * leg[1] + ek * k + ec * leg[2]
+    la, lc, lk = math.max(la, abs(ap[j])), math.max(lc, abs(cp[j])), math.max(lk, abs(kp[j]))
+  end
+  local out = {}
+  for j = 1, d do
+    if lk >= la and lk >= lc then          -- P1' = 0: a', c' exact
+      out[j], out[d + j], out[2 * d + j] = -ap[j], 0, cp[j]
+    elseif la >= lc then                   -- P2' = 0: c', k' exact
+      out[j], out[d + j], out[2 * d + j] = -kp[j], -cp[j], 0
+    else                                   -- P0' = 0: a', k' exact
+      out[j], out[d + j], out[2 * d + j] = 0, ap[j], kp[j]
+    end
+  end
+  out[3 * d + 1] = W01 / (sqrt(W00) * sqrt(W11))
+  return out
+end
+
 -- The length; the second result counts the speed evaluations.
 function M.length(kind, c, d, rtol)
   if rtol > CONIC_RTOL then rtol = CONIC_RTOL end
@@ -585,9 +756,10 @@ function M.length_range(kind, c, d, rtol, t0, t1)
   if kind == "quad" then return quad_length(quad_setup(c, d), t0, t1), 1 end
   local f
   c, f = conic_scaled(c, d)
-  local k = conic_setup(c, d)
-  if k.quad then return quad_length(k.quad, t0, t1) / f, 1 end
-  local v, e = conic_length_th(k, th_of_t(k, t0), th_of_t(k, t1), rtol)
+  if c[3 * d + 1] == 1 then return quad_length(quad_setup(c, d), t0, t1) / f, 1 end
+  local k = conic_setup(piece_legs(c, d, t0, t1), d)
+  if k.quad then return quad_length(k.quad, 0, 1) / f, 1 end
+  local v, e = conic_length_th(k, -k.al, k.al, rtol)
   return v / f, e
 end
 

@@ -264,35 +264,102 @@ static int whole_length(const double *p, int dim, double *len,
   return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
 }
 
+/* w x / W for W >= w x / 2 or so, without forming w x where w is near
+** DBL_MAX. */
+static double wfrac(double w, double x, double W) {
+  return w > 1 ? x / (W / w) : w * x / W;
+}
+
+/* The piece [t0, t1] of the conic with legs a = P1 - P0, c = P2 - P1, k =
+** P2 - P0 (one rounding each), its own legs a', c', k' formed directly,
+** not as differences of its control points rounded at the whole arc's
+** scale (those moved a short piece's length by up to 3 eps |P|: 6.7e-14 of
+** [0.9, 0.999] of a w = 18 conic, 8e-10 of [0.5, 0.5001] at w = 1000).
+** With the homogeneous blossom's weights W00, W01, W11 (of (t0, t0), (t0,
+** t1), (t1, t1)) and H(t) = w (1-t)^2 a + t (1-t) k + w t^2 c (D^2 C'(t) /
+** 2):
+**   a' = (t1 - t0) H(t0) / (W01 W00),  c' = (t1 - t0) H(t1) / (W01 W11),
+**   k' = (t1 - t0) [2w (1-t0)(1-t1) a + ((1-t1) t0 + (1-t0) t1) k
+**                   + 2w t0 t1 c] / (W00 W11),
+**   w' = W01 / sqrt(W00 W11).
+** (N, W the homogeneous blossom's point and weight: N(t0, v) and W(t0, v)
+** are affine in v, so N(t0, t1) W00 - N00 W(t0, t1) = (t1 - t0)(N_v W -
+** N W_v) at (t0, t0), half the numerator of C'(t0) = 2 H(t0)/W00^2;
+** likewise at t1.  k' is the chord, N(t1) W(t0) - N(t0) W(t1) over W00 W11
+** summed over pairs of control points.)  H(t) is taken as w (1 - 2t) a +
+** t (w t + 1 - t) k for t <= 1/2 and w (2t - 1) c + (1 - t) (w (1 - t) +
+** t) k above: positive terms, none of the size w |a| where the middle's
+** tangent is k/(1 + w).  Every coefficient is positive and at most 1, the
+** divisions ordered so that no intermediate exceeds 2w.
+** The piece is returned as three points (and w') of which two legs are
+** exactly a', c' or k' and the third, the longest, one rounding of their
+** sum: on a flat triangle (thin hyperbolas) the longest is k', on a tall
+** one (w = 1e-6, P1 1e6 away beside a chord of 1) a' or c', and k' = a' +
+** c' lost 1e-11 there. */
+static void piece_legs(const double *a, const double *c, const double *k,
+                       int dim, double w, double t0, double t1,
+                       double *out) {
+  double W00 = (1 - t0) * (1 - t0) + 2 * w * t0 * (1 - t0) + t0 * t0;
+  double W11 = (1 - t1) * (1 - t1) + 2 * w * t1 * (1 - t1) + t1 * t1;
+  double W01 = (1 - t0) * (1 - t1) + w * ((1 - t0) * t1 + t0 * (1 - t1)) + t0 * t1;
+  double h = t1 - t0, f0, g0, f1, g1, ea, ek, ec, la = 0, lc = 0, lk = 0;
+  double ap[3], cp[3], kp[3];
+  const double *v0 = t0 <= 0.5 ? a : c, *v1 = t1 <= 0.5 ? a : c;
+  int i;
+  if (t0 <= 0.5) { f0 = w * (1 - 2 * t0); g0 = t0 * (w * t0 + (1 - t0)); }
+  else { f0 = w * (2 * t0 - 1); g0 = (1 - t0) * (w * (1 - t0) + t0); }
+  if (t1 <= 0.5) { f1 = w * (1 - 2 * t1); g1 = t1 * (w * t1 + (1 - t1)); }
+  else { f1 = w * (2 * t1 - 1); g1 = (1 - t1) * (w * (1 - t1) + t1); }
+  f0 = h * (f0 / W00) / W01; g0 = h * (g0 / W00) / W01;
+  f1 = h * (f1 / W11) / W01; g1 = h * (g1 / W11) / W01;
+  ea = 2 * (h * (1 - t0) / W00) * wfrac(w, 1 - t1, W11);
+  ek = (h / W00) * (((1 - t1) * t0 + (1 - t0) * t1) / W11);
+  ec = 2 * (h * t1 / W11) * wfrac(w, t0, W00);
+  for (i = 0; i < dim; i++) {
+    ap[i] = f0 * v0[i] + g0 * k[i];
+    cp[i] = f1 * v1[i] + g1 * k[i];
+    kp[i] = ea * a[i] + ek * k[i] + ec * c[i];
+    la = fmax(la, fabs(ap[i])); lc = fmax(lc, fabs(cp[i])); lk = fmax(lk, fabs(kp[i]));
+  }
+  for (i = 0; i < dim; i++) {
+    if (lk >= la && lk >= lc) {          /* P1' = 0: a', c' exact */
+      out[i] = -ap[i]; out[dim + i] = 0; out[2 * dim + i] = cp[i];
+    } else if (la >= lc) {               /* P2' = 0: c', k' exact */
+      out[i] = -kp[i]; out[dim + i] = -cp[i]; out[2 * dim + i] = 0;
+    } else {                             /* P0' = 0: a', k' exact */
+      out[i] = 0; out[dim + i] = ap[i]; out[2 * dim + i] = kp[i];
+    }
+  }
+  out[3 * dim] = W01 / (sqrt(W00) * sqrt(W11));
+}
+
 int arclen_rquad_length(const double *p, int dim, double t0, double t1,
                         double *len, arclen_info *info) {
-  double q[10], sub[10], lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
+  double a[3], c[3], kk[3], sub[10], lo = t0 < t1 ? t0 : t1, hi = t0 < t1 ? t1 : t0;
   int rc, k, half = 0;
   *len = 0;
   if (lo == hi) return ARCLEN_OK;
   if (lo == 0 && hi == 1) {
     rc = whole_length(p, dim, len, info);
   } else {
-    /* the piece of the conic moved to P0 = 0 (the legs, one rounding each;
-    ** halved where they overflow): its control points are then rounded
-    ** relative to the arc's size, not to its distance from the origin */
+    /* the legs, one rounding each (halved where they overflow) */
     for (k = 0; k < dim; k++) {
-      q[k] = 0;
-      q[dim + k] = p[dim + k] - p[k];
-      q[2 * dim + k] = p[2 * dim + k] - p[k];
-      if (!isfinite(q[dim + k]) || !isfinite(q[2 * dim + k])) half = 1;
+      a[k] = p[dim + k] - p[k];
+      c[k] = p[2 * dim + k] - p[dim + k];
+      kk[k] = p[2 * dim + k] - p[k];
+      if (!isfinite(a[k]) || !isfinite(c[k]) || !isfinite(kk[k])) half = 1;
     }
-    for (k = 0; k < 2 * dim && !half; k++)
-      if (fabs(q[dim + k]) > 0x1p1000) half = 1;
+    for (k = 0; k < dim && !half; k++)
+      if (fabs(a[k]) > 0x1p1000 || fabs(c[k]) > 0x1p1000 || fabs(kk[k]) > 0x1p1000) half = 1;
     /* legs near DBL_MAX: the piece measured at 1/16 (exact), so that its
     ** polygon's sums stay finite, then scaled back */
     if (half)
       for (k = 0; k < dim; k++) {
-        q[dim + k] = p[dim + k] / 16 - p[k] / 16;
-        q[2 * dim + k] = p[2 * dim + k] / 16 - p[k] / 16;
+        a[k] = p[dim + k] / 16 - p[k] / 16;
+        c[k] = p[2 * dim + k] / 16 - p[dim + k] / 16;
+        kk[k] = p[2 * dim + k] / 16 - p[k] / 16;
       }
-    q[3 * dim] = p[3 * dim];
-    arclen_rquad_sub(q, dim, lo, hi, sub);
+    piece_legs(a, c, kk, dim, p[3 * dim], lo, hi, sub);
     rc = whole_length(sub, dim, len, info);
     if (rc == ARCLEN_OK && half) {
       *len *= 16;
