@@ -123,7 +123,9 @@ describe("a halftone drawing of 1000 circles #svgdoc", function()
     local m = svg.read(FILE, {method = "metapost"})
     assert.are.equal(m.elements[1].length, m.elements[1].path:length())
   end)
-  it("arclen length and arclen stat print the total within 1e-15", function()
+  -- through a POSIX shell (io.popen): not under Wine's cmd
+  local it_sh = package.config:sub(1, 1) == "/" and it or function() end
+  it_sh("arclen length and arclen stat print the total within 1e-15", function()
     local lua = helpers.interpreter()
     local h = io.popen(lua .. " bin/arclen length " .. FILE)
     local out = h:read("*a")
