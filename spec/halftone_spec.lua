@@ -126,7 +126,9 @@ describe("a halftone drawing of 1000 circles #svgdoc", function()
   -- through a POSIX shell (io.popen): not under Wine's cmd
   local it_sh = package.config:sub(1, 1) == "/" and it or function() end
   it_sh("arclen length and arclen stat print the total within 1e-15", function()
-    local lua = helpers.interpreter()
+    -- the module where this run found it (an installed rock, a build)
+    local lua = ("LUA_PATH=%s LUA_CPATH=%s %s"):format(helpers.shquote(package.path),
+      helpers.shquote(package.cpath), helpers.interpreter())
     local h = io.popen(lua .. " bin/arclen length " .. FILE)
     local out = h:read("*a")
     h:close()
