@@ -72,7 +72,8 @@ for _, mode in ipairs({"default", "painted"}) do
       .. "no marker at the end of a closed subpath that a moveto follows (10,100) nor at the "
       .. "start of the subpath that l10 0 after Z begins (40,100), both vertices by SVG 2 "
       .. "section 11.6.2 (#m's line, 3, each); and it draws #outer-content's marker-end inside "
-      .. "the marker #outer (#m, 3), where markers are not drawn on a marker's content",
+      .. "the marker #outer (#m, 3), where we draw no markers on a marker's content "
+      .. "(doc/svg.md, Markers)",
     rsvg = {3}, ours = {3, 3}}
 end
 for _, mode in ipairs({"default", "stroked", "painted"}) do
