@@ -57,6 +57,25 @@ local DIFFER = {
       .. "(librsvg hands it over)",
     rsvg = {}, ours = {0}},
 }
+for _, mode in ipairs({"default", "painted"}) do
+  -- the markers' content is stroked (default) or filled (painted); none strokes it
+  DIFFER["hand/marker-viewbox.svg " .. mode] = {
+    why = "librsvg 2.54 clips a marker to its viewBox, not to its viewport "
+      .. "[0, markerWidth] x [0, markerHeight] (SVG 2 section 11.6.2, overflow: hidden): "
+      .. "#meet's two vertical lines (meet, the viewport taller than the viewBox) 5 and 5 "
+      .. "there, 8 and 10 here; #slice's line (slice, the viewport narrower) 20 there, 10 here; "
+      .. "and it reads no refX/refY keywords (SVG 2's left/center/right, top/center/bottom) and "
+      .. "then drops markerWidth/markerHeight for 3 x 3: #keywords' line 8 x 3/8 = 3 there, 8 here",
+    rsvg = {5, 5, 20, 3}, ours = {8, 10, 10, 8}}
+  DIFFER["hand/marker-vertices.svg " .. mode] = {
+    why = "#closed (M10 100 H30 V120 Z M40 100 H60 V120 L40 100 Z l10 0): librsvg 2.54 puts "
+      .. "no marker at the end of a closed subpath that a moveto follows (10,100) nor at the "
+      .. "start of the subpath that l10 0 after Z begins (40,100), both vertices by SVG 2 "
+      .. "section 11.6.2 (#m's line, 3, each); and it draws #outer-content's marker-end inside "
+      .. "the marker #outer (#m, 3), where we draw no markers on a marker's content "
+      .. "(doc/svg.md, Markers)",
+    rsvg = {3}, ours = {3, 3}}
+end
 for _, mode in ipairs({"default", "stroked", "painted"}) do
   DIFFER["hand/switch.svg " .. mode] = {
     why = "librsvg 2.54 tests conditional attributes only on a <switch>'s children (#out-de, #out-ext, "
@@ -122,7 +141,14 @@ describe("arclen.svg against librsvg's structure #svgdoc", function()
         shapes = shapes - #d.rsvg + #d.ours
         L = L - sum(d.rsvg) + sum(d.ours)
       end
-      assert.are.equal(shapes, #doc.elements, "shapes drawn (librsvg's, differences taken out)")
+      -- a marker's content that its viewport clips away is listed with no
+      -- segments; cairo writes it or not by its extents against the clip's,
+      -- tools/ref_rsvg.py leaves it out: so do we here
+      local n = 0
+      for _, e in ipairs(doc.elements) do
+        if not (e.marker and e.path:segments() == 0) then n = n + 1 end
+      end
+      assert.are.equal(shapes, n, "shapes drawn (librsvg's, differences taken out)")
       local bar = quant + ARC_BAR * conic_length(doc) + 1e-12 * L
       local err = math.abs(doc.total - L)
       assert(err <= bar, ("total %.17g, librsvg's %.17g: difference %.3g > bar %.3g"):format(

@@ -74,6 +74,23 @@ The choices, each forced by how librsvg and cairo work:
   - Markers are drawn by librsvg.  Each mode is also rendered with
     marker-start/mid/end none on every shape (columns shapes_nomarkers,
     length_nomarkers): what a reader that does not draw markers must match.
+    In default mode the stroke-width forced on every shape would scale its
+    markers (markerUnits="strokeWidth"): the row is the rendering without
+    markers plus one where the shapes outside markers keep their own
+    stroke-width but paint nothing (stroke and fill none) and the markers'
+    content (a <marker>'s descendants and what its <use>s draw) is stroked
+    as above.  In painted mode a marker's content, and a <symbol>'s or a
+    nested <svg>'s, is not shifted (a shift would move it against the
+    clip).
+  - Clips.  cairo writes a marker's clip (its viewport under overflow
+    hidden; librsvg's also at a <symbol>'s or nested <svg>'s viewBox) as
+    nested <clipPath>s of closed polylines and the path whole: each path is
+    cut here to the intersection of the clips above it (each side a line:
+    the crossings of a Bezier coordinate, split where it is monotone, by
+    bisection; a piece is kept when its middle is within 4 d of the inside),
+    and quant takes, for each end a clip makes, 2 d / sin(the angle between
+    the curve and the side).  A path the clips leave nothing of is not
+    counted: cairo writes it or drops it by its extents against the clip's.
   - Languages: librsvg 2.54 passes every systemLanguage whatever the
     locale (tried: LANGUAGE, LANG, LC_ALL, LC_MESSAGES set to en, de, C),
     and tests conditional attributes only on the children of a <switch>;
@@ -126,8 +143,34 @@ def add_style(el, decls):
     el.set("style", old + ";".join(d + " !important" for d in decls))
 
 
-def prepare(data, mode, markers, box=None):
-    """The document as it is rendered: text removed, the page, the mode."""
+def marker_content(root):
+    """The elements a <marker> draws: its descendants and what its <use>
+    elements refer to (and their descendants), to a depth of 32 uses."""
+    ids = {}
+    for el in root.iter():
+        if isinstance(el.tag, str) and el.get("id") is not None:
+            ids.setdefault(el.get("id"), el)
+    seen = set()
+    todo = [m for m in root.iter() if isinstance(m.tag, str) and local(m.tag) == "marker"]
+    for _ in range(32):
+        nxt = []
+        for top in todo:
+            for el in top.iter():
+                if el in seen or not isinstance(el.tag, str):
+                    continue
+                seen.add(el)
+                if local(el.tag) == "use":
+                    ref = (el.get(XLINK) or el.get("href") or "")[1:]
+                    if ref in ids:
+                        nxt.append(ids[ref])
+        todo = nxt
+    return seen
+
+
+def prepare(data, mode, markers, box=None, only_markers=False):
+    """The document as it is rendered: text removed, the page, the mode;
+    only_markers (default mode): the shapes paint nothing, their markers'
+    content is stroked."""
     parser = etree.XMLParser(resolve_entities=True, huge_tree=False, no_network=True)
     root = etree.fromstring(data, parser)
     for el in list(root.iter()):
@@ -169,15 +212,25 @@ def prepare(data, mode, markers, box=None):
     k = NORM / size                             # the page's units: the document is NORM wide
     turn.set("transform", "scale(%r) rotate(%r %r %r)" % (k, TURN, size / 2, size / 2))
     turn.append(root)
+    content = marker_content(root)
+    still = set(content)                        # what painted mode does not shift
+    # cairo's output has a clip at a <symbol>'s or nested <svg>'s viewBox
+    # even under overflow:visible (hand/use.svg), which the content may
+    # touch: not shifted either, a shift would move it across that clip
+    for vp in root.iter():
+        if isinstance(vp.tag, str) and local(vp.tag) in ("symbol", "svg") and vp is not root:
+            still.update(x for x in vp.iter() if x is not vp)
     nth = 0
     for el in root.iter():
         if not isinstance(el.tag, str) or (el.tag.startswith("{") and not el.tag.startswith("{%s}" % SVG_NS)):
             continue                            # no namespace: SVG to librsvg and to arclen
         name = local(el.tag)
-        if mode == "painted" and name in SHAPES | {"g", "use", "a", "switch"}:
+        if mode == "painted" and name in SHAPES | {"g", "use", "a", "switch"} and el not in still:
             # a shift of its own for each element, below 1e-3 of the size:
             # the fill and the stroke of one drawing share it, two drawings
-            # (two uses of one shape) differ by more than cairo's rounding
+            # (two uses of one shape) differ by more than cairo's rounding;
+            # not a marker's content, which its viewport clips (a shift
+            # there would move the cuts) and its instances place apart
             nth += 1
             dx, dy = (size * 1e-3 * ((nth * x) % 1) for x in (0.6180339887, 0.4142135624))
             el.set("transform", "translate(%r %r) %s" % (dx, dy, el.get("transform") or ""))
@@ -186,7 +239,12 @@ def prepare(data, mode, markers, box=None):
             decls.append("overflow:visible")
         if mode == "default":
             decls.append("opacity:1")
-            if name in SHAPES:
+            if only_markers and name in SHAPES and el not in content:
+                # the shape's own width scales its markers: kept; the
+                # shape itself paints nothing (the rendering without
+                # markers counts it)
+                decls += ["stroke:none", "fill:none"]
+            elif name in SHAPES:
                 decls += ["stroke:#000", "stroke-opacity:1", "stroke-width:1"]
         if name == "line":
             decls.append("fill:none")           # no interior (SVG 2 section 10.5)
@@ -220,13 +278,17 @@ def extent(svgtext, page):
     vp.x, vp.y, vp.width, vp.height = 0, 0, DEVICE, DEVICE     # within cairo's fixed point
     size = page[2] / (2 * MARGIN + 1)
     try:
-        ok, ink, _ = handle.get_geometry_for_layer(None, vp)
+        ok, ink, logical = handle.get_geometry_for_layer(None, vp)
     except gi.repository.GLib.Error:           # e.g. InvalidSize: a page of 33 sizes
         return (-16 * size, -16 * size, 17 * size, 17 * size)
-    if not ok or ink.width <= 0 and ink.height <= 0:
+    # the ink and the geometry: a fill of a line (a path of no area) has no
+    # ink, but cairo writes it where the geometry is
+    rects = [r for r in (ink, logical) if r.width > 0 or r.height > 0]
+    if not ok or not rects:
         return (0, 0, size, size)
-    # the ink is in the page's user units, from the corner of its viewBox
-    return (page[0] + ink.x, page[1] + ink.y, page[0] + ink.x + ink.width, page[1] + ink.y + ink.height)
+    # the extents are in the page's user units, from the corner of its viewBox
+    return (page[0] + min(r.x for r in rects), page[1] + min(r.y for r in rects),
+            page[0] + max(r.x + r.width for r in rects), page[1] + max(r.y + r.height for r in rects))
 
 
 # ---- the paths cairo wrote ---------------------------------------------------
@@ -303,7 +365,121 @@ def cubic_len(p):
     return rec(p, quad(p), 0)
 
 
-def measure(d, M, eps_local):
+def bez(q, t):
+    """The point at t of the Bezier curve of control points q (de Casteljau)."""
+    q = list(q)
+    while len(q) > 1:
+        q = [(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])) for a, b in zip(q, q[1:])]
+    return q[0]
+
+
+def sub(q, t0, t1):
+    """The control points of q's piece from t0 to t1 (de Casteljau twice)."""
+    def split(q, t):                            # the part from t to 1
+        rows = [list(q)]
+        while len(rows[-1]) > 1:
+            r = rows[-1]
+            rows.append([(a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])) for a, b in zip(r, r[1:])])
+        return [row[-1] for row in reversed(rows)]
+    right = split(q, t0)
+    if t1 >= 1:
+        return right
+    u = (t1 - t0) / (1 - t0)
+    rev = split(list(reversed(right)), 1 - u)   # the part from 0 to u, reversed
+    return list(reversed(rev))
+
+
+def edges(poly):
+    """A convex polygon's edges as (point, unit direction, unit inward normal)."""
+    n = len(poly)
+    area = sum(poly[i][0] * poly[(i + 1) % n][1] - poly[(i + 1) % n][0] * poly[i][1] for i in range(n))
+    out = []
+    for i in range(n):
+        a, b = poly[i], poly[(i + 1) % n]
+        L = math.dist(a, b)
+        if L == 0:
+            continue
+        u = ((b[0] - a[0]) / L, (b[1] - a[1]) / L)
+        nrm = (-u[1], u[0]) if area > 0 else (u[1], -u[0])
+        out.append((a, u, nrm))
+    return out
+
+
+def crossings(f):
+    """The t in (0, 1) where the Bernstein polynomial f (degree <= 3) is 0:
+    split where it is monotone (the roots of its derivative), bisection to
+    the last bit on each piece whose ends differ in sign."""
+    k = len(f) - 1
+    d = [k * (f[i + 1] - f[i]) for i in range(k)]
+    cuts = [0.0, 1.0]
+    if len(d) == 2:
+        if d[0] != d[1]:
+            cuts.append(d[0] / (d[0] - d[1]))
+    elif len(d) == 3:                           # d0 (1-t)^2 + 2 d1 t (1-t) + d2 t^2
+        a, b, c = d[0] - 2 * d[1] + d[2], 2 * (d[1] - d[0]), d[0]
+        if a == 0:
+            if b != 0:
+                cuts.append(-c / b)
+        else:
+            disc = b * b - 4 * a * c
+            if disc >= 0:
+                r = math.sqrt(disc)
+                cuts += [(-b - r) / (2 * a), (-b + r) / (2 * a)]
+    cuts = sorted(t for t in cuts if 0 <= t <= 1)
+    val = lambda t: bez([(x, 0) for x in f], t)[0]
+    roots = []
+    for lo, hi in zip(cuts, cuts[1:]):
+        flo, fhi = val(lo), val(hi)
+        if flo == 0 or fhi == 0 or (flo > 0) == (fhi > 0):
+            continue
+        for _ in range(200):
+            mid = (lo + hi) / 2
+            if mid <= lo or mid >= hi:
+                break
+            fm = val(mid)
+            if (fm > 0) == (flo > 0):
+                lo, flo = mid, fm
+            else:
+                hi = mid
+        roots.append((lo + hi) / 2)
+    return roots
+
+
+def clipped(q, clips, dev):
+    """The length of the Bezier q (device units) inside every polygon of
+    clips, and the bound on what the clip's rounding does to it: each kept
+    end at a crossing moves along the curve by (the displacement of the
+    point and of the side) / sin(the angle between them)."""
+    if not clips:
+        return (cubic_len(q) if len(q) == 4 else math.dist(q[0], q[1])), 0.0, 1
+    sides = [e for poly in clips for e in edges(poly)]
+    ts = [0.0, 1.0]
+    for a, u, nrm in sides:
+        ts += crossings([(p[0] - a[0]) * nrm[0] + (p[1] - a[1]) * nrm[1] for p in q])
+    ts = sorted(set(ts))
+    # on a side is inside: the sides' corners are printed to 1/512 or so
+    tol = 4 * dev(q[0])
+    inside = lambda p: all((p[0] - a[0]) * nrm[0] + (p[1] - a[1]) * nrm[1] >= -tol for a, u, nrm in sides)
+    keep = [inside(bez(q, (t0 + t1) / 2)) for t0, t1 in zip(ts, ts[1:])]
+    total, err = 0.0, 0.0
+    for i, (t0, t1) in enumerate(zip(ts, ts[1:])):
+        if not keep[i]:
+            continue
+        piece = sub(q, t0, t1)
+        total += cubic_len(piece) if len(piece) == 4 else math.dist(piece[0], piece[1])
+        for t, other in ((t0, i - 1), (t1, i + 1)):
+            if not 0 < t < 1 or keep[other]:
+                continue                        # an end of the curve, or both sides kept
+            c = bez(q, t)
+            a, u, nrm = min(sides, key=lambda e: abs((c[0] - e[0][0]) * e[2][0] + (c[1] - e[0][1]) * e[2][1]))
+            p0, p1 = bez(q, max(t - 1e-7, 0)), bez(q, min(t + 1e-7, 1))
+            v = (p1[0] - p0[0], p1[1] - p0[1])
+            sin = abs(v[0] * nrm[0] + v[1] * nrm[1]) / (math.hypot(*v) or 1.0)
+            err += 2 * dev(c) / max(sin, 1e-9)
+    return total, err, sum(keep)
+
+
+def measure(d, M, eps_local, clips=()):
     """Length in device units of path data d (cairo's M, L, C, Z) under M;
     its rounding bound (2 d per line, 6 d per cubic); its start; points."""
     tok = re.findall(r"[MLCZ]|" + NUM.pattern, d)
@@ -314,7 +490,7 @@ def measure(d, M, eps_local):
     # cairo's fill paths come out off by up to ~1e-8 of their coordinates
     # (0.027 at 2.6e6, where the stroke of the same path is exact)
     dev = lambda q: math.sqrt(2) * (1 / 512 + eps_local * norm + 2.0 ** -26 * max(abs(q[0]), abs(q[1])))
-    total, quant, i, cur, start, first, npts = 0.0, 0.0, 0, None, None, None, 0
+    total, quant, i, cur, start, first, npts, kept = 0.0, 0.0, 0, None, None, None, 0, 0
     while i < len(tok):
         c = tok[i]
         i += 1
@@ -324,27 +500,33 @@ def measure(d, M, eps_local):
             i += 2
         elif c == "L":
             q = pt(float(tok[i]), float(tok[i + 1]))
-            total += math.dist(cur, q)
-            quant += 2 * max(dev(cur), dev(q))
+            L, e, k = clipped([cur, q], clips, dev)
+            total += L
+            kept += k
+            quant += 2 * max(dev(cur), dev(q)) + e
             cur = q
             i += 2
             npts += 1
         elif c == "C":
             v = [float(x) for x in tok[i:i + 6]]
             q = [cur, pt(v[0], v[1]), pt(v[2], v[3]), pt(v[4], v[5])]
-            total += cubic_len(q)
-            quant += 6 * max(dev(x) for x in q)
+            L, e, k = clipped(q, clips, dev)
+            total += L
+            kept += k
+            quant += 6 * max(dev(x) for x in q) + e
             cur = q[3]
             i += 6
             npts += 3
         elif c == "Z":
-            total += math.dist(cur, start)
-            quant += 2 * max(dev(cur), dev(start))
+            L, e, k = clipped([cur, start], clips, dev)
+            total += L
+            kept += k
+            quant += 2 * max(dev(cur), dev(start)) + e
             cur = start
             npts += 1
         else:
             raise AssertionError("unexpected path data %r" % c)
-    return total, quant, first, npts
+    return total, quant, first, npts, kept
 
 
 def outputs(svg_bytes):
@@ -355,12 +537,43 @@ def outputs(svg_bytes):
     out, images = [], [0]
     skip = {"pattern", "mask", "clipPath", "filter", "defs"}
 
-    def walk(el, M, depth):
+    def polygons(ref, M):
+        """A clip-path's polygons (device units): cairo writes a marker's
+        clip (its viewport, under overflow hidden) as a <clipPath> of
+        closed polylines, the path itself whole."""
+        cp = ids.get(ref)
+        assert cp is not None and local(cp.tag) == "clipPath", "clip-path %r" % ref
+        assert cp.get("clipPathUnits", "userSpaceOnUse") == "userSpaceOnUse"
+        C = mul(M, mat(cp.get("transform")))
+        polys = []
+        for ch in cp:
+            assert local(ch.tag) in ("path", "rect"), "a clip of a <%s>" % local(ch.tag)
+            K = mul(C, mat(ch.get("transform")))
+            d = ch.get("d", "")
+            if local(ch.tag) == "rect":             # a device-aligned clip: x, y, width, height
+                x, y, w, h = (float(ch.get(k)) for k in ("x", "y", "width", "height"))
+                d = "M %r %r L %r %r L %r %r L %r %r Z" % (x, y, x + w, y, x + w, y + h, x, y + h)
+            tok = re.findall(r"[MLCZ]|" + NUM.pattern, d)
+            assert "C" not in tok, "a clip with curves"
+            nums = [float(x) for x in tok if x not in "MLZ"]
+            pts = [(K[0] * x + K[2] * y + K[4], K[1] * x + K[3] * y + K[5])
+                   for x, y in zip(nums[0::2], nums[1::2])]
+            while len(pts) > 1 and pts[-1] == pts[0]:
+                pts.pop()                       # the closing point and the moveto after Z
+            assert tok.count("M") <= 2 and len(pts) >= 3, "clip path %r" % ch.get("d")
+            polys.append(pts)
+        assert len(polys) == 1, "a clip of %d paths" % len(polys)
+        return polys
+
+    def walk(el, M, depth, clips=()):
         assert depth < 64, "use nesting"
         name = local(el.tag)
         if name in skip:
             return
         M = mul(M, mat(el.get("transform")))
+        cref = re.fullmatch(r"url\(#([^)]*)\)", el.get("clip-path") or "")
+        if cref:
+            clips = tuple(clips) + tuple(polygons(cref.group(1), M))
         if name == "path":
             st = dict(kv.split(":", 1) for kv in (x.strip() for x in el.get("style", "").split(";"))
                       if ":" in kv)
@@ -369,7 +582,12 @@ def outputs(svg_bytes):
             stroke = st.get("stroke", "none") != "none"
             if not (fill or stroke):
                 return
-            L, q, start, n = measure(el.get("d", ""), M, 0.5e-6)
+            L, q, start, n, kept = measure(el.get("d", ""), M, 0.5e-6, clips)
+            if clips and not kept:
+                # a marker's content its viewport clips away: cairo writes
+                # it or not by its extents against the clip's (arclen lists
+                # it with no segments; spec/svgrsvg_spec.lua leaves it out)
+                return
             kinds = ([("fill",) if fill else ()] + [("stroke",) if stroke else ()])
             for k in kinds:
                 if k:
@@ -377,12 +595,12 @@ def outputs(svg_bytes):
         elif name == "use":
             target = ids.get((el.get(XLINK) or el.get("href") or "#")[1:])
             if target is not None:
-                walk(target, M, depth + 1)
+                walk(target, M, depth + 1, clips)
         elif name == "image":
             images[0] += 1
         elif name in ("g", "svg"):
             for ch in el:
-                walk(ch, M, depth)
+                walk(ch, M, depth, clips)
         elif name == "rect":
             raise AssertionError("cairo painted a rectangle outside a mask")
 
@@ -418,13 +636,26 @@ def rows_of(path, name):
     for mode in MODES:
         row = [name, mode]
         images = 0
-        for markers in (True, False):
-            text, page, scale = prepare(data, mode, markers)
-            text, page, scale = prepare(data, mode, markers, extent(text, page))
+        res = {}
+        for part in ("markers", "shapes", "all"):
+            if part == "markers" and mode != "default":
+                continue
+            markers = part != "shapes"
+            if part == "all" and mode == "default":
+                # the shapes stroked with width 1 (without markers) and their
+                # markers scaled by the shapes' own widths (markerUnits)
+                res["all"] = tuple(a + b for a, b in zip(res["shapes"], res["markers"]))
+                continue
+            only = part == "markers"
+            text, page, scale = prepare(data, mode, markers, only_markers=only)
+            text, page, scale = prepare(data, mode, markers, extent(text, page), only_markers=only)
             outs, im = outputs(render(text, page, scale))
             images = max(images, im)
             n, L, Q = count(outs, mode, DEVICE)
-            row += [str(n), repr(L / scale), "%.3g" % (Q / scale)]
+            res[part] = (n, L / scale, Q / scale)
+        for part in ("all", "shapes"):
+            n, L, Q = res[part]
+            row += [str(n), repr(L), "%.3g" % Q]
         rows.append(row + [str(images)])
     return rows
 
