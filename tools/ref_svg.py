@@ -1065,14 +1065,18 @@ class Doc:
                 return
             shown = not (self.option == "stroked" and not stroke_shows(paint)) and \
                 not (self.option == "painted" and not (stroke_shows(paint) or fill_shows(paint, tag)))
-            if shown:
+            outer = ext["outer"]
+            A = (mul(outer, ctm) if outer else ctm)[:4]
+            if shown and ext["box"] is not None:
+                # a marker's clip: what it leaves; a shape it removes whole
+                # is not drawn (one of no length at all is, as unclipped)
+                L = sum(clipped_length(prim, ctm, A, ext["box"]) for prim in prims)
+                if L > 0 or all(measure(prim, A)[0] == 0 for prim in prims):
+                    self.count += 1
+                    self.total += L
+            elif shown:
                 self.count += 1
-                outer = ext["outer"]
-                A = (mul(outer, ctm) if outer else ctm)[:4]
                 for prim in prims:
-                    if ext["box"] is not None:
-                        self.total += clipped_length(prim, ctm, A, ext["box"])
-                        continue
                     L, size = measure(prim, A)
                     self.total += L
                     if size is not None:

@@ -410,8 +410,10 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
     }
   }
   if (mk) {
+    size_t had = pd->ncubics;
     if (svgdoc_clip_map(pd, mk->clip ? mk->box : NULL, mk->outer) != 0)
       svgdoc_nomem(D);
+    if (had > 0 && pd->ncubics == 0) return;  /* the marker's clip hides it */
     svgdoc_mul(mk->outer, C, full);
     C = full;
   }
