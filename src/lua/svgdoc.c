@@ -438,16 +438,27 @@ static void span_add(span *r, double v) {
   if (v > r->hi) r->hi = v;
 }
 
+/* x rounded to a double on its own: svg.lua's arithmetic, which this
+** mirrors, rounds every product before a sum, and a compiler that
+** contracts a * b + c into a fused multiply-add would not (a volatile
+** store, as metapost.c's pyth): the same bits on every build. */
+static double rounded(double x) {
+  volatile double v = x;
+  return v;
+}
+
 /* The value at t of one coordinate p of a segment of kind (svgpath.lua's
 ** callbacks of range). */
 static double coord_at(int kind, const double *p, double w, double t) {
   double u = 1 - t;
-  if (kind == ARCLEN_SEG_QUAD) return u * u * p[0] + 2 * u * t * p[1] + t * t * p[2];
+  if (kind == ARCLEN_SEG_QUAD)
+    return rounded(u * u * p[0]) + rounded(2 * u * t * p[1]) + rounded(t * t * p[2]);
   if (kind == ARCLEN_SEG_CUBIC)
-    return u * u * u * p[0] + 3 * u * u * t * p[1] + 3 * u * t * t * p[2] + t * t * t * p[3];
+    return rounded(u * u * u * p[0]) + rounded(3 * u * u * t * p[1]) +
+           rounded(3 * u * t * t * p[2]) + rounded(t * t * t * p[3]);
   {
-    double b0 = u * u, b1 = 2 * w * t * u, b2 = t * t;
-    return (b0 * p[0] + b1 * p[1] + b2 * p[2]) / (b0 + b1 + b2);
+    double b0 = rounded(u * u), b1 = rounded(2 * w * t * u), b2 = rounded(t * t);
+    return (rounded(b0 * p[0]) + rounded(b1 * p[1]) + rounded(b2 * p[2])) / (b0 + b1 + b2);
   }
 }
 
@@ -463,7 +474,7 @@ static void roots01(double a, double b, double c, int kind, const double *p,
     if (b != 0) at01(kind, p, w, -c / b, r);
     return;
   }
-  disc = b * b - 4 * a * c;
+  disc = rounded(b * b) - rounded(4 * a * c);
   if (disc < 0) return;
   q = -0.5 * (b + (b >= 0 ? 1 : -1) * sqrt(disc));
   at01(kind, p, w, q / a, r);
@@ -479,10 +490,10 @@ static span coord_range(int kind, const double *p, double w) {
   if (kind == ARCLEN_SEG_QUAD) {
     roots01(0, p[0] - 2 * p[1] + p[2], p[1] - p[0], kind, p, w, &r);
   } else if (kind == ARCLEN_SEG_CUBIC) {
-    roots01(-p[0] + 3 * p[1] - 3 * p[2] + p[3], 2 * (p[0] - 2 * p[1] + p[2]),
+    roots01(-p[0] + rounded(3 * p[1]) - rounded(3 * p[2]) + p[3], 2 * (p[0] - 2 * p[1] + p[2]),
             p[1] - p[0], kind, p, w, &r);
   } else if (kind == ARCLEN_SEG_CONIC) {
-    double a0 = w * (p[1] - p[0]), a1 = p[2] - p[0], a2 = w * (p[2] - p[1]);
+    double a0 = rounded(w * (p[1] - p[0])), a1 = p[2] - p[0], a2 = rounded(w * (p[2] - p[1]));
     roots01(a0 - a1 + a2, a1 - 2 * a0, a0, kind, p, w, &r);
   }
   return r;
@@ -580,8 +591,9 @@ static int l_stat_add(lua_State *L) {
     last = first + sub[k].n - 1;
     b = rec + ARCLEN_PD_STRIDE * last;
     if (has_end) {
+      /* svg.lua's sqrt(dx * dx + dy * dy), each square rounded */
       double dx = a[0] - endx, dy = a[1] - endy;
-      neumaier(&sum, &comp, sqrt(dx * dx + dy * dy));
+      neumaier(&sum, &comp, sqrt(rounded(dx * dx) + rounded(dy * dy)));
     }
     lk = arclen_segment_kind_of_letter(kinds[last]);
     j = lk == ARCLEN_SEG_LINE ? 2 : lk == ARCLEN_SEG_CUBIC ? 6 : 4;   /* segment_end */
