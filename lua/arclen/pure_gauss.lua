@@ -57,26 +57,9 @@ end
 
 -- ---- the hodograph -------------------------------------------------------
 
--- Error-free transformations (Knuth's TwoSum; Dekker's TwoProduct with
--- Veltkamp's split, as Lua has no fma): a + b = s + e and a b = p + e
--- exactly, for operands below 2^995 (tame() sees to that).
-local SPLITTER = 134217729            -- 2^27 + 1
-local function two_sum(a, b)
-  local s = a + b
-  local bb = s - a
-  return s, (a - (s - bb)) + (b - bb)
-end
-local function split(a)
-  local t = SPLITTER * a
-  local hi = t - (t - a)
-  return hi, a - hi
-end
-local function two_prod(a, b)
-  local p = a * b
-  local ah, al = split(a)
-  local bh, bl = split(b)
-  return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
-end
+-- Error-free transformations (pure_rules): exact for operands below 2^995
+-- (tame() sees to that).
+local two_sum, two_prod = rules.two_sum, rules.two_prod
 -- Double-double (hi, lo) sum and product.
 local function dd_add(xh, xl, yh, yl)
   local s, e = two_sum(xh, yh)

@@ -75,27 +75,9 @@ local function tan(x) return sin(x) / cos(x) end
 
 local atan2 = math.atan2 or math.atan          -- Lua 5.1's name, 5.4's
 
--- Error-free transformations (Knuth's TwoSum; Dekker's TwoProduct with
--- Veltkamp's split, as Lua 5.1-5.3 and LuaJIT have no fma): a + b = s + e
--- and a b = p + e exactly, for operands below 2^995 (conic_scaled keeps
--- the coordinates below 2^200).
-local SPLITTER = 134217729            -- 2^27 + 1
-local function two_sum(a, b)
-  local s = a + b
-  local bb = s - a
-  return s, (a - (s - bb)) + (b - bb)
-end
-local function split(a)
-  local t = SPLITTER * a
-  local hi = t - (t - a)
-  return hi, a - hi
-end
-local function two_prod(a, b)
-  local p = a * b
-  local ah, al = split(a)
-  local bh, bl = split(b)
-  return p, ((ah * bh - p) + ah * bl + al * bh) + al * bl
-end
+-- Error-free transformations (pure_rules): exact for operands below 2^995
+-- (conic_scaled keeps the coordinates below 2^200).
+local two_sum, two_prod = rules.two_sum, rules.two_prod
 
 -- a1 b2 - a2 b1 to about an ulp of itself (each product exact, then the
 -- difference of the high parts plus that of the low ones): the area of
