@@ -128,8 +128,10 @@ int arclen_integ_start(integrator *in, const double *c, int dim, double t0,
   in->nmin = arclen_feet_of(&in->br, t0, t1, share * in->width, in->mins);
   in->t0 = t0;
   in->t1 = t1;
-  for (i = 0; i <= in->nmin; i++)
-    in->len_lower += arclen_hodo_chord(&in->h, arclen_first_from(in, i), arclen_first_to(in, i));
+  for (i = 0; i <= in->nmin; i++) {
+    in->chords[i] = arclen_hodo_chord(&in->h, arclen_first_from(in, i), arclen_first_to(in, i));
+    in->len_lower += in->chords[i];
+  }
   /* Zero chords between every pair of cuts but a moving point: the curve
   ** returns to where it was; bound L below by a coarse rule. */
   if (!(in->len_lower > 0))
@@ -221,9 +223,12 @@ static double accept(integrator *in, const span *s,
 /* Pop the next piece (in increasing t) and integrate it.  A piece is cut
 ** (cut_point) when no order up to NMAX meets its share of the tolerance.
 ** Returns 0 when no piece is left; else the accepted piece [*from, *to]
-** and its length. */
-int arclen_integ_next_piece(integrator *in, double *from, double *to, double *len,
-                      const arclen_gauss_rule **rule) {
+** and its length, or HUGE_VAL for a piece with its order whose chord
+** reaches past open_below (the caller needs no length of it; HUGE_VAL:
+** never). */
+int arclen_integ_next_piece(integrator *in, double open_below, double *from,
+                            double *to, double *len,
+                            const arclen_gauss_rule **rule) {
   while (in->top > 0) {
     const span *s = &in->stack[--in->top];
     double a = s->a, b = s->b, err;
@@ -237,6 +242,14 @@ int arclen_integ_next_piece(integrator *in, double *from, double *to, double *le
         push(in, a, cut, depth + 1);
         continue;
       }
+    }
+    if (r != NULL &&
+        open_below < arclen_hodo_chord(&in->h, a, b) * (1 - 0x1p-40)) {
+      *len = HUGE_VAL;
+      *from = a;
+      *to = b;
+      if (rule) *rule = r;
+      return 1;
     }
     if (r == NULL) {          /* bisection floor: a piece of ~1e-18 width */
       piece_bound ebound;
@@ -253,11 +266,15 @@ int arclen_integ_next_piece(integrator *in, double *from, double *to, double *le
   return 0;
 }
 
-/* The first pieces, between the feet, in increasing t. */
-void arclen_integ_push_initial(integrator *in) {
+/* The first pieces from i0 on, between the feet, in increasing t. */
+void arclen_integ_push_from(integrator *in, int i0) {
   int i;
-  for (i = in->nmin; i >= 0; i--)      /* the stack pops the first first */
+  for (i = in->nmin; i >= i0; i--)     /* the stack pops the first first */
     push(in, arclen_first_from(in, i), arclen_first_to(in, i), 0);
+}
+
+void arclen_integ_push_initial(integrator *in) {
+  arclen_integ_push_from(in, 0);
 }
 
 /* sum plus a first piece that no order up to NMAX meets, cut on the
@@ -265,7 +282,7 @@ void arclen_integ_push_initial(integrator *in) {
 static double integrate_cut(integrator *in, const span *s, double sum) {
   double pa, pbound, piece;
   in->stack[in->top++] = *s;
-  while (arclen_integ_next_piece(in, &pa, &pbound, &piece, NULL)) sum += piece;
+  while (arclen_integ_next_piece(in, HUGE_VAL, &pa, &pbound, &piece, NULL)) sum += piece;
   return sum;
 }
 

@@ -121,6 +121,7 @@ typedef struct integrator {
   double lgoal;               /* log2(2 rtol len_lower / (width lead 4/pi)) */
   double lead_log;                 /* log2(lead 4/pi), rounded up */
   double mins[ARCLEN_CUT_PIECES - 1];  /* feet of near branch points */
+  double chords[ARCLEN_CUT_PIECES];    /* of the first pieces: L's lower bound */
   int nmin;
   int top;
   long evals, pieces, splits;
@@ -209,12 +210,17 @@ int arclen_integ_first_orders(const integrator *in, double *c, double *half_widt
 void arclen_integ_first_pieces(const integrator *in, double *c, double *half_width);
 int arclen_integ_orders_of(const integrator *in, int i0, int i1, const double *c,
                            const double *half_width, int *n);
-/* The first pieces onto the stack; then next_piece pops them in order. */
+/* The first pieces onto the stack (from piece i0 on); then next_piece
+** pops them in order. */
 void arclen_integ_push_initial(integrator *in);
+void arclen_integ_push_from(integrator *in, int i0);
 /* The next accepted piece [*from, *to] in increasing t, its length and
-** rule (rule may be NULL); 0 when none is left. */
-int arclen_integ_next_piece(integrator *in, double *from, double *to,
-                            double *len, const arclen_gauss_rule **rule);
+** rule (rule may be NULL); 0 when none is left.  A piece whose chord
+** reaches past open_below (a distance from its start; HUGE_VAL: never)
+** is returned open, its length HUGE_VAL: not taken. */
+int arclen_integ_next_piece(integrator *in, double open_below, double *from,
+                            double *to, double *len,
+                            const arclen_gauss_rule **rule);
 /* The whole integral over the range set up by arclen_integ_start. */
 double arclen_integ_integrate(integrator *in);
 /* The argument check of the gauss entry points (an ARCLEN_ code). */

@@ -234,9 +234,13 @@ typedef struct known {
 /* The search inside an accepted piece [a, b] of length plen with rule r:
 ** the bracket of the sweep, lo (s <= the goal) and hi (s above it, or the
 ** piece's end), sqrt(lead2) for cauchy_near, and an order taken ahead
-** (eval_at, solve_goal) with the range and share it holds for. */
+** (eval_at, solve_goal) with the range and share it holds for.  An open
+** piece has not taken its length (plen = HUGE_VAL: the chord showed that
+** it holds every distance left, sweep()); its end's s is then unknown,
+** each s is taken from lo, and the Hermite guess takes a rough length
+** rough. */
 typedef struct piece_search {
-  double a, b, plen, sqlead;
+  double a, b, plen, rough, sqlead;
   const arclen_gauss_rule *r;
   known lo, hi;
   double pre_x, pre_y, pre_share;  /* stadium_order's pre_n holds there */
@@ -251,11 +255,21 @@ static void set_known(known *k, double t, double s) {
   k->slopes = 0;
 }
 
+/* The rule of an open piece's rough length: enough for the Hermite
+** guess, whose own error is ~1% of the piece. */
+#define ROUGH_ORDER 4
+
 static void search_piece(integrator *in, piece_search *p, double a, double b,
                          double plen, const arclen_gauss_rule *r) {
   p->a = a;
   p->b = b;
   p->plen = plen;
+  p->rough = plen;
+  if (plen == HUGE_VAL) {
+    p->rough = arclen_apply_rule(&in->h, arclen_rule_at_least(ROUGH_ORDER),
+                                 a + (b - a) / 2, (b - a) / 2);
+    in->evals += ROUGH_ORDER;
+  }
   p->r = r;
   p->sqlead = sqrt(in->br.lead2);
   p->pre_n = 0;
@@ -292,7 +306,7 @@ static void eval_at(integrator *in, piece_search *p, double t,
                     double share, known *k) {
   double e, x = p->lo.t, y = t, sign = 1;
   int n;
-  if (t - p->lo.t > p->hi.t - t) {
+  if (t - p->lo.t > p->hi.t - t && p->hi.s < HUGE_VAL) {
     x = t;
     y = p->hi.t;
     sign = -1;
@@ -385,7 +399,7 @@ static double refine_guess(integrator *in, const piece_search *p, double t,
                            double goal) {
   double sg, f, lo = p->lo.t, hi = p->hi.t;
   const arclen_gauss_rule *r = arclen_rule_at_least(refine_order(p->r->n));
-  if (t - lo <= hi - t)
+  if (t - lo <= hi - t || p->hi.s == HUGE_VAL)
     sg = (p->lo.s - goal) + p->lo.sc +
          arclen_apply_rule(&in->h, r, lo + (t - lo) / 2, (t - lo) / 2);
   else
@@ -429,8 +443,10 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
     }
   }
   if (!(t > p->lo.t && t < p->hi.t)) {
-    double ds = p->hi.s - p->lo.s + (p->hi.sc - p->lo.sc);
+    double ds = p->hi.s == HUGE_VAL ? p->rough - p->lo.s - p->lo.sc
+                                    : p->hi.s - p->lo.s + (p->hi.sc - p->lo.sc);
     double lo, hi, margin;
+    int from_lo;
     t = hermite_guess(p->lo.t, p->hi.t, speed_of(in, &p->lo),
                       speed_of(in, &p->hi), ds,
                       goal - p->lo.s - p->lo.sc);
@@ -441,8 +457,9 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
     lo = p->lo.t;
     hi = p->hi.t;
     margin = (hi - lo) / 32;
-    p->pre_x = t - lo <= hi - t ? lo : fmax(t - margin, lo);
-    p->pre_y = t - lo <= hi - t ? fmin(t + margin, hi) : hi;
+    from_lo = t - lo <= hi - t || p->hi.s == HUGE_VAL;
+    p->pre_x = from_lo ? lo : fmax(t - margin, lo);
+    p->pre_y = from_lo ? fmin(t + margin, hi) : hi;
     p->pre_share = share;
     p->pre_n = stadium_order(in, p->pre_x + (p->pre_y - p->pre_x) / 2,
                              (p->pre_y - p->pre_x) / 2, share);
@@ -458,43 +475,80 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
 #define TIME_FOOTCUT 0.2
 
 /* The pieces of the integral in increasing t: the first pieces with their
-** orders straight from the branch points when those are to be had (all
-** of them together, as the length takes them: their chains of square
-** roots and logs run side by side, which beats leaving the later pieces'
-** for when a distance lies past the first, doc/benchmarks.md), else the
-** integrator's stack, whose pieces and rules are the same
-** (spec/fastpath_spec.lua), so that the answer does not depend on which
-** path gave them. */
+** orders straight from the branch points when those are to be had (taken
+** together, as the length takes them: their chains of square roots and
+** logs run side by side, doc/benchmarks.md), else the integrator's stack,
+** whose pieces and rules are the same (spec/fastpath_spec.lua), so that
+** the answer does not depend on which path gave them.  Only the pieces
+** that the chords show to hold the last distance take their orders at
+** the start (a chord is shorter than its arc); the rest are taken when
+** reached, and when their orders are not to be had, the stack takes over
+** from there. */
 typedef struct piece_walk {
-  int fast, k;
+  int fast, k, have;
   double c[ARCLEN_CUT_PIECES], half_width[ARCLEN_CUT_PIECES];
   int n[ARCLEN_CUT_PIECES];
 } piece_walk;
 
-static void walk_start(integrator *in, piece_walk *w) {
+/* The first pieces whose chords reach past the distance s (scaled): the
+** pieces that certainly hold it, and all before (every one when the
+** chords fall short).  The margin covers the chords' rounding. */
+static int pieces_reaching(const integrator *in, double s) {
+  double sum = 0;
+  int i;
+  for (i = 0; i < in->nmin; i++) {
+    sum += in->chords[i];
+    if (s < sum * (1 - 0x1p-40)) return i + 1;
+  }
+  return in->nmin + 1;
+}
+
+static void walk_start(integrator *in, piece_walk *w, double s_last) {
   w->k = 0;
-  w->fast = !in->want_err && arclen_integ_first_orders(in, w->c, w->half_width, w->n);
+  w->fast = 0;
+  if (!in->want_err) {
+    arclen_integ_first_pieces(in, w->c, w->half_width);
+    w->have = pieces_reaching(in, s_last);
+    w->fast = arclen_integ_orders_of(in, 0, w->have, w->c, w->half_width, w->n);
+  }
   if (!w->fast) {
     arclen_integ_prepare_bounds(in);
     arclen_integ_push_initial(in);
   }
 }
 
-static int walk_next(integrator *in, piece_walk *w, double *a, double *b,
-                     double *len, const arclen_gauss_rule **r, int *last) {
+/* The next piece [*a, *b] with its rule and length *len; a piece whose
+** chord shows that it holds the distance open_below from its start
+** (scaled) is open, *len = HUGE_VAL: the sweep then needs neither its
+** length nor the pieces after it.  The same rule on both paths. */
+static int walk_next(integrator *in, piece_walk *w, double open_below,
+                     double *a, double *b, double *len,
+                     const arclen_gauss_rule **r, int *last) {
+  if (w->fast && w->k == w->have && w->k <= in->nmin) {
+    w->have = in->nmin + 1;            /* a distance lies past the chords */
+    if (!arclen_integ_orders_of(in, w->k, w->have, w->c, w->half_width, w->n)) {
+      w->fast = 0;                     /* the stack from piece k on */
+      arclen_integ_prepare_bounds(in);
+      arclen_integ_push_from(in, w->k);
+    }
+  }
   if (w->fast) {
     if (w->k > in->nmin) return 0;
     *r = arclen_rule_at_least(w->n[w->k]);
     *a = arclen_first_from(in, w->k);
     *b = arclen_first_to(in, w->k);
     *last = w->k == in->nmin;
-    *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->half_width[w->k]);
-    in->evals += (*r)->n;
-    in->pieces++;
+    if (open_below < in->chords[w->k] * (1 - 0x1p-40)) {
+      *len = HUGE_VAL;
+    } else {
+      *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->half_width[w->k]);
+      in->evals += (*r)->n;
+      in->pieces++;
+    }
     w->k++;
     return 1;
   }
-  if (!arclen_integ_next_piece(in, a, b, len, r)) return 0;
+  if (!arclen_integ_next_piece(in, open_below, a, b, len, r)) return 0;
   *last = in->top == 0;
   return 1;
 }
@@ -529,10 +583,18 @@ static void sweep(const double *c, int dim, const double *s, long n,
     return;                            /* a point: every s > 0 is past it */
   }
   in.want_err = info != NULL;
-  walk_start(&in, &w);
+  walk_start(&in, &w, arclen_times_pow2(s[n - 1], -in.h.exp));
   tol = in.rtol * in.len_lower;
-  while (i < n && !last && walk_next(&in, &w, &pa, &pb, &plen, &r, &last)) {
-    m = goals_in_piece(s, i, n, -in.h.exp, cum, plen, last);
+  while (i < n && !last) {
+    if (!walk_next(&in, &w, arclen_times_pow2(s[n - 1], -in.h.exp) - cum,
+                   &pa, &pb, &plen, &r, &last))
+      break;
+    if (plen == HUGE_VAL) {            /* every distance left lies here */
+      m = n - i;
+      last = 1;
+    } else {
+      m = goals_in_piece(s, i, n, -in.h.exp, cum, plen, last);
+    }
     if (m > 0) {
       double share = tol / (double)m / 2;
       search_piece(&in, &p, pa, pb, plen, r);
