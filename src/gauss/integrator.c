@@ -223,9 +223,9 @@ static double accept(integrator *in, const span *s,
 /* Pop the next piece (in increasing t) and integrate it.  A piece is cut
 ** (cut_point) when no order up to NMAX meets its share of the tolerance.
 ** Returns 0 when no piece is left; else the accepted piece [*from, *to]
-** and its length, or HUGE_VAL for a piece with its order whose chord
-** reaches past open_below (the caller needs no length of it; HUGE_VAL:
-** never). */
+** and its length; or, before its rule or any cut, a piece whose chord
+** reaches past open_below, open: *len = HUGE_VAL and *rule = NULL (the
+** caller needs neither; open_below = HUGE_VAL: never). */
 int arclen_integ_next_piece(integrator *in, double open_below, double *from,
                             double *to, double *len,
                             const arclen_gauss_rule **rule) {
@@ -233,7 +233,15 @@ int arclen_integ_next_piece(integrator *in, double open_below, double *from,
     const span *s = &in->stack[--in->top];
     double a = s->a, b = s->b, err;
     int depth = s->depth;
-    const arclen_gauss_rule *r = span_rule(in, s, &err);
+    const arclen_gauss_rule *r;
+    if (open_below < arclen_hodo_chord(&in->h, a, b) * (1 - 0x1p-40)) {
+      *len = HUGE_VAL;
+      *from = a;
+      *to = b;
+      if (rule) *rule = NULL;
+      return 1;
+    }
+    r = span_rule(in, s, &err);
     if (r == NULL && depth < MAXDEPTH && in->splits < MAXSPLITS) {
       double cut = cut_point(in, a, b);
       if (cut > a && cut < b) {        /* s is overwritten from here on */
@@ -242,14 +250,6 @@ int arclen_integ_next_piece(integrator *in, double open_below, double *from,
         push(in, a, cut, depth + 1);
         continue;
       }
-    }
-    if (r != NULL &&
-        open_below < arclen_hodo_chord(&in->h, a, b) * (1 - 0x1p-40)) {
-      *len = HUGE_VAL;
-      *from = a;
-      *to = b;
-      if (rule) *rule = r;
-      return 1;
     }
     if (r == NULL) {          /* bisection floor: a piece of ~1e-18 width */
       piece_bound ebound;

@@ -217,7 +217,8 @@ void arclen_integ_push_from(integrator *in, int i0);
 /* The next accepted piece [*from, *to] in increasing t, its length and
 ** rule (rule may be NULL); 0 when none is left.  A piece whose chord
 ** reaches past open_below (a distance from its start; HUGE_VAL: never)
-** is returned open, its length HUGE_VAL: not taken. */
+** is returned open, before its rule or any cut: length HUGE_VAL, rule
+** NULL, neither taken. */
 int arclen_integ_next_piece(integrator *in, double open_below, double *from,
                             double *to, double *len,
                             const arclen_gauss_rule **rule);

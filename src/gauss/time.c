@@ -163,24 +163,21 @@ static int stadium_order(const integrator *in, double c, double h,
   return nn <= 2 ? 2 : nn < ARCLEN_GAUSS_MAX ? (int)ceil(nn) : 0;
 }
 
-/* The integral over [x, y] inside an accepted piece to within target
-** (scaled units).  Its order n when given (stadium_order's for a range
-** that holds it), else from its own distance to the branch points
+/* The order for [x, y] inside the piece [pa, pb] to within target
+** (scaled units) from [x, y]'s own distance to the branch points
 ** (stadium_order); where that fails (a root too near), the piece's
-** Bernstein ellipse (ebound, half-width hp) holds
-** the disc of radius r = hp (a_semi - 1) about every point of the piece
-** (disc_radius), so a short [x, y] of half-width h has the
-** ellipse of semi-minor axis r inside it, rho = r/h + sqrt(1 + (r/h)^2),
-** with |f| <= M there: the ellipse bound (integrator.h's head) at that
-** rho sets its order, for a few operations.  A longer one takes its own
-** branch-cut bound, or the piece's rule r when that is not at hand. */
-static double sub_integral(integrator *in, double x, double y, double target,
-                           double pa, double pb, const arclen_gauss_rule *r,
-                           int n) {
+** Bernstein ellipse (ebound, half-width hp) holds the disc of radius r =
+** hp (a_semi - 1) about every point of the piece (disc_radius), so a
+** short [x, y] of half-width h has the ellipse of semi-minor axis r inside
+** it, rho = r/h + sqrt(1 + (r/h)^2), with |f| <= M there: the ellipse
+** bound (integrator.h's head) at that rho sets its order, for a few
+** operations.  A longer one takes its own branch-cut bound.  0: no order
+** up to the tables' is to be had. */
+static int sub_order(integrator *in, double x, double y, double target,
+                     double pa, double pb) {
   double c = x + (y - x) / 2, h = (y - x) / 2, hp = (pb - pa) / 2, rad = 0;
   piece_bound eb, *ebound = &eb;
-  if (!(h > 0)) return 0;
-  if (!n) n = stadium_order(in, c, h, target);
+  int n = stadium_order(in, c, h, target);
   if (!n) {
     arclen_bound_piece(&in->br, pa + hp, hp, ebound);
     rad = disc_radius(ebound, hp);
@@ -208,7 +205,32 @@ static double sub_integral(integrator *in, double x, double y, double target,
     arclen_cut_bound(&in->cc, c, h, &cp);
     n = arclen_cut_order(&in->cc, &cp, lg, ARCLEN_GAUSS_MAX, NULL);
   }
-  if (n) r = arclen_rule_at_least(n);
+  return n;
+}
+
+/* The integral over [x, y] inside the piece [pa, pb] to within target:
+** by the order n when given (stadium_order's for a range that holds it),
+** else sub_order's; where no order is to be had, the piece's rule r, or
+** in an open piece (r NULL, no rule of its own) the two halves, each to
+** half the target (a graded cut towards the root that defeats the
+** bounds; the integrator's caps: MAXDEPTH levels, MAXSPLITS halvings,
+** then its floor rule). */
+static double sub_integral(integrator *in, double x, double y, double target,
+                           double pa, double pb, const arclen_gauss_rule *r,
+                           int n, int depth) {
+  double c = x + (y - x) / 2, h = (y - x) / 2;
+  if (!(h > 0)) return 0;
+  if (!n) n = sub_order(in, x, y, target, pa, pb);
+  if (n) {
+    r = arclen_rule_at_least(n);
+  } else if (!r) {
+    if (depth < MAXDEPTH && in->splits < MAXSPLITS) {
+      in->splits++;
+      return sub_integral(in, x, c, target / 2, pa, pb, NULL, 0, depth + 1) +
+             sub_integral(in, c, y, target / 2, pa, pb, NULL, 0, depth + 1);
+    }
+    r = arclen_rule_at_least(FLOOR_ORDER);
+  }
   in->evals += r->n;
   return arclen_apply_rule(&in->h, r, c, h);
 }
@@ -323,7 +345,7 @@ static void eval_at(integrator *in, piece_search *p, double t,
     n = 0;
   }
   two_sum(sign < 0 ? p->hi.s : p->lo.s,
-          sign * sub_integral(in, x, y, share, p->a, p->b, p->r, n), &k->s, &e);
+          sign * sub_integral(in, x, y, share, p->a, p->b, p->r, n, 0), &k->s, &e);
   k->sc = (sign < 0 ? p->hi.sc : p->lo.sc) + e;
   k->t = t;
   k->f = -1;
@@ -382,6 +404,11 @@ static double newton_search(integrator *in, piece_search *p, double t,
   return t;
 }
 
+/* An open piece has no order of its own: the refined guess takes a third
+** of the first certified integral's (taken just before it), or of this
+** when that has none. */
+#define OPEN_REFINE_BASE 24
+
 /* The refined guess's order: a third of the piece's, for about a third
 ** of its digits (the certificates then need the guess within ~1e-5 of the
 ** piece; fewer points left more searches a second certified integral);
@@ -398,7 +425,8 @@ static int refine_order(int n) {
 static double refine_guess(integrator *in, const piece_search *p, double t,
                            double goal) {
   double sg, f, lo = p->lo.t, hi = p->hi.t;
-  const arclen_gauss_rule *r = arclen_rule_at_least(refine_order(p->r->n));
+  const arclen_gauss_rule *r = arclen_rule_at_least(refine_order(
+      p->r ? p->r->n : p->pre_n ? p->pre_n : OPEN_REFINE_BASE));
   if (t - lo <= hi - t || p->hi.s == HUGE_VAL)
     sg = (p->lo.s - goal) + p->lo.sc +
          arclen_apply_rule(&in->h, r, lo + (t - lo) / 2, (t - lo) / 2);
@@ -508,8 +536,10 @@ static void walk_start(integrator *in, piece_walk *w, double s_last) {
   w->fast = 0;
   if (!in->want_err) {
     arclen_integ_first_pieces(in, w->c, w->half_width);
-    w->have = pieces_reaching(in, s_last);
-    w->fast = arclen_integ_orders_of(in, 0, w->have, w->c, w->half_width, w->n);
+    /* not the last: it may be open, and then needs no order */
+    w->have = pieces_reaching(in, s_last) - 1;
+    w->fast = w->have == 0 ||
+              arclen_integ_orders_of(in, 0, w->have, w->c, w->half_width, w->n);
   }
   if (!w->fast) {
     arclen_integ_prepare_bounds(in);
@@ -519,13 +549,24 @@ static void walk_start(integrator *in, piece_walk *w, double s_last) {
 
 /* The next piece [*a, *b] with its rule and length *len; a piece whose
 ** chord shows that it holds the distance open_below from its start
-** (scaled) is open, *len = HUGE_VAL: the sweep then needs neither its
-** length nor the pieces after it.  The same rule on both paths. */
+** (scaled) is open, before its order or any cut (*len = HUGE_VAL, *r =
+** NULL): the sweep then needs neither its length nor its rule nor the
+** pieces after it.  The same rule on both paths. */
 static int walk_next(integrator *in, piece_walk *w, double open_below,
                      double *a, double *b, double *len,
                      const arclen_gauss_rule **r, int *last) {
+  if (w->fast && w->k <= in->nmin &&
+      open_below < in->chords[w->k] * (1 - 0x1p-40)) {
+    *a = arclen_first_from(in, w->k);
+    *b = arclen_first_to(in, w->k);
+    *last = w->k == in->nmin;
+    *r = NULL;
+    *len = HUGE_VAL;
+    w->k++;
+    return 1;
+  }
   if (w->fast && w->k == w->have && w->k <= in->nmin) {
-    w->have = in->nmin + 1;            /* a distance lies past the chords */
+    w->have = in->nmin + 1;            /* its order, and the rest's */
     if (!arclen_integ_orders_of(in, w->k, w->have, w->c, w->half_width, w->n)) {
       w->fast = 0;                     /* the stack from piece k on */
       arclen_integ_prepare_bounds(in);
@@ -538,13 +579,9 @@ static int walk_next(integrator *in, piece_walk *w, double open_below,
     *a = arclen_first_from(in, w->k);
     *b = arclen_first_to(in, w->k);
     *last = w->k == in->nmin;
-    if (open_below < in->chords[w->k] * (1 - 0x1p-40)) {
-      *len = HUGE_VAL;
-    } else {
-      *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->half_width[w->k]);
-      in->evals += (*r)->n;
-      in->pieces++;
-    }
+    *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->half_width[w->k]);
+    in->evals += (*r)->n;
+    in->pieces++;
     w->k++;
     return 1;
   }
