@@ -404,10 +404,11 @@ static double newton_search(integrator *in, piece_search *p, double t,
   return t;
 }
 
-/* An open piece has no order of its own: the refined guess takes a third
-** of the first certified integral's (taken just before it), or of this
-** when that has none. */
-#define OPEN_REFINE_BASE 24
+/* An open piece has no order of its own: the refined guess takes this
+** many points, not a share of the first certified integral's order, which
+** would put that order's bound on the guess's chain (doc/benchmarks.md:
+** 4 to 16 points tried). */
+#define OPEN_REFINE_ORDER 8
 
 /* The refined guess's order: a third of the piece's, for about a third
 ** of its digits (the certificates then need the guess within ~1e-5 of the
@@ -425,8 +426,8 @@ static int refine_order(int n) {
 static double refine_guess(integrator *in, const piece_search *p, double t,
                            double goal) {
   double sg, f, lo = p->lo.t, hi = p->hi.t;
-  const arclen_gauss_rule *r = arclen_rule_at_least(refine_order(
-      p->r ? p->r->n : p->pre_n ? p->pre_n : OPEN_REFINE_BASE));
+  const arclen_gauss_rule *r =
+      arclen_rule_at_least(p->r ? refine_order(p->r->n) : OPEN_REFINE_ORDER);
   if (t - lo <= hi - t || p->hi.s == HUGE_VAL)
     sg = (p->lo.s - goal) + p->lo.sc +
          arclen_apply_rule(&in->h, r, lo + (t - lo) / 2, (t - lo) / 2);
@@ -454,6 +455,10 @@ static double refine_guess(integrator *in, const piece_search *p, double t,
 ** within this share of the piece; a longer one takes the Hermite guess. */
 #define REVERSION_REACH 8
 
+/* An open piece's first certified integral reaches this share of the
+** piece past the length's fraction (doc/benchmarks.md: 1/2 to 1/8 tried). */
+#define OPEN_WINDOW 0.25
+
 static double solve_goal(integrator *in, piece_search *p, double goal,
                          double tol, double share) {
   double t = -1;
@@ -471,23 +476,30 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
     }
   }
   if (!(t > p->lo.t && t < p->hi.t)) {
-    double ds = p->hi.s == HUGE_VAL ? p->rough - p->lo.s - p->lo.sc
-                                    : p->hi.s - p->lo.s + (p->hi.sc - p->lo.sc);
-    double lo, hi, margin;
-    int from_lo;
-    t = hermite_guess(p->lo.t, p->hi.t, speed_of(in, &p->lo),
-                      speed_of(in, &p->hi), ds,
-                      goal - p->lo.s - p->lo.sc);
-    /* the first certified integral's order, for the bracket's part from
-    ** its nearer end to a 32nd of it past the guess (the refined guess
-    ** moves it by less nine times in ten; else eval_at takes its own),
-    ** taken beside the refined guess, not after it */
-    lo = p->lo.t;
-    hi = p->hi.t;
-    margin = (hi - lo) / 32;
-    from_lo = t - lo <= hi - t || p->hi.s == HUGE_VAL;
-    p->pre_x = from_lo ? lo : fmax(t - margin, lo);
-    p->pre_y = from_lo ? fmin(t + margin, hi) : hi;
+    double lo = p->lo.t, hi = p->hi.t, gap = goal - p->lo.s - p->lo.sc;
+    int open = p->hi.s == HUGE_VAL;
+    double ds = open ? p->rough - p->lo.s - p->lo.sc
+                     : p->hi.s - p->lo.s + (p->hi.sc - p->lo.sc);
+    if (open && !(ds > gap)) ds = gap * (1 + 1.0 / 16);  /* rough fell short */
+    t = hermite_guess(lo, hi, speed_of(in, &p->lo), speed_of(in, &p->hi), ds,
+                      gap);
+    /* the first certified integral's order, taken beside the refined
+    ** guess, not after it: for the bracket's part from its nearer end to a
+    ** 32nd of it past the guess (the refined guess moves it by less nine
+    ** times in ten; else eval_at takes its own); in an open piece from lo
+    ** to OPEN_WINDOW of the bracket past the length's fraction, known
+    ** before the Hermite guess, whose chain it then runs beside */
+    if (open) {
+      double u = gap / ds;
+      p->pre_x = lo;
+      p->pre_y = fmin(lo + (hi - lo) * (u + OPEN_WINDOW), hi);
+    } else if (t - lo <= hi - t) {
+      p->pre_x = lo;
+      p->pre_y = fmin(t + (hi - lo) / 32, hi);
+    } else {
+      p->pre_x = fmax(t - (hi - lo) / 32, lo);
+      p->pre_y = hi;
+    }
     p->pre_share = share;
     p->pre_n = stadium_order(in, p->pre_x + (p->pre_y - p->pre_x) / 2,
                              (p->pre_y - p->pre_x) / 2, share);
