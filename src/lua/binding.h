@@ -55,6 +55,8 @@ const char *arclenL_optkinds(lua_State *L, int arg, long n);
 void arclenL_packedsegment(lua_State *L, int arg, const char *packed,
                            long k, int kind, int dim, double *seg);
 
+/* Push a new array of the n numbers v[0..n-1]. */
+void arclenL_pushnumbers(lua_State *L, const double *v, int n);
 /* Push an info table {evals=, pieces=, depth=, err=, branch=, calls=}. */
 void arclenL_pushinfo(lua_State *L, const arclen_info *info);
 /* Raise a Lua error for a C error code, naming the function's argument. */

@@ -140,15 +140,6 @@ static int l_time(lua_State *L) {
   return 1;
 }
 
-static void push_numbers(lua_State *L, const double *v, int n) {
-  int i;
-  lua_createtable(L, n, 0);
-  for (i = 0; i < n; i++) {
-    lua_pushnumber(L, v[i]);
-    lua_rawseti(L, -2, i + 1);
-  }
-}
-
 /* fit:spans() -> { {t0 =, t1 =, y = {y0, y1, y2, y3}, monotone =}, ... } */
 static int l_spans(lua_State *L) {
   arclen_fit *f = check_fit(L, 1);
@@ -161,7 +152,7 @@ static int l_spans(lua_State *L) {
     lua_setfield(L, -2, "t0");
     lua_pushnumber(L, sp->t1);
     lua_setfield(L, -2, "t1");
-    push_numbers(L, sp->y, 4);
+    arclenL_pushnumbers(L, sp->y, 4);
     lua_setfield(L, -2, "y");
     lua_pushboolean(L, arclen_fit_span_monotone(sp));
     lua_setfield(L, -2, "monotone");
@@ -235,8 +226,8 @@ static int l_index(lua_State *L) {
   else if (strcmp(key, "tol") == 0) lua_pushnumber(L, f->tol);
   else if (strcmp(key, "dim") == 0) lua_pushnumber(L, f->dim);
   else if (strcmp(key, "nspans") == 0) lua_pushnumber(L, f->nspans);
-  else if (strcmp(key, "critical") == 0) push_numbers(L, f->crit, f->ncrit);
-  else if (strcmp(key, "curve") == 0) push_numbers(L, f->c, 4 * f->dim);
+  else if (strcmp(key, "critical") == 0) arclenL_pushnumbers(L, f->crit, f->ncrit);
+  else if (strcmp(key, "curve") == 0) arclenL_pushnumbers(L, f->c, 4 * f->dim);
   else lua_pushnil(L);
   return 1;
 }
@@ -249,8 +240,8 @@ static int l_gauss_legendre(lua_State *L) {
   n = opt_int(L, 1, "n", 1, ARCLEN_GL_MAXN);
   lua_pop(L, 1);
   arclen_gauss_legendre(n, x, w);
-  push_numbers(L, x, n);
-  push_numbers(L, w, n);
+  arclenL_pushnumbers(L, x, n);
+  arclenL_pushnumbers(L, w, n);
   return 2;
 }
 

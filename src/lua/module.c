@@ -295,11 +295,11 @@ static double check_t(lua_State *L, int arg) {
   return t;
 }
 
-static void push_curve(lua_State *L, const double *c, int dim) {
+void arclenL_pushnumbers(lua_State *L, const double *v, int n) {
   int i;
-  lua_createtable(L, 4 * dim, 0);
-  for (i = 0; i < 4 * dim; i++) {
-    lua_pushnumber(L, c[i]);
+  lua_createtable(L, n, 0);
+  for (i = 0; i < n; i++) {
+    lua_pushnumber(L, v[i]);
     lua_rawseti(L, -2, i + 1);
   }
 }
@@ -327,8 +327,8 @@ static int l_split(lua_State *L) {
   double c[12], l[12], r[12];
   int next, dim = check_curve_args(L, 1, c, &next);
   arclen_split(c, dim, check_t(L, next), l, r);
-  push_curve(L, l, dim);
-  push_curve(L, r, dim);
+  arclenL_pushnumbers(L, l, 4 * dim);
+  arclenL_pushnumbers(L, r, 4 * dim);
   return 2;
 }
 
@@ -339,20 +339,16 @@ static int l_subcurve(lua_State *L) {
   t0 = check_t(L, next);
   t1 = check_t(L, next + 1);
   arclen_subcurve(c, dim, t0, t1, out);
-  push_curve(L, out, dim);
+  arclenL_pushnumbers(L, out, 4 * dim);
   return 1;
 }
 
 /* arclen.critical(c) -> {t...}: the speed's critical points in (0, 1) */
 static int l_critical(lua_State *L) {
   double c[12], r[3];
-  int next, dim = check_curve_args(L, 0, c, &next), n, i;
+  int next, dim = check_curve_args(L, 0, c, &next), n;
   n = arclen_critical_points(c, dim, r);
-  lua_createtable(L, n, 0);
-  for (i = 0; i < n; i++) {
-    lua_pushnumber(L, r[i]);
-    lua_rawseti(L, -2, i + 1);
-  }
+  arclenL_pushnumbers(L, r, n);
   return 1;
 }
 

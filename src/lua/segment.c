@@ -162,15 +162,6 @@ static int l_segment_derivative(lua_State *L) {
   return dim;
 }
 
-static void push_numbers(lua_State *L, const double *v, int n) {
-  int i;
-  lua_createtable(L, n, 0);
-  for (i = 0; i < n; i++) {
-    lua_pushnumber(L, v[i]);
-    lua_rawseti(L, -2, i + 1);
-  }
-}
-
 /* arclen.segment_sub(kind, seg, t0, t1) -> the piece, a new table */
 static int l_segment_sub(lua_State *L) {
   double seg[ARCLEN_SEG_MAXN], out[ARCLEN_SEG_MAXN], t0, t1;
@@ -178,7 +169,7 @@ static int l_segment_sub(lua_State *L) {
   t0 = check_t(L, 3, "t0");
   t1 = check_t(L, 4, "t1");
   arclen_segment_sub(kind, dim, seg, t0, t1, out);
-  push_numbers(L, out, arclen_segment_count(kind, dim));
+  arclenL_pushnumbers(L, out, arclen_segment_count(kind, dim));
   return 1;
 }
 
@@ -205,7 +196,7 @@ static int l_segments(lua_State *L) {
     int kind = kinds ? arclen_segment_kind_of_letter((unsigned char)kinds[k])
                      : ARCLEN_SEG_CUBIC;
     arclenL_packedsegment(L, 1, packed, k, kind, dim, seg);
-    push_numbers(L, seg, arclen_segment_count(kind, dim));
+    arclenL_pushnumbers(L, seg, arclen_segment_count(kind, dim));
     lua_rawseti(L, -2, (int)k + 1);
   }
   return 1;
