@@ -24,6 +24,9 @@ import sys
 
 import mpmath as mp
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from conic_speed import ConicSpeed  # noqa: E402  (shared with ref_conic_thin)
+
 mp.mp.dps = 30
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "..", "spec", "data")
@@ -226,57 +229,14 @@ def conic_length(p, w):
 def half_length(p, w, dps, ratio):
     """int_0^(1/2) of the speed of eq. (1) by Gauss-Legendre on panels
     clustered geometrically (factor `ratio`) about every singularity of the
-    speed |P(t)| / D(t)^2 -- the complex roots of |P|^2, P(t)/2 = w (1-t)^2
-    a + w t^2 c + t (1-t) (a + c) (a = p1 - p0, c = p2 - p1), and those of
-    D(t) = 1 + 2 (w - 1) t (1 - t) -- so that each panel is smooth on its
-    own scale however close to t = 0 the features are (a leg of 1e-300
-    beside O(1) legs, w = 1e300).  The legs are formed exactly from the
-    doubles, whatever their exponents."""
-    with mp.workprec(2300):
-        P = [[mp.mpf(x) for x in q] for q in p]
-        a = [P[1][k] - P[0][k] for k in range(2)]
-        c = [P[2][k] - P[1][k] for k in range(2)]
+    speed (tools/conic_speed.py), so that each panel is smooth on its own
+    scale however close to t = 0 the features are (a leg of 1e-300 beside
+    O(1) legs, w = 1e300); the panel points are placed at 3 dps digits."""
+    cs = ConicSpeed(p, w, dps)
     with mp.workdps(dps):
-        a = [+x for x in a]
-        c = [+x for x in c]
-        w = mp.mpf(w)
-        C = [w * a[k] for k in range(2)]
-        B = [a[k] + c[k] - 2 * w * a[k] for k in range(2)]
-        A = [(w - 1) * (a[k] + c[k]) for k in range(2)]
-        quart = [sum(A[k] ** 2 for k in range(2)),
-                 sum(2 * A[k] * B[k] for k in range(2)),
-                 sum(B[k] ** 2 + 2 * A[k] * C[k] for k in range(2)),
-                 sum(2 * B[k] * C[k] for k in range(2)),
-                 sum(C[k] ** 2 for k in range(2))]
-        sing = []
         with mp.workdps(3 * dps):
-            while quart and quart[0] == 0:
-                quart = quart[1:]
-            if len(quart) > 1:
-                sing += mp.polyroots(quart, maxsteps=4000, extraprec=4000)
-            if w != 1:
-                sing += mp.polyroots([-2 * (w - 1), 2 * (w - 1), 1],
-                                     maxsteps=4000, extraprec=4000)
-            half = mp.mpf(1) / 2
-            pts = {mp.mpf(0), half}
-            for z in sing:
-                re = min(max(mp.re(z), 0), half)
-                step = abs(z - re)
-                pts.add(re)
-                if step == 0:
-                    step = mp.mpf(2) ** -4000
-                while step < half:
-                    for x in (re - step, re + step):
-                        if 0 < x < half:
-                            pts.add(x)
-                    step *= ratio
-        pts = sorted(pts)
-
-        def speed(t):
-            D = 1 + 2 * (w - 1) * t * (1 - t)
-            return 2 * mp.hypot(A[0] * t * t + B[0] * t + C[0],
-                                A[1] * t * t + B[1] * t + C[1]) / (D * D)
-        return mp.quad(speed, pts, method="gauss-legendre")
+            pts = cs.panels(mp.mpf(0), mp.mpf(1) / 2, ratio)
+        return mp.quad(cs.speed, pts, method="gauss-legendre")
 
 
 def wide_length(p, w):

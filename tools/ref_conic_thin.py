@@ -26,7 +26,7 @@ Each row: the whole length L, the lengths over three sub-ranges [t0, t1]
 
 Method: int |C'(t)| dt by Gauss-Legendre on panels clustered geometrically
 about every complex singularity of the speed (the roots of |P(t)|^2 and of
-the denominator D(t), P and D as in tools/ref_conic.py's half_length), the
+the denominator D(t), P and D as in tools/conic_speed.py), the
 legs formed exactly from the doubles; each length twice, at 60 and 70
 digits with other panel ratios, the two agreeing to 1e-40 relative (else
 the script stops).  The values are written with 40 digits.  Independent of
@@ -47,6 +47,9 @@ import sys
 
 import mpmath as mp
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from conic_speed import ConicSpeed  # noqa: E402  (shared with ref_conic)
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 DATA = os.path.join(HERE, "..", "spec", "data")
 
@@ -65,64 +68,15 @@ SHORT_WIDTHS = [1e-4, 1e-7, 1e-10, 1e-13]
 SHORT_STARTS = [1e-9, 1e-3, 0.1, 0.3, 0.5, 0.7, 0.9, 0.999, None]   # None: 1 - 2h
 
 
-class Conic:
-    """The speed of (p0, p1, p2; w) from the exact legs, and the panel
-    points about its singularities for one precision."""
-
-    def __init__(self, p, w, dps):
-        self.dps = dps
-        with mp.workprec(2300):
-            P = [[mp.mpf(x) for x in q] for q in p]
-            a = [P[1][k] - P[0][k] for k in range(2)]
-            c = [P[2][k] - P[1][k] for k in range(2)]
-        with mp.workdps(dps):
-            a = [+x for x in a]
-            c = [+x for x in c]
-            w = mp.mpf(w)
-            self.w = w
-            # P(t)/2 = w (1-t)^2 a + w t^2 c + t (1-t)(a + c) = A t^2 + B t + C
-            self.C = [w * a[k] for k in range(2)]
-            self.B = [a[k] + c[k] - 2 * w * a[k] for k in range(2)]
-            self.A = [(w - 1) * (a[k] + c[k]) for k in range(2)]
-            A, B, C = self.A, self.B, self.C
-            quart = [sum(A[k] ** 2 for k in range(2)),
-                     sum(2 * A[k] * B[k] for k in range(2)),
-                     sum(B[k] ** 2 + 2 * A[k] * C[k] for k in range(2)),
-                     sum(2 * B[k] * C[k] for k in range(2)),
-                     sum(C[k] ** 2 for k in range(2))]
-            sing = []
-            with mp.workdps(3 * dps):
-                while quart and quart[0] == 0:
-                    quart = quart[1:]
-                if len(quart) > 1:
-                    sing += mp.polyroots(quart, maxsteps=4000, extraprec=4000)
-                if w != 1:
-                    sing += mp.polyroots([-2 * (w - 1), 2 * (w - 1), 1],
-                                         maxsteps=4000, extraprec=4000)
-            self.sing = sing
-
-    def speed(self, t):
-        w, A, B, C = self.w, self.A, self.B, self.C
-        D = 1 + 2 * (w - 1) * t * (1 - t)
-        return 2 * mp.hypot(A[0] * t * t + B[0] * t + C[0],
-                            A[1] * t * t + B[1] * t + C[1]) / (D * D)
+class Conic(ConicSpeed):
+    """The speed of (p0, p1, p2; w) from the exact legs and its
+    singularities for one precision (tools/conic_speed.py)."""
 
     def length(self, t0, t1, ratio):
         """int_t0^t1 of the speed, t0 < t1 (mpf)."""
         with mp.workdps(self.dps):
-            pts = {t0, t1}
-            for z in self.sing:
-                re = min(max(mp.re(z), t0), t1)
-                step = abs(z - re)
-                pts.add(re)
-                if step == 0:
-                    step = mp.mpf(2) ** -4000
-                while step < t1 - t0:
-                    for x in (re - step, re + step):
-                        if t0 < x < t1:
-                            pts.add(x)
-                    step *= ratio
-            return mp.quad(self.speed, sorted(pts), method="gauss-legendre")
+            return mp.quad(self.speed, self.panels(t0, t1, ratio),
+                           method="gauss-legendre")
 
 
 def checked_length(c60, c70, t0, t1):
