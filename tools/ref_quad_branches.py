@@ -102,13 +102,19 @@ def length(p, dim, t0, t1):
     return mp.ldexp(L, e)
 
 
-def unit_length(p, dim, t0, t1):
-    mp.mp.dps = 40
+def legs(p, dim):
+    """a = P1 - P0, c = P2 - P1, b = c - a and B = |b|^2 at the current
+    precision (the quadrature and the closed form each form their own)."""
     P = [[mp.mpf(p[i * dim + k]) for k in range(dim)] for i in range(3)]
     a = [P[1][k] - P[0][k] for k in range(dim)]
     c = [P[2][k] - P[1][k] for k in range(dim)]
     b = [c[k] - a[k] for k in range(dim)]
-    B = sum(x * x for x in b)
+    return a, c, b, sum(x * x for x in b)
+
+
+def unit_length(p, dim, t0, t1):
+    mp.mp.dps = 40
+    a, c, b, B = legs(p, dim)
     T0, T1 = mp.mpf(t0), mp.mpf(t1)
 
     def speed(t):
@@ -122,11 +128,7 @@ def unit_length(p, dim, t0, t1):
     assert err < mp.mpf(10) ** -36 * abs(L), (p, err)
     # the textbook closed form at 80 digits, as a second opinion
     mp.mp.dps = 80
-    P = [[mp.mpf(p[i * dim + k]) for k in range(dim)] for i in range(3)]
-    a = [P[1][k] - P[0][k] for k in range(dim)]
-    c = [P[2][k] - P[1][k] for k in range(dim)]
-    b = [c[k] - a[k] for k in range(dim)]
-    B = sum(x * x for x in b)
+    a, c, b, B = legs(p, dim)
     if B > 0:
         q = mp.sqrt(B)
         ab = sum(a[k] * b[k] for k in range(dim))
