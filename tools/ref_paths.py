@@ -98,11 +98,15 @@ class Reader:
         return self.i >= len(self.d)
 
 
-def parse(d):
-    """Primitives: ('line', p0, p1), ('quad', p0, q, p1), ('cubic', p0..p3),
-    ('arc', rx, ry, phi_deg, large, sweep, p0, p1)."""
+def commands(d):
+    """Each command of path data d as (C, before, after, prim): C the command
+    letter in upper case, before and after the current point around it,
+    prim its primitive -- ('line', p0, p1), ('quad', p0, q, p1),
+    ('cubic', p0..p3), ('arc', rx, ry, phi_deg, large, sweep, p0, p1) --
+    or None for M and Z (Z: after is the subpath's start).  Relative
+    coordinates and the reflected control points of S and T resolved (SVG
+    1.1 section 8.3); parse() here and ref_svg.py's vertices() read it."""
     r = Reader(d)
-    prims = []
     cur = start = (mp.mpf(0), mp.mpf(0))
     lastc = lastq = None
     cmd = None
@@ -115,24 +119,20 @@ def parse(d):
         up, rel = cmd.upper(), cmd.islower()
         ox, oy = cur if rel else (0, 0)
         newc = newq = None
+        prim = None
         if up == "Z":
-            if cur != start:
-                prims.append(("line", cur, start))
-            cur = start
+            p = start
         elif up == "M":
-            cur = start = (r.number() + ox, r.number() + oy)
+            p = start = (r.number() + ox, r.number() + oy)
         elif up == "L":
             p = (r.number() + ox, r.number() + oy)
-            prims.append(("line", cur, p))
-            cur = p
+            prim = ("line", cur, p)
         elif up == "H":
             p = (r.number() + (cur[0] if rel else 0), cur[1])
-            prims.append(("line", cur, p))
-            cur = p
+            prim = ("line", cur, p)
         elif up == "V":
             p = (cur[0], r.number() + (cur[1] if rel else 0))
-            prims.append(("line", cur, p))
-            cur = p
+            prim = ("line", cur, p)
         elif up in "CS":
             if up == "C":
                 c1 = (r.number() + ox, r.number() + oy)
@@ -140,25 +140,38 @@ def parse(d):
                 c1 = (2 * cur[0] - lastc[0], 2 * cur[1] - lastc[1]) if lastc else cur
             c2 = (r.number() + ox, r.number() + oy)
             p = (r.number() + ox, r.number() + oy)
-            prims.append(("cubic", cur, c1, c2, p))
-            newc, cur = c2, p
+            prim = ("cubic", cur, c1, c2, p)
+            newc = c2
         elif up in "QT":
             if up == "Q":
                 q = (r.number() + ox, r.number() + oy)
             else:
                 q = (2 * cur[0] - lastq[0], 2 * cur[1] - lastq[1]) if lastq else cur
             p = (r.number() + ox, r.number() + oy)
-            prims.append(("quad", cur, q, p))
-            newq, cur = q, p
+            prim = ("quad", cur, q, p)
+            newq = q
         elif up == "A":
             rx, ry, phi = r.number(), r.number(), r.number()
             fa, fs = r.flag(), r.flag()
             p = (r.number() + ox, r.number() + oy)
-            prims.append(("arc", rx, ry, phi, fa, fs, cur, p))
-            cur = p
+            prim = ("arc", rx, ry, phi, fa, fs, cur, p)
         else:
             raise ValueError(cmd)
+        yield up, cur, p, prim
+        cur = p
         lastc, lastq = newc, newq
+
+
+def parse(d):
+    """Primitives of path data d, as commands() gives them; Z draws a line
+    back to the subpath's start unless already there."""
+    prims = []
+    for up, before, after, prim in commands(d):
+        if up == "Z":
+            if before != after:
+                prims.append(("line", before, after))
+        elif prim is not None:
+            prims.append(prim)
     return prims
 
 

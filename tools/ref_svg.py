@@ -775,68 +775,27 @@ def vertices(d):
     """[(x, y, auto angle)] of path data d: each moveto and each segment's
     end (an arc, a zero-length segment or Z included), the angle bisecting
     the directions in and out (SVG 2 11.6.2)."""
-    r = ref_paths.Reader(d)
     subs = []                                       # [start, [(end, a0, a1)], closed]
-    cur = start = (mp.mpf(0), mp.mpf(0))
-    lastc = lastq = None
-    cmd, after_z = None, True
+    after_z = True
 
-    def seg(prim, end):
+    def seg(prim, begin, end):
         nonlocal after_z
         if after_z:                                 # drawing after Z: a new subpath
-            subs.append([cur, [], False])
+            subs.append([begin, [], False])
             after_z = False
         subs[-1][1].append((end, direction(prim, 0), direction(prim, 1)))
 
-    while not r.done():
-        c = r.command()
-        if c is not None:
-            cmd = c
-        elif cmd in "Mm":
-            cmd = "l" if cmd == "m" else "L"
-        up, rel = cmd.upper(), cmd.islower()
-        ox, oy = cur if rel else (0, 0)
-        newc = newq = None
+    for up, before, after, prim in ref_paths.commands(d):
         if up == "Z":
             if not after_z:
-                seg(("line", cur, start), start)
+                seg(("line", before, after), before, after)
                 subs[-1][2] = True
                 after_z = True
-            cur = start
         elif up == "M":
-            cur = start = (r.number() + ox, r.number() + oy)
-            subs.append([cur, [], False])
+            subs.append([after, [], False])
             after_z = False
-        elif up in "LHV":
-            if up == "L":
-                p = (r.number() + ox, r.number() + oy)
-            elif up == "H":
-                p = (r.number() + (cur[0] if rel else 0), cur[1])
-            else:
-                p = (cur[0], r.number() + (cur[1] if rel else 0))
-            seg(("line", cur, p), p)
-            cur = p
-        elif up in "CS":
-            c1 = (r.number() + ox, r.number() + oy) if up == "C" else \
-                (2 * cur[0] - lastc[0], 2 * cur[1] - lastc[1]) if lastc else cur
-            c2 = (r.number() + ox, r.number() + oy)
-            p = (r.number() + ox, r.number() + oy)
-            seg(("cubic", cur, c1, c2, p), p)
-            newc, cur = c2, p
-        elif up in "QT":
-            q = (r.number() + ox, r.number() + oy) if up == "Q" else \
-                (2 * cur[0] - lastq[0], 2 * cur[1] - lastq[1]) if lastq else cur
-            p = (r.number() + ox, r.number() + oy)
-            seg(("quad", cur, q, p), p)
-            newq, cur = q, p
-        else:
-            rx, ry, phi = r.number(), r.number(), r.number()
-            fa, fs = r.flag(), r.flag()
-            p = (r.number() + ox, r.number() + oy)
-            if p != cur:                            # equal ends: omitted (F.6.2)
-                seg(("arc", rx, ry, phi, fa, fs, cur, p), p)
-            cur = p
-        lastc, lastq = newc, newq
+        elif up != "A" or after != before:          # equal ends: omitted (F.6.2)
+            seg(prim, before, after)
 
     def bisect(a, b):
         if a is None:
