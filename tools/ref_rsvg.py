@@ -490,7 +490,8 @@ def measure(d, M, eps_local, clips=()):
     # cairo's fill paths come out off by up to ~1e-8 of their coordinates
     # (0.027 at 2.6e6, where the stroke of the same path is exact)
     dev = lambda q: math.sqrt(2) * (1 / 512 + eps_local * norm + 2.0 ** -26 * max(abs(q[0]), abs(q[1])))
-    total, quant, i, cur, start, first, npts, kept = 0.0, 0.0, 0, None, None, None, 0, 0
+    i, cur, start, first = 0, None, None, None
+    pieces = []                                 # point lists: [p, q] a line, [p, c1, c2, q] a cubic
     while i < len(tok):
         c = tok[i]
         i += 1
@@ -500,32 +501,27 @@ def measure(d, M, eps_local, clips=()):
             i += 2
         elif c == "L":
             q = pt(float(tok[i]), float(tok[i + 1]))
-            L, e, k = clipped([cur, q], clips, dev)
-            total += L
-            kept += k
-            quant += 2 * max(dev(cur), dev(q)) + e
+            pieces.append([cur, q])
             cur = q
             i += 2
-            npts += 1
         elif c == "C":
             v = [float(x) for x in tok[i:i + 6]]
             q = [cur, pt(v[0], v[1]), pt(v[2], v[3]), pt(v[4], v[5])]
-            L, e, k = clipped(q, clips, dev)
-            total += L
-            kept += k
-            quant += 6 * max(dev(x) for x in q) + e
+            pieces.append(q)
             cur = q[3]
             i += 6
-            npts += 3
         elif c == "Z":
-            L, e, k = clipped([cur, start], clips, dev)
-            total += L
-            kept += k
-            quant += 2 * max(dev(cur), dev(start)) + e
+            pieces.append([cur, start])
             cur = start
-            npts += 1
         else:
             raise AssertionError("unexpected path data %r" % c)
+    total, quant, npts, kept = 0.0, 0.0, 0, 0
+    for q in pieces:
+        L, e, k = clipped(q, clips, dev)
+        total += L
+        kept += k
+        quant += 2 * (len(q) - 1) * max(dev(x) for x in q) + e     # 2 d a line, 6 d a cubic
+        npts += len(q) - 1
     return total, quant, first, npts, kept
 
 
