@@ -40,13 +40,18 @@ REV_LAMS = [(0, 10, -4, 6), (0, 6, -2, 4), (0, 16, -16, 1), (-1, 7, -3, 9),
             (0, 3, -1, 1), (0, 12, -9, 2)]
 
 
-def hard2d():
-    rows = []
-
+def row_adder(rows):
+    """add(family, param, c) appends the row "family-n", n counting that
+    family's rows from 1 (the ids both files use)."""
     def add(family, param, c):
         n = sum(1 for r in rows if r[1] == family) + 1
         rows.append(("%s-%d" % (family, n), family, param, curves.fl(c)))
+    return add
 
+
+def hard2d():
+    rows = []
+    add = row_adder(rows)
     r = random.Random(2301)
     for j, lams in enumerate(REV_LAMS):
         d = curves.LINE_DIRS2[j % len(curves.LINE_DIRS2)]
@@ -87,11 +92,7 @@ DIRS3 = [(1, 0, 0), (0, 0, 1), (1, 1, 1), (0.5, -0.75, 1.25), (3, 4, 12)]
 
 def hard3d():
     rows = []
-
-    def add(family, param, c):
-        n = sum(1 for r in rows if r[1] == family) + 1
-        rows.append(("%s-%d" % (family, n), family, param, curves.fl(c)))
-
+    add = row_adder(rows)
     r = random.Random(2311)
     for j, lams in enumerate(REV_LAMS[:5]):
         o = tuple(r.randint(-8, 8) / 4 for _ in range(3))
