@@ -234,7 +234,8 @@ int arclen_integ_next_piece(integrator *in, double open_below, double *from,
     double a = s->a, b = s->b, err;
     int depth = s->depth;
     const arclen_gauss_rule *r;
-    if (open_below < arclen_hodo_chord(&in->h, a, b) * (1 - 0x1p-40)) {
+    if (open_below < HUGE_VAL &&
+        arclen_chord_holds(arclen_hodo_chord(&in->h, a, b), open_below)) {
       *len = HUGE_VAL;
       *from = a;
       *to = b;
@@ -271,10 +272,6 @@ void arclen_integ_push_from(integrator *in, int i0) {
   int i;
   for (i = in->nmin; i >= i0; i--)     /* the stack pops the first first */
     push(in, arclen_first_from(in, i), arclen_first_to(in, i), 0);
-}
-
-void arclen_integ_push_initial(integrator *in) {
-  arclen_integ_push_from(in, 0);
 }
 
 /* sum plus a first piece that no order up to NMAX meets, cut on the

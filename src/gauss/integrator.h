@@ -185,6 +185,13 @@ static inline double arclen_times_pow2(double x, int e) {
 }
 
 
+/* Whether a piece of chord `chord` holds the distance s from its start:
+** a chord is never longer than its arc, and 2^-40 of it covers its
+** rounding.  The one test of an open piece on both of time's paths. */
+static inline int arclen_chord_holds(double chord, double s) {
+  return s < chord * (1 - 0x1p-40);
+}
+
 /* The part of rtol the rules' errors may take; the rest is for rounding,
 ** which stays below 64 eps relative (the specs hold the result to that
 ** beyond info.err), or half of rtol when that is less. */
@@ -210,9 +217,8 @@ int arclen_integ_first_orders(const integrator *in, double *c, double *half_widt
 void arclen_integ_first_pieces(const integrator *in, double *c, double *half_width);
 int arclen_integ_orders_of(const integrator *in, int i0, int i1, const double *c,
                            const double *half_width, int *n);
-/* The first pieces onto the stack (from piece i0 on); then next_piece
-** pops them in order. */
-void arclen_integ_push_initial(integrator *in);
+/* The first pieces from i0 on onto the stack; then next_piece pops them
+** in order. */
 void arclen_integ_push_from(integrator *in, int i0);
 /* The next accepted piece [*from, *to] in increasing t, its length and
 ** rule (rule may be NULL); 0 when none is left.  A piece whose chord

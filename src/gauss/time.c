@@ -269,6 +269,11 @@ typedef struct piece_search {
   int pre_n;
 } piece_search;
 
+/* Whether hi is an open piece's end, whose s is not taken. */
+static int hi_open(const piece_search *p) {
+  return p->hi.s == HUGE_VAL;
+}
+
 static void set_known(known *k, double t, double s) {
   k->t = t;
   k->s = s;
@@ -328,7 +333,7 @@ static void eval_at(integrator *in, piece_search *p, double t,
                     double share, known *k) {
   double e, x = p->lo.t, y = t, sign = 1;
   int n;
-  if (t - p->lo.t > p->hi.t - t && p->hi.s < HUGE_VAL) {
+  if (t - p->lo.t > p->hi.t - t && !hi_open(p)) {
     x = t;
     y = p->hi.t;
     sign = -1;
@@ -428,7 +433,7 @@ static double refine_guess(integrator *in, const piece_search *p, double t,
   double sg, f, lo = p->lo.t, hi = p->hi.t;
   const arclen_gauss_rule *r =
       arclen_rule_at_least(p->r ? refine_order(p->r->n) : OPEN_REFINE_ORDER);
-  if (t - lo <= hi - t || p->hi.s == HUGE_VAL)
+  if (t - lo <= hi - t || hi_open(p))
     sg = (p->lo.s - goal) + p->lo.sc +
          arclen_apply_rule(&in->h, r, lo + (t - lo) / 2, (t - lo) / 2);
   else
@@ -477,7 +482,7 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
   }
   if (!(t > p->lo.t && t < p->hi.t)) {
     double lo = p->lo.t, hi = p->hi.t, gap = goal - p->lo.s - p->lo.sc;
-    int open = p->hi.s == HUGE_VAL;
+    int open = hi_open(p);
     double ds = open ? p->rough - p->lo.s - p->lo.sc
                      : p->hi.s - p->lo.s + (p->hi.sc - p->lo.sc);
     if (open && !(ds > gap)) ds = gap * (1 + 1.0 / 16);  /* rough fell short */
@@ -532,13 +537,13 @@ typedef struct piece_walk {
 
 /* The first pieces whose chords reach past the distance s (scaled): the
 ** pieces that certainly hold it, and all before (every one when the
-** chords fall short).  The margin covers the chords' rounding. */
+** chords fall short). */
 static int pieces_reaching(const integrator *in, double s) {
   double sum = 0;
   int i;
   for (i = 0; i < in->nmin; i++) {
     sum += in->chords[i];
-    if (s < sum * (1 - 0x1p-40)) return i + 1;
+    if (arclen_chord_holds(sum, s)) return i + 1;
   }
   return in->nmin + 1;
 }
@@ -555,7 +560,7 @@ static void walk_start(integrator *in, piece_walk *w, double s_last) {
   }
   if (!w->fast) {
     arclen_integ_prepare_bounds(in);
-    arclen_integ_push_initial(in);
+    arclen_integ_push_from(in, 0);
   }
 }
 
@@ -568,7 +573,7 @@ static int walk_next(integrator *in, piece_walk *w, double open_below,
                      double *a, double *b, double *len,
                      const arclen_gauss_rule **r, int *last) {
   if (w->fast && w->k <= in->nmin &&
-      open_below < in->chords[w->k] * (1 - 0x1p-40)) {
+      arclen_chord_holds(in->chords[w->k], open_below)) {
     *a = arclen_first_from(in, w->k);
     *b = arclen_first_to(in, w->k);
     *last = w->k == in->nmin;
@@ -623,7 +628,7 @@ static void sweep(const double *c, int dim, const double *s, long n,
   integrator in;
   piece_walk w;
   piece_search p;
-  double cum = 0, tol, pa, pb, plen;
+  double cum = 0, tol, pa, pb, plen, s_last;
   const arclen_gauss_rule *r;
   long i = 0, m, q;
   int last = 0;
@@ -632,11 +637,11 @@ static void sweep(const double *c, int dim, const double *s, long n,
     return;                            /* a point: every s > 0 is past it */
   }
   in.want_err = info != NULL;
-  walk_start(&in, &w, arclen_times_pow2(s[n - 1], -in.h.exp));
+  s_last = arclen_times_pow2(s[n - 1], -in.h.exp);
+  walk_start(&in, &w, s_last);
   tol = in.rtol * in.len_lower;
   while (i < n && !last) {
-    if (!walk_next(&in, &w, arclen_times_pow2(s[n - 1], -in.h.exp) - cum,
-                   &pa, &pb, &plen, &r, &last))
+    if (!walk_next(&in, &w, s_last - cum, &pa, &pb, &plen, &r, &last))
       break;
     if (plen == HUGE_VAL) {            /* every distance left lies here */
       m = n - i;
