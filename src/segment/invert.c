@@ -73,6 +73,36 @@ static int model_certifies(arclen_seg_boundfn bound, const void *ctx,
   return fabs(q) + e <= tol;
 }
 
+/* int_a^b speed (a < b) within share by the kind's bound: the rule of the
+** fewest nodes (up to CERT_NODES) that the bound certifies over [a, b],
+** else the two halves, each within half the share, at most CERT_DEPTH
+** levels down; *val and *err the sum and the bounds' total (the rules'
+** sums' roundings included, as model_certifies takes them).  0 where some
+** part has no such rule at the last level: the caller then takes an exact
+** length. */
+#define CERT_NODES 24
+#define CERT_DEPTH 3
+static int certified_integral(arclen_seg_speedfn speed,
+                              arclen_seg_orderfn order, const void *ctx,
+                              double a, double b, double share, int depth,
+                              double *val, double *err) {
+  double e, m, v1, e1;
+  int n = order(ctx, a, b, share, CERT_NODES, &e);
+  if (n > 0) {
+    *val = model(speed, ctx, n, a, b);
+    *err = e + 32 * DBL_EPSILON * fabs(*val);
+    return 1;
+  }
+  if (depth >= CERT_DEPTH) return 0;
+  m = a + (b - a) / 2;
+  if (!certified_integral(speed, order, ctx, a, m, share / 2, depth + 1, &v1, &e1) ||
+      !certified_integral(speed, order, ctx, m, b, share / 2, depth + 1, val, err))
+    return 0;
+  *val += v1;
+  *err += e1 + 2 * DBL_EPSILON * fabs(*val);
+  return 1;
+}
+
 /* The step from x where f = len - s and the speed d > 0 are known: with
 ** the speed's slope d1 (slope given), Halley's, x - (f/d)/(1 - f d1/(2
 ** d^2)), third order where Newton's is second (a quadratic's time takes
@@ -88,10 +118,10 @@ static double exact_step(arclen_seg_speedfn slope, const void *ctx, double x,
 
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
                       arclen_seg_speedfn slope, arclen_seg_boundfn bound,
-                      const void *ctx, double total, double s, double tol,
-                      double guess, int nodes, double from[3], double *t,
-                      long *evals) {
-  double lo = from[0], hi = 1, x0, f0, e0, x, f, d, nx, q, qerr;
+                      arclen_seg_orderfn order, const void *ctx,
+                      double total, double s, double tol, double guess,
+                      int nodes, double from[3], double *t, long *evals) {
+  double lo = from[0], hi = 1, x0, f0, e0, x, f, d, nx, q, qerr, c0, cf, ce;
   double best = from[0], bestf = fabs(from[1] - s), bestlen = from[1];
   double besterr = from[2];
   int i, j, rc;
@@ -142,6 +172,40 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
       from[1] = s + q;
       from[2] = qerr;
       return ARCLEN_OK;
+    }
+    /* where the model's pieces do not certify (its first range is long,
+    ** where a rule rarely meets its bound), the range from its certified
+    ** start again by rules that do (a conic: an exact length costs
+    ** Carlson's integrals, some ten such rules) -- from the search's start
+    ** where the model ran from the end, whose length is the caller's total
+    ** (no certificate); when not within tol, the value starts the next
+    ** model as an exact one would */
+    if (i == 0 && !(e0 < tol / 4)) { c0 = lo; cf = bestlen - s; ce = besterr; }
+    else { c0 = x0; cf = f0; ce = e0; }
+    if (nodes > 0 && order && ce < tol / 4 && x != c0 &&
+        certified_integral(speed, order, ctx, fmin(c0, x), fmax(c0, x),
+                           tol / 4, 0, &q, &qerr)) {
+      f = cf + (x > c0 ? q : -q);
+      qerr += ce + 2 * DBL_EPSILON * (fabs(s) + fabs(f));
+      if (fabs(f) + qerr <= tol) {
+        *t = from[0] = x;
+        from[1] = s + f;
+        from[2] = qerr;
+        return ARCLEN_OK;
+      }
+      if (fabs(f) > qerr) {            /* its sign certain: the bracket moves */
+        if (f < 0) lo = x; else hi = x;
+        if (fabs(f) < bestf) {
+          bestf = fabs(f); best = x; bestlen = s + f; besterr = qerr;
+        }
+        x0 = x; f0 = f; e0 = qerr;
+        d = speed(ctx, x);
+        nx = d > 0 ? x - f / d : lo + (hi - lo) / 2;
+        if (!(nx > lo && nx < hi)) nx = lo + (hi - lo) / 2;
+        if (nx == x || !(nx > lo && nx < hi)) break;
+        x = nx;
+        continue;
+      }
     }
     rc = len(ctx, x, &f);
     if (evals) (*evals)++;

@@ -130,6 +130,7 @@ typedef struct seg_ctx {
   int kind, dim;
   const double *seg;
   double a[3], c[3], k[3], w;
+  double inv_w, sqrt_w;            /* 1/w and sqrt(w), for w > 1 */
 } seg_ctx;
 
 static int len_to(const void *ctx, double t, double *len) {
@@ -155,12 +156,12 @@ static double speed_at(const void *ctx, double t) {
     for (i = 0; i < c->dim; i++) x[i] = wa * c->a[i] + ts * c->k[i] + wc * c->c[i];
     D = s * s + 2 * c->w * ts + t * t;
   } else {
-    double v = 1 / c->w;
+    double v = c->inv_w;
     ts = t * s;
     for (i = 0; i < c->dim; i++)
       x[i] = s * s * c->a[i] + ts * v * c->k[i] + t * t * c->c[i];
     D = (s * s + t * t) * v + 2 * ts;       /* D / w */
-    D *= sqrt(c->w);                        /* D^2 w */
+    D *= c->sqrt_w;                         /* D^2 w */
   }
   for (i = 0; i < c->dim; i++) n2 += x[i] * x[i];
   /* the squares leave the normal range (w = 9e-13 beside legs of 1e-151
@@ -203,61 +204,103 @@ static double quad_guess(const seg_ctx *c, double total, double s) {
 ** (Trefethen, "Approximation Theory and Approximation Practice", Thm
 ** 19.3, whose rule has n + 1 points): |E| <= (64/15) h M rho^-2n / (1 -
 ** rho^-2), h = (b - a)/2, for a speed analytic in the Bernstein ellipse
-** E_rho of [a, b] and bounded by M there.  E_rho lies in the disc |z - m| <= r (m the middle) when its
-** semi-major axis h (rho + 1/rho)/2 is r.  The speed is 2 sqrt(Q)/D^2
-** (over w when w > 1, as speed_at), Q = N.N with N(t) = w a + (k - 2 w a) t
-** + (w (a + c) - k) t^2 and D = 1 + 2 (w - 1) t (1 - t); from their Taylor
-** coefficients at m, r is taken where sum_k>=1 |Q_k| r^k <= |Q_0| / 2 and
-** sum_k>=1 |D_k| r^k <= |D_0| / 2 (each term at most its share): in the
-** disc Q and D stay within half of their values at m, so neither
-** vanishes (sqrt(Q) analytic, the disc simply connected) and M <= 2
-** sqrt(3/2 Q_0) / (D_0/2)^2.  HUGE_VAL where r <= h (no ellipse) or the
-** speed is 0 at m.  Plus the rounding of the nodes (below).  Conics
-** only (ctx: segment.c's seg_ctx). */
-static double conic_rule_error(const void *ctx, double a, double b, int n) {
-  const seg_ctx *c = (const seg_ctx *)ctx;
+** E_rho of [a, b] and bounded by M there.  E_rho lies in the disc |z - m|
+** <= R (m the middle) when its semi-major axis h (rho + 1/rho)/2 is R.
+** The speed is 2 sqrt(Q)/D^2 (over w when w > 1, as speed_at), Q = N.N
+** with N(t) = w a + (k - 2 w a) t + (w (a + c) - k) t^2 and D = 1 + 2 (w -
+** 1) t (1 - t).  N(t) lies in the conic's plane, so in an orthonormal
+** basis of it Q = (N1 + i N2)(N1 - i N2) = P(z) P(conj z)^*, P a complex
+** quadratic whose Taylor coefficients at m have the sizes |P_k| = |N_k|
+** (N's Taylor coefficients, Euclidean norms; no basis needed).  So in the
+** disc |P| >= |N_0| - |N_1| R - |N_2| R^2 and |P| <= |N_0| + |N_1| R +
+** |N_2| R^2 (both for z and conj z), likewise for D's real coefficients:
+** R is taken where the lower bounds keep THETA of their values at m, so
+** that neither P nor D vanishes there (sqrt(Q) analytic, the disc simply
+** connected) and M <= 2 Pmax / Dmin^2.  HUGE_VAL where R <= h (no
+** ellipse) or the speed is 0 at m.  Plus the rounding of the nodes
+** (below).  Conics only (ctx: segment.c's seg_ctx). */
+#define THETA 0.9
+/* The bound's parts for [a, b]: error(n) = *c rho^-2n + *rnd (the
+** truncation, and the nodes' rounding below).  0 where there is none. */
+typedef struct rule_disc { double c, rho, rnd; } rule_disc;
+
+static int conic_disc(const seg_ctx *c, double a, double b, rule_disc *out) {
   double m = (a + b) / 2, h = fabs(b - a) / 2, w = c->w, v = w > 1 ? 1 / w : 1;
-  double q[5] = {0, 0, 0, 0, 0}, dd[3], r = HUGE_VAL, x, rho, M;
-  int i, k;
-  if (h == 0) return 0;
+  double p0 = 0, p1 = 0, p2 = 0, d0, d1, d2, x, r, rd, pmax, dmin, rho, M;
+  int i;
   for (i = 0; i < c->dim; i++) {
     /* N's Taylor coefficients at m (divided by w when w > 1) from its
     ** Bernstein form, as speed_at: the monomial coefficients cancel near
     ** t = 1 (their sum is c, beside a and k/w) */
-    double wa = w * v * c->a[i], wc = w * v * c->c[i], k = v * c->k[i];
+    double wa = w * v * c->a[i], wc = w * v * c->c[i], kk = v * c->k[i];
     double sm = 1 - m;
-    double N0 = sm * sm * wa + m * sm * k + m * m * wc;
-    double N1 = -2 * sm * wa + (sm - m) * k + 2 * m * wc, N2 = wa + wc - k;
-    q[0] += N0 * N0; q[1] += 2 * N0 * N1; q[2] += N1 * N1 + 2 * N0 * N2;
-    q[3] += 2 * N1 * N2; q[4] += N2 * N2;
+    double N0 = sm * sm * wa + m * sm * kk + m * m * wc;
+    double N1 = -2 * sm * wa + (sm - m) * kk + 2 * m * wc, N2 = wa + wc - kk;
+    p0 += N0 * N0; p1 += N1 * N1; p2 += N2 * N2;
   }
-  /* D (over w when w > 1) at m: d0 + d1 z + d2 z^2 */
+  /* D (over w when w > 1) at m: d0 + d1 z + d2 z^2, its sizes */
   x = 2 * (w - 1) * v;
-  dd[0] = v + x * m * (1 - m); dd[1] = x * (1 - 2 * m); dd[2] = -x;
+  d0 = v + x * m * (1 - m); d1 = fabs(x * (1 - 2 * m)); d2 = fabs(x);
   /* squares out of the normal range (tiny or huge legs, w near 0 or
-  ** DBL_MAX) leave Q's coefficients without their digits: no bound */
-  if (!(q[0] > 0x1p-900 && q[0] < 0x1p900) || !(dd[0] > 0x1p-400)) return HUGE_VAL;
-  /* four terms, each <= Q_0 / 8; two, each <= D_0 / 4 (roots, not pow:
-  ** this runs for every step of a walk) */
-  if (q[1] != 0) r = fmin(r, q[0] / (8 * fabs(q[1])));
-  if (q[2] != 0) r = fmin(r, sqrt(q[0] / (8 * fabs(q[2]))));
-  if (q[3] != 0) r = fmin(r, cbrt(q[0] / (8 * fabs(q[3]))));
-  if (q[4] != 0) r = fmin(r, sqrt(sqrt(q[0] / (8 * fabs(q[4])))));
-  if (dd[1] != 0) r = fmin(r, dd[0] / (4 * fabs(dd[1])));
-  if (dd[2] != 0) r = fmin(r, sqrt(dd[0] / (4 * fabs(dd[2]))));
-  if (!(r > h * 1.0001)) return HUGE_VAL;
+  ** DBL_MAX) leave the coefficients without their digits: no bound */
+  if (!(p0 > 0x1p-900 && p0 < 0x1p900) || !(d0 > 0x1p-400)) return 0;
+  p0 = sqrt(p0); p1 = sqrt(p1); p2 = sqrt(p2);
+  /* the R where p1 R + p2 R^2 = THETA p0 (the root without cancellation),
+  ** and D's */
+  r = 2 * THETA * p0 / (p1 + sqrt(p1 * p1 + 4 * THETA * p0 * p2));
+  rd = 2 * THETA * d0 / (d1 + sqrt(d1 * d1 + 4 * THETA * d0 * d2));
+  if (rd < r) r = rd;
+  if (!(r > h * 1.0001)) return 0;
   if (r > 1e6 * h) r = 1e6 * h;     /* rho^-2n is 0 long before */
+  pmax = p0 + r * (p1 + r * p2);
+  dmin = d0 - r * (d1 + r * d2);    /* >= (1 - THETA) d0 */
   x = r / h;
   rho = x + sqrt((x - 1) * (x + 1));
-  M = 2 * sqrt(1.5 * q[0]) / (dd[0] * dd[0] / 4) / (w > 1 ? w : 1);
+  M = 2 * pmax / (dmin * dmin) / (w > 1 ? w : 1);
+  out->rho = rho;
+  out->c = 64.0 / 15 * h * M / ((1 - 1 / rho) * (1 + 1 / rho));
   /* besides the truncation, the nodes' rounding: each m +- h x_i is off
   ** by up to eps (|m| + h), where the speed's slope is at most M / (r -
   ** h) (Cauchy's estimate in the disc); the weights sum to 2 (w = 468
   ** near t = 1: 5e-14 relative of a 10-node rule over 1.8e-4, the
   ** truncation 1e-19) */
-  for (x = 1, k = 0; k < n; k++) x /= rho * rho;    /* rho^-2n */
-  return 64.0 / 15 * h * M * x / ((1 - 1 / rho) * (1 + 1 / rho))
-         + 2 * h * M / (r - h) * DBL_EPSILON * (fabs(m) + h);
+  out->rnd = 2 * h * M / (r - h) * DBL_EPSILON * (fabs(m) + h);
+  return 1;
+}
+
+static double conic_rule_error(const void *ctx, double a, double b, int n) {
+  rule_disc d;
+  double x;
+  int k;
+  if (a == b) return 0;
+  if (!conic_disc((const seg_ctx *)ctx, a, b, &d)) return HUGE_VAL;
+  for (x = 1, k = 0; k < n; k++) x /= d.rho * d.rho;    /* rho^-2n */
+  return d.c * x + d.rnd;
+}
+
+/* The fewest nodes, up to max, whose rule over [a, b] errs by at most
+** target by conic_rule_error's bound (*err: that bound); 0 when none. */
+static int conic_rule_order(const void *ctx, double a, double b,
+                            double target, int max, double *err) {
+  rule_disc d;
+  double room, x;
+  int n, k;
+  if (!conic_disc((const seg_ctx *)ctx, a, b, &d)) return 0;
+  room = target - d.rnd;
+  if (!(room > 0)) return 0;
+  /* c rho^-2n <= room: n >= log(c / room) / (2 log rho), then checked
+  ** by the product itself (the logs' rounding) */
+  x = log(d.c / room) / (2 * log(d.rho));
+  n = x < 1 ? 1 : x < max ? (int)ceil(x) : max + 1;
+  if (n > max) return 0;
+  for (x = 1, k = 0; k < n; k++) x /= d.rho * d.rho;
+  if (d.c * x > room) {
+    if (n == max) return 0;
+    n++;
+    x /= d.rho * d.rho;
+  }
+  *err = d.c * x + d.rnd;
+  return n;
 }
 
 /* The first t tried for the length fraction u: the conic's parameter
@@ -282,6 +325,17 @@ static double first_guess(int kind, int dim, const double *seg, double u) {
   return u;
 }
 
+/* A conic's first t for the distance s: the cubic Hermite interpolant of
+** its length from 0 and total and the speeds at the ends, inverted by two
+** Newton steps from the angle's guess (first_guess), which alone errs by
+** up to a third of t where the middle control point stands off the
+** chord's middle. */
+static double conic_guess(const seg_ctx *c, double total, double s) {
+  return arclen_hermite_invert(total, speed_at(c, 0), speed_at(c, 1), s,
+                               first_guess(ARCLEN_SEG_CONIC, c->dim, c->seg,
+                                           s / total), 2);
+}
+
 /* invert.c's context for a segment that is not a line or a cubic: seg,
 ** or its copy scaled by 2^-e into `scaled` where its points lie far from 1
 ** (subnormal lengths come in steps of 2^-1074; exact but for parts below
@@ -304,6 +358,8 @@ static int setup_ctx(int kind, int dim, const double *seg, double *scaled,
     c->k[i] = c->seg[2 * dim + i] - c->seg[i];
   }
   c->w = kind == ARCLEN_SEG_CONIC ? c->seg[3 * dim] : 1;
+  c->inv_w = 1 / c->w;               /* once, not at every speed */
+  c->sqrt_w = sqrt(c->w);
   return e;
 }
 
@@ -330,7 +386,7 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double total,
   }
   if (at[0] == 0) {
     guess = kind == ARCLEN_SEG_QUAD ? quad_guess(c, total, s)
-                                    : first_guess(kind, c->dim, c->seg, s / total);
+                                    : conic_guess(c, total, s);
   } else {                           /* Newton's step from the last answer */
     double d = speed_at(c, at[0]);
     guess = d > 0 ? at[0] + (s - at[1]) / d : -1;
@@ -340,6 +396,7 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double total,
   rc = arclen_seg_invert(len_to, speed_at,
                          kind == ARCLEN_SEG_QUAD ? quad_slope_at : NULL,
                          kind == ARCLEN_SEG_CONIC ? conic_rule_error : NULL,
+                         kind == ARCLEN_SEG_CONIC ? conic_rule_order : NULL,
                          c, total, s, rtol * total, guess,
                          kind == ARCLEN_SEG_CONIC ? 10 : 0, at, t, evals);
   from[0] = at[0]; from[1] = e ? ldexp(at[1], e) : at[1];

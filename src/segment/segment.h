@@ -45,7 +45,10 @@ int arclen_rquad_circular(const double q[6], double w, double *len);
 ** increasing with derivative speed(t) >= 0: Newton's method on a
 ** Gauss-Legendre model of the length, certified by an exact length or
 ** by the model's own error bound (bound: the n-point rule's error over
-** [a, b], HUGE_VAL where it has none; NULL: exact lengths only), kept
+** [a, b], HUGE_VAL where it has none; NULL: exact lengths only; order:
+** the fewest nodes up to max whose bound over [a, b] is within target,
+** and that bound, 0 where none, for a long range taken by rules the bound
+** certifies before an exact length is), kept
 ** inside a shrinking bracket, bisection when a step leaves it (capped).
 ** total is len(0, 1) as the caller has it; guess the first t tried
 ** (outside the bracket: by the length fraction); nodes the model's first
@@ -61,10 +64,12 @@ typedef int (*arclen_seg_lenfn)(const void *ctx, double t, double *len);
 typedef double (*arclen_seg_speedfn)(const void *ctx, double t);
 typedef double (*arclen_seg_boundfn)(const void *ctx, double a, double b,
                                      int n);
+typedef int (*arclen_seg_orderfn)(const void *ctx, double a, double b,
+                                  double target, int max, double *err);
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
                       arclen_seg_speedfn slope, arclen_seg_boundfn bound,
-                      const void *ctx, double total, double s, double tol,
-                      double guess, int nodes, double from[3], double *t,
-                      long *evals);
+                      arclen_seg_orderfn order, const void *ctx,
+                      double total, double s, double tol, double guess,
+                      int nodes, double from[3], double *t, long *evals);
 
 #endif
