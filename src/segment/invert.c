@@ -73,33 +73,44 @@ static int model_certifies(arclen_seg_boundfn bound, const void *ctx,
   return fabs(q) + e <= tol;
 }
 
-/* int_a^b speed (a < b) within share by the kind's bound: the rule of the
-** fewest nodes (up to CERT_NODES) that the bound certifies over [a, b],
-** else the two halves, each within half the share, at most CERT_DEPTH
-** levels down; *val and *err the sum and the bounds' total (the rules'
-** sums' roundings included, as model_certifies takes them).  0 where some
-** part has no such rule at the last level: the caller then takes an exact
+int arclen_seg_cover(arclen_seg_speedfn speed, arclen_seg_orderfn order,
+                     const void *ctx, double a, double b, double share,
+                     int depth, arclen_seg_piece *pc, int *np) {
+  double e, m;
+  int n = order(ctx, a, b, share, ARCLEN_SEG_COVER_NODES, &e);
+  if (n > 0) {
+    pc[*np].a = a;
+    pc[*np].b = b;
+    pc[*np].v = model(speed, ctx, n, a, b);
+    /* the bound, and the rule's sum's rounding as model_certifies takes it */
+    pc[*np].e = e + 32 * DBL_EPSILON * fabs(pc[*np].v);
+    (*np)++;
+    return 1;
+  }
+  if (depth <= 0) return 0;
+  m = a + (b - a) / 2;
+  return arclen_seg_cover(speed, order, ctx, a, m, share / 2, depth - 1, pc, np) &&
+         arclen_seg_cover(speed, order, ctx, m, b, share / 2, depth - 1, pc, np);
+}
+
+/* int_a^b speed (a < b) within share by the kind's bound (arclen_seg_cover,
+** CERT_DEPTH levels): *val the sum, *err its bound with the sums'
+** roundings.  0 where the cover fails: the caller then takes an exact
 ** length. */
-#define CERT_NODES 24
 #define CERT_DEPTH 3
 static int certified_integral(arclen_seg_speedfn speed,
                               arclen_seg_orderfn order, const void *ctx,
-                              double a, double b, double share, int depth,
+                              double a, double b, double share,
                               double *val, double *err) {
-  double e, m, v1, e1;
-  int n = order(ctx, a, b, share, CERT_NODES, &e);
-  if (n > 0) {
-    *val = model(speed, ctx, n, a, b);
-    *err = e + 32 * DBL_EPSILON * fabs(*val);
-    return 1;
-  }
-  if (depth >= CERT_DEPTH) return 0;
-  m = a + (b - a) / 2;
-  if (!certified_integral(speed, order, ctx, a, m, share / 2, depth + 1, &v1, &e1) ||
-      !certified_integral(speed, order, ctx, m, b, share / 2, depth + 1, val, err))
+  arclen_seg_piece pc[1 << CERT_DEPTH];
+  int np = 0, i;
+  if (!arclen_seg_cover(speed, order, ctx, a, b, share, CERT_DEPTH, pc, &np))
     return 0;
-  *val += v1;
-  *err += e1 + 2 * DBL_EPSILON * fabs(*val);
+  *val = *err = 0;
+  for (i = 0; i < np; i++) {
+    *val += pc[i].v;
+    *err += pc[i].e + 2 * DBL_EPSILON * fabs(*val);
+  }
   return 1;
 }
 
@@ -183,8 +194,9 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
     if (i == 0 && !(e0 < tol / 4)) { c0 = lo; cf = bestlen - s; ce = besterr; }
     else { c0 = x0; cf = f0; ce = e0; }
     if (nodes > 0 && order && ce < tol / 4 && x != c0 &&
+        tol >= ARCLEN_SEG_COVER_RTOL * total &&
         certified_integral(speed, order, ctx, fmin(c0, x), fmax(c0, x),
-                           tol / 4, 0, &q, &qerr)) {
+                           tol / 4, &q, &qerr)) {
       f = cf + (x > c0 ? q : -q);
       qerr += ce + 2 * DBL_EPSILON * (fabs(s) + fabs(f));
       if (fabs(f) + qerr <= tol) {

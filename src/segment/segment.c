@@ -404,19 +404,106 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double total,
   return rc;
 }
 
+/* A conic's times at the ascending s[0 .. n-1] (scaled by 2^-e as c) from
+** its cover (arclen_seg_cover): pieces of [0, 1] whose rules the bound
+** certifies, in all within a quarter of rtol times the chord (a lower
+** bound of the length, so of rtol L / 4).  Their sums give the length
+** and, at each piece's start, a certified length from which the search
+** of a distance inside it starts (or from the last answer, where later),
+** from the Hermite guess inside the piece: no exact length, unless a
+** search's own models fail.  0 where the cover fails (a conic too sharp
+** for the bound within 2^CONIC_COVER_DEPTH pieces): the caller then
+** measures the length and searches as plain_times does. */
+/* Whether the conic may be a circular arc (|a| = |c| and w = |k| / (2
+** |a|), the cosine of the angle between leg and chord, within 2^-20):
+** those take the angle's first guess, exact for a circle, and the circle's
+** closed-form length (plain_times), so that a circle's times stay its
+** angle parameter. */
+static int near_circle(const seg_ctx *c, double chord) {
+  double la = 0, lc = 0;
+  int k;
+  for (k = 0; k < c->dim; k++) {
+    la += c->a[k] * c->a[k];
+    lc += c->c[k] * c->c[k];
+  }
+  la = sqrt(la);
+  lc = sqrt(lc);
+  return c->w < 1 && fabs(la - lc) <= 0x1p-20 * la &&
+         fabs(2 * c->w * la - chord) <= 0x1p-20 * chord;
+}
+
+#define CONIC_COVER_DEPTH 5
+static int conic_times(const seg_ctx *c, int e, const double *s, long n,
+                       double rtol, double *t, long *evals, int *rc) {
+  arclen_seg_piece pc[1 << CONIC_COVER_DEPTH];
+  double cum[(1 << CONIC_COVER_DEPTH) + 1], cerr[(1 << CONIC_COVER_DEPTH) + 1];
+  double chord = 0, total, terr, tol, from[3] = {0, 0, 0}, fa = 0, fb = 0;
+  int np = 0, i, k, at = -1;
+  long j, ev;
+  if (rtol < ARCLEN_SEG_COVER_RTOL) return 0;
+  for (k = 0; k < c->dim; k++) chord += c->k[k] * c->k[k];
+  chord = sqrt(chord);
+  if (!(chord > 0) || near_circle(c, chord) ||
+      !arclen_seg_cover(speed_at, conic_rule_order, c, 0, 1, rtol * chord / 4,
+                        CONIC_COVER_DEPTH, pc, &np))
+    return 0;
+  cum[0] = cerr[0] = 0;
+  for (i = 0; i < np; i++) {
+    cum[i + 1] = cum[i] + pc[i].v;
+    cerr[i + 1] = cerr[i] + pc[i].e + 2 * DBL_EPSILON * cum[i + 1];
+  }
+  total = cum[np];
+  terr = cerr[np];
+  tol = rtol * (total - terr);       /* <= rtol L */
+  if (!(terr <= tol / 4)) return 0;
+  *rc = ARCLEN_OK;
+  if (evals) *evals = 0;
+  for (i = 0, j = 0; j < n; j++) {
+    double sj = e ? ldexp(s[j], -e) : s[j], guess;
+    if (!(sj > 0)) { t[j] = 0; continue; }
+    /* s >= L, or within tol of it (terr <= tol/4): the end */
+    if (sj >= total + terr - tol) { t[j] = 1; continue; }
+    while (i < np - 1 && sj >= cum[i + 1]) i++;
+    if (from[0] < pc[i].a || from[1] > sj) {
+      double w = pc[i].b - pc[i].a, u;
+      if (at != i) { fa = speed_at(c, pc[i].a); fb = speed_at(c, pc[i].b); at = i; }
+      from[0] = pc[i].a; from[1] = cum[i]; from[2] = cerr[i];
+      u = arclen_hermite_invert(pc[i].v, fa * w, fb * w, sj - cum[i],
+                                (sj - cum[i]) / pc[i].v, 2);
+      guess = pc[i].a + w * u;
+    } else {                         /* Newton's step from the last answer */
+      double d = speed_at(c, from[0]);
+      guess = d > 0 ? from[0] + (sj - from[1]) / d : -1;
+    }
+    *rc = arclen_seg_invert(len_to, speed_at, NULL, conic_rule_error,
+                            conic_rule_order, c, total, sj, tol, guess, 10,
+                            from, t + j, &ev);
+    if (evals) *evals += ev;
+    if (*rc != ARCLEN_OK) return 1;
+  }
+  return 1;
+}
+
 /* The times of the ascending s[0 .. n-1] on a segment that is not a cubic,
-** whose length is total, in one sweep: each search starts where the last
-** one ended (its time and exact length). */
+** whose length is total (NAN: measured here when needed), in one sweep:
+** each search starts where the last one ended (its time and exact
+** length); a conic's from its cover where it has one (conic_times). */
 static int plain_times(int kind, int dim, const double *seg, double total,
                        const double *s, long n, double rtol, double *t,
                        long *evals) {
   seg_ctx c;
   double scaled[ARCLEN_SEG_MAXN], from[3] = {0, 0, 0};
   long i, ev;
-  int e = kind == ARCLEN_SEG_LINE ? 0 : setup_ctx(kind, dim, seg, scaled, &c);
+  int rc, e = kind == ARCLEN_SEG_LINE ? 0 : setup_ctx(kind, dim, seg, scaled, &c);
+  if (kind == ARCLEN_SEG_CONIC && conic_times(&c, e, s, n, rtol, t, evals, &rc))
+    return rc;
+  if (!(total > 0 && isfinite(total))) {
+    rc = plain_length(kind, dim, seg, 0, 1, &total, NULL);
+    if (rc != ARCLEN_OK) return rc;
+  }
   if (evals) *evals = 0;
   for (i = 0; i < n; i++) {
-    int rc = ctx_time(kind, &c, e, total, s[i], rtol, from, t + i, &ev);
+    rc = ctx_time(kind, &c, e, total, s[i], rtol, from, t + i, &ev);
     if (rc != ARCLEN_OK) return rc;
     if (evals) *evals += ev;
   }
@@ -444,7 +531,12 @@ int arclen_segment_time(int kind, int dim, const double *seg, double s,
   rc = check_opts(o);
   if (rc != ARCLEN_OK) return rc;
   if (o->t0 != 0 || o->t1 != 1) return ARCLEN_ERANGE;
-  rc = plain_length(kind, dim, seg, 0, 1, &total, info);
+  if (kind == ARCLEN_SEG_CONIC) {     /* the cover's length (conic_times) */
+    total = NAN;
+    if (info) info->branch = "conic";
+  } else {
+    rc = plain_length(kind, dim, seg, 0, 1, &total, info);
+  }
   if (rc == ARCLEN_OK)
     rc = plain_times(kind, dim, seg, total, &s, 1, o->rtol, t, &evals);
   if (info) info->pieces = evals;
@@ -481,10 +573,6 @@ int arclen_segment_times_of(int kind, int dim, const double *seg,
   /* the caller's length where it has one (a path's), else measured: the
   ** searches use it for their scale and first guesses, and certify with
   ** exact lengths of their own */
-  if (!(len > 0 && isfinite(len))) {
-    rc = plain_length(kind, dim, seg, 0, 1, &len, NULL);
-    if (rc != ARCLEN_OK) return rc;
-  }
   rc = plain_times(kind, dim, seg, len, s, n, rtol, t, NULL);
   if (rc != ARCLEN_OK) return rc;
   for (i = 0; i < n; i++) {

@@ -66,6 +66,22 @@ typedef double (*arclen_seg_boundfn)(const void *ctx, double a, double b,
                                      int n);
 typedef int (*arclen_seg_orderfn)(const void *ctx, double a, double b,
                                   double target, int max, double *err);
+/* A piece [a, b] of a cover: its rule's value v and that value's error
+** bound e (the kind's bound and the sum's rounding). */
+typedef struct arclen_seg_piece { double a, b, v, e; } arclen_seg_piece;
+/* The cover of [a, b] by pieces whose rules (the fewest nodes up to
+** ARCLEN_SEG_COVER_NODES) order certifies within their share: the whole
+** range within share, else its halves within half of it each, depth
+** levels down at most; appended in order to pc (room for 2^depth) at
+** *np.  0 where some part has no such rule at the last level. */
+#define ARCLEN_SEG_COVER_NODES 24
+/* Below this relative tolerance the roundings' allowances (32 eps of each
+** piece's sum, the nodes' own) leave a bound no room: random conics found
+** no cover at 3e-14 and below, three in four at 1e-13 (2026-12-03). */
+#define ARCLEN_SEG_COVER_RTOL 1e-13
+int arclen_seg_cover(arclen_seg_speedfn speed, arclen_seg_orderfn order,
+                     const void *ctx, double a, double b, double share,
+                     int depth, arclen_seg_piece *pc, int *np);
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
                       arclen_seg_speedfn slope, arclen_seg_boundfn bound,
                       arclen_seg_orderfn order, const void *ctx,
