@@ -103,6 +103,25 @@ for _, n in ipairs(NS) do
   end
 end
 
+-- The goal's figure, resample at n = 100, k = 1000 in length calls a point,
+-- taken in turn with the length calls themselves: five rounds, each a
+-- ratio of its own two timings (the one t_len above, taken once at the
+-- start, moves the table's ratios by the machine's state then).
+do
+  local P, k, ratios = paths[100], 1000, {}
+  for r = 1, 5 do
+    local tl = timed(function()
+      for q = 1, #len_segs do arclen.length(len_segs[q], opts) end
+    end) / #len_segs
+    local tr = timed(function() P.p:resample(k) end) / k
+    ratios[r] = tr / tl
+  end
+  table.sort(ratios)
+  print()
+  print(("resample, n = 100, k = 1000, in turn with arclen.length: %.2f length calls a point "
+    .. "(median of 5 rounds; %.2f-%.2f)"):format(ratios[3], ratios[1], ratios[5]))
+end
+
 -- The core's share at n = 100, k = 1000: arclen.times (times only, flat)
 -- on each segment's run of the same distances, as the walk hands them
 -- over -- the time finding that resample and points both pay, set-up a
