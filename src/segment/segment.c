@@ -325,15 +325,35 @@ static double first_guess(int kind, int dim, const double *seg, double u) {
   return u;
 }
 
+/* Whether the conic may be a circular arc (|a| = |c| and w = |k| / (2
+** |a|), the cosine of the angle between leg and chord, within 2^-20):
+** those keep the angle's first guess, exact for a circle, and the
+** circle's closed-form length (plain_times), so that a circle's times stay
+** its angle parameter. */
+static int near_circle(const seg_ctx *c) {
+  double la = 0, lc = 0, lk = 0;
+  int k;
+  for (k = 0; k < c->dim; k++) {
+    la += c->a[k] * c->a[k];
+    lc += c->c[k] * c->c[k];
+    lk += c->k[k] * c->k[k];
+  }
+  la = sqrt(la);
+  lc = sqrt(lc);
+  lk = sqrt(lk);
+  return c->w < 1 && fabs(la - lc) <= 0x1p-20 * la &&
+         fabs(2 * c->w * la - lk) <= 0x1p-20 * lk;
+}
+
 /* A conic's first t for the distance s: the cubic Hermite interpolant of
 ** its length from 0 and total and the speeds at the ends, inverted by two
 ** Newton steps from the angle's guess (first_guess), which alone errs by
 ** up to a third of t where the middle control point stands off the
-** chord's middle. */
+** chord's middle; a circle's is the angle's, exact. */
 static double conic_guess(const seg_ctx *c, double total, double s) {
-  return arclen_hermite_invert(total, speed_at(c, 0), speed_at(c, 1), s,
-                               first_guess(ARCLEN_SEG_CONIC, c->dim, c->seg,
-                                           s / total), 2);
+  double u = first_guess(ARCLEN_SEG_CONIC, c->dim, c->seg, s / total);
+  if (near_circle(c)) return u;
+  return arclen_hermite_invert(total, speed_at(c, 0), speed_at(c, 1), s, u, 2);
 }
 
 /* invert.c's context for a segment that is not a line or a cubic: seg,
@@ -414,24 +434,6 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double total,
 ** search's own models fail.  0 where the cover fails (a conic too sharp
 ** for the bound within 2^CONIC_COVER_DEPTH pieces): the caller then
 ** measures the length and searches as plain_times does. */
-/* Whether the conic may be a circular arc (|a| = |c| and w = |k| / (2
-** |a|), the cosine of the angle between leg and chord, within 2^-20):
-** those take the angle's first guess, exact for a circle, and the circle's
-** closed-form length (plain_times), so that a circle's times stay its
-** angle parameter. */
-static int near_circle(const seg_ctx *c, double chord) {
-  double la = 0, lc = 0;
-  int k;
-  for (k = 0; k < c->dim; k++) {
-    la += c->a[k] * c->a[k];
-    lc += c->c[k] * c->c[k];
-  }
-  la = sqrt(la);
-  lc = sqrt(lc);
-  return c->w < 1 && fabs(la - lc) <= 0x1p-20 * la &&
-         fabs(2 * c->w * la - chord) <= 0x1p-20 * chord;
-}
-
 #define CONIC_COVER_DEPTH 5
 static int conic_times(const seg_ctx *c, int e, const double *s, long n,
                        double rtol, double *t, long *evals, int *rc) {
@@ -443,7 +445,7 @@ static int conic_times(const seg_ctx *c, int e, const double *s, long n,
   if (rtol < ARCLEN_SEG_COVER_RTOL) return 0;
   for (k = 0; k < c->dim; k++) chord += c->k[k] * c->k[k];
   chord = sqrt(chord);
-  if (!(chord > 0) || near_circle(c, chord) ||
+  if (!(chord > 0) || near_circle(c) ||
       !arclen_seg_cover(speed_at, conic_rule_order, c, 0, 1, rtol * chord / 4,
                         CONIC_COVER_DEPTH, pc, &np))
     return 0;
@@ -531,12 +533,8 @@ int arclen_segment_time(int kind, int dim, const double *seg, double s,
   rc = check_opts(o);
   if (rc != ARCLEN_OK) return rc;
   if (o->t0 != 0 || o->t1 != 1) return ARCLEN_ERANGE;
-  if (kind == ARCLEN_SEG_CONIC) {     /* the cover's length (conic_times) */
-    total = NAN;
-    if (info) info->branch = "conic";
-  } else {
-    rc = plain_length(kind, dim, seg, 0, 1, &total, info);
-  }
+  if (kind == ARCLEN_SEG_CONIC) total = NAN;   /* its cover's (conic_times) */
+  else rc = plain_length(kind, dim, seg, 0, 1, &total, info);
   if (rc == ARCLEN_OK)
     rc = plain_times(kind, dim, seg, total, &s, 1, o->rtol, t, &evals);
   if (info) info->pieces = evals;
