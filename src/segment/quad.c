@@ -154,12 +154,10 @@ static double closed_form(double u0, double S0, double S1, double h, double B,
   return t1 + k2 / (B * q) * log_ratio(N, D, w);
 }
 
-int arclen_quad_length(const double *p, int dim, double t0, double t1,
-                       double *len, int *gauss) {
-  double a[3], c[3], b[3], v0[3], v1[3], lo = t0 < t1 ? t0 : t1;
-  double h = fabs(t1 - t0), B, L, mx = 0, m0, m1;
+void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f) {
+  double *a = f->a, *c = f->c, *b = f->b, mx = 0;
   int k, e, half = 0;
-  if (gauss) *gauss = 0;
+  f->dim = dim;
   for (k = 0; k < dim; k++) {
     a[k] = p[dim + k] - p[k];
     c[k] = p[2 * dim + k] - p[dim + k];
@@ -174,8 +172,11 @@ int arclen_quad_length(const double *p, int dim, double t0, double t1,
     if (fabs(a[k]) > mx) mx = fabs(a[k]);
     if (fabs(c[k]) > mx) mx = fabs(c[k]);
   }
-  *len = 0;
-  if (mx == 0 || h == 0) return ARCLEN_OK;
+  f->zero = mx == 0;
+  f->scale = 0;
+  f->up = f->down = 1;
+  f->S0 = f->Sc = f->K = -1;
+  if (f->zero) return;
   /* by a power of two to [1/2, 1): no square over- or underflows (a
   ** product by 2^-e where that is a double, ldexp's rounding otherwise) */
   e = exponent_of(mx);
@@ -185,26 +186,80 @@ int arclen_quad_length(const double *p, int dim, double t0, double t1,
   } else {
     for (k = 0; k < dim; k++) { a[k] = ldexp(a[k], -e); c[k] = ldexp(c[k], -e); }
   }
+  f->scale = e + half;
+  f->up = f->scale > -1000 && f->scale < 1000 ? pow2(f->scale) : 0;
+  f->down = f->scale > -1000 && f->scale < 1000 ? pow2(-f->scale) : 0;
   for (k = 0; k < dim; k++) b[k] = c[k] - a[k];
-  B = dot(b, b, dim);
-  speed_vector(a, c, dim, lo, v0);
+  f->B = dot(b, b, dim);
+  f->q = sqrt(f->B);
+  f->k = cross_norm(a, c, dim);                  /* a x b = a x c */
+  /* the start's terms for lengths from 0: v(0) = a exactly; |v(0)| only
+  ** where asked (the time's set-up): a sub-range's length has no use for it */
+  f->u0 = dot(a, b, dim);
+  f->m0 = dot(a, a, dim);
+}
+
+/* 2 int |v| over [lo, lo + h] of the scaled form, v(lo)'s u0 = v.b, m0 =
+** |v|^2 and S0 = |v| given (S0 < 0: not yet taken), the end's |v|^2 and
+** |v| into *m1 and *S1 (the latter only where the closed form took it,
+** else -1).  *gauss: whether the short Gauss rule served. */
+static double span(const arclen_quad_form *f, double lo, double h, double u0,
+                   double m0, double S0, double *m1, double *S1,
+                   int *gauss) {
+  double v1[3] = {0, 0, 0}, m;
+  const double *a = f->a, *c = f->c;
+  int dim = f->dim;
+  *gauss = 0;
+  *S1 = -1;
   speed_vector(a, c, dim, lo + h, v1);
-  m0 = dot(v0, v0, dim); m1 = dot(v1, v1, dim);
-  if (B == 0) {
-    L = 2 * h * norm(a, dim);
-  } else {
-    double u0 = dot(v0, b, dim), kk = cross_norm(a, c, dim), m;  /* a x b = a x c */
-    /* min |v|^2 over the range: K^2 where the vertex (u = 0) is inside */
-    m = u0 < 0 && u0 + h * B > 0 ? kk * kk / B : m0 < m1 ? m0 : m1;
-    if (m >= 16 * h * h * B) {                         /* min |v| >= 4 h |b| */
-      L = near_straight(a, c, dim, lo, h);
-      if (gauss) *gauss = 1;
-    } else {
-      L = closed_form(u0, sqrt(m0), sqrt(m1), h, B, sqrt(B), kk);
-    }
+  *m1 = dot(v1, v1, dim);
+  if (f->B == 0) return 2 * h * norm(a, dim);
+  /* min |v|^2 over the range: K^2 where the vertex (u = 0) is inside */
+  m = u0 < 0 && u0 + h * f->B > 0 ? f->k * f->k / f->B : m0 < *m1 ? m0 : *m1;
+  if (m >= 16 * h * h * f->B) {                        /* min |v| >= 4 h |b| */
+    *gauss = 1;
+    return near_straight(a, c, dim, lo, h);
   }
-  L = e + half > -1000 && e + half < 1000 ? L * pow2(e + half)
-                                          : ldexp(L, e + half);
+  *S1 = sqrt(*m1);
+  return closed_form(u0, S0 < 0 ? sqrt(m0) : S0, *S1, h, f->B, f->q, f->k);
+}
+
+/* L (of the scaled form) times 2^scale, in user units. */
+static double unscaled(const arclen_quad_form *f, double L) {
+  return f->scale > -1000 && f->scale < 1000 ? L * f->up
+                                             : ldexp(L, f->scale);
+}
+
+double arclen_quad_form_length(const arclen_quad_form *f, double t,
+                               double *m1, double *S1, int *gauss) {
+  *gauss = 0;
+  *m1 = *S1 = 0;
+  if (f->zero || t == 0) return 0;
+  return span(f, 0, t, f->u0, f->m0, f->S0, m1, S1, gauss);
+}
+
+double arclen_quad_form_unscale(const arclen_quad_form *f, double L) {
+  return unscaled(f, L);
+}
+
+int arclen_quad_length(const double *p, int dim, double t0, double t1,
+                       double *len, int *gauss) {
+  arclen_quad_form f;
+  double lo = t0 < t1 ? t0 : t1, h = fabs(t1 - t0), L, m1, S1;
+  int g = 0;
+  arclen_quad_setup(p, dim, &f);
+  *len = 0;
+  if (gauss) *gauss = 0;
+  if (f.zero || h == 0) return ARCLEN_OK;
+  if (lo == 0) {
+    L = span(&f, 0, h, f.u0, f.m0, f.S0, &m1, &S1, &g);
+  } else {
+    double v0[3] = {0, 0, 0};
+    speed_vector(f.a, f.c, dim, lo, v0);
+    L = span(&f, lo, h, dot(v0, f.b, dim), dot(v0, v0, dim), -1, &m1, &S1, &g);
+  }
+  if (gauss) *gauss = g;
+  L = unscaled(&f, L);
   if (t1 < t0) L = -L;
   *len = L;
   return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;

@@ -3,7 +3,8 @@
 ** call each: names and letters, checks, and the dispatch by kind of length,
 ** time, many times, point, derivative, tangent and sub-range.  Cubics go
 ** to the method asked for (the default method unless told), the other
-** kinds to line.c, quad.c and conic_seg.c, their times to invert.c.
+** kinds to line.c, quad.c and conic_seg.c, a quadratic's time to
+** quad_time.c and a conic's to invert.c.
 */
 #include <float.h>
 #include <math.h>
@@ -138,20 +139,17 @@ static int len_to(const void *ctx, double t, double *len) {
   return plain_length(c->kind, c->dim, c->seg, 0, t, len, NULL);
 }
 
-/* The speed |C'(t)| for Newton's step and invert.c's model: a quadratic's
-** 2 |(1-t) a + t c|; a conic's 2 |w (1-t)^2 a + t (1-t) k + w t^2 c| / D^2,
-** D = (1-t)^2 + 2 w t (1-t) + t^2 (the quotient rule, t^3 terms
-** cancelled), both divided by w when w > 1 so that w a stays finite.  A
+/* The speed |C'(t)| for Newton's step and invert.c's model: a conic's 2
+** |w (1-t)^2 a + t (1-t) k + w t^2 c| / D^2, D = (1-t)^2 + 2 w t (1-t) +
+** t^2 (the quotient rule, t^3 terms cancelled), both divided by w when w
+** > 1 so that w a stays finite.  A
 ** speed that overflows anyway (w near DBL_MAX) only makes invert.c
 ** bisect: every answer is certified by an exact length. */
 static double speed_at(const void *ctx, double t) {
   const seg_ctx *c = (const seg_ctx *)ctx;
   double s = 1 - t, n2 = 0, x[3], D, wa, ts, wc;
   int i;
-  if (c->kind == ARCLEN_SEG_QUAD) {
-    for (i = 0; i < c->dim; i++) x[i] = s * c->a[i] + t * c->c[i];
-    D = 1;
-  } else if (c->w <= 1) {
+  if (c->w <= 1) {
     wa = c->w * s * s; ts = t * s; wc = c->w * t * t;
     for (i = 0; i < c->dim; i++) x[i] = wa * c->a[i] + ts * c->k[i] + wc * c->c[i];
     D = s * s + 2 * c->w * ts + t * t;
@@ -174,30 +172,6 @@ static double speed_at(const void *ctx, double t) {
   else
     n2 = sqrt(n2);
   return 2 * n2 / (D * D);
-}
-
-/* A quadratic's speed's slope: d/dt 2 |v| = 2 v.b/|v|, b = c - a (0 at a
-** cusp, where Halley's step falls back to Newton's). */
-static double quad_slope_at(const void *ctx, double t) {
-  const seg_ctx *c = (const seg_ctx *)ctx;
-  double s = 1 - t, vb = 0, vv = 0;
-  int i;
-  for (i = 0; i < c->dim; i++) {
-    double v = s * c->a[i] + t * c->c[i];
-    vb += v * (c->c[i] - c->a[i]);
-    vv += v * v;
-  }
-  return vv > 0 ? 2 * vb / sqrt(vv) : 0;
-}
-
-/* A quadratic's first t for the distance s: the cubic Hermite interpolant
-** of its length from 0 and total and the speeds at the ends, inverted by
-** two Newton steps from the length fraction (as the default method's
-** first guess in a piece, src/gauss/time.c); ~1e-2 of t where the length
-** fraction is ~1e-1, an exact length fewer. */
-static double quad_guess(const seg_ctx *c, double total, double s) {
-  return arclen_hermite_invert(total, speed_at(c, 0), speed_at(c, 1), s,
-                               s / total, 2);
 }
 
 /* The n-point Gauss-Legendre rule's error for a conic's speed over [a, b]
@@ -356,7 +330,7 @@ static double conic_guess(const seg_ctx *c, double total, double s) {
   return arclen_hermite_invert(total, speed_at(c, 0), speed_at(c, 1), s, u, 2);
 }
 
-/* invert.c's context for a segment that is not a line or a cubic: seg,
+/* invert.c's context for a conic: seg,
 ** or its copy scaled by 2^-e into `scaled` where its points lie far from 1
 ** (subnormal lengths come in steps of 2^-1074; exact but for parts below
 ** 2^-1022 of the largest), and its legs.  Returns e. */
@@ -383,7 +357,7 @@ static int setup_ctx(int kind, int dim, const double *seg, double *scaled,
   return e;
 }
 
-/* The time at s on the segment of c (scaled by 2^-e) whose length is
+/* The time at s on the conic of c (scaled by 2^-e) whose length is
 ** total, from the known point from = (t, len(0, t), its error bound) at
 ** or before it ({0, 0, 0}: afresh), which becomes the answer's.  A line
 ** is t = s / L. */
@@ -405,20 +379,16 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double total,
     at[1] = ldexp(at[1], -e); at[2] = ldexp(at[2], -e);
   }
   if (at[0] == 0) {
-    guess = kind == ARCLEN_SEG_QUAD ? quad_guess(c, total, s)
-                                    : conic_guess(c, total, s);
+    guess = conic_guess(c, total, s);
   } else {                           /* Newton's step from the last answer */
     double d = speed_at(c, at[0]);
     guess = d > 0 ? at[0] + (s - at[1]) / d : -1;
   }
   /* the model pays where an exact length costs Carlson's integrals (a
-  ** conic, ~600 ns), not beside a quadratic's closed form (~50 ns) */
-  rc = arclen_seg_invert(len_to, speed_at,
-                         kind == ARCLEN_SEG_QUAD ? quad_slope_at : NULL,
-                         kind == ARCLEN_SEG_CONIC ? conic_rule_error : NULL,
-                         kind == ARCLEN_SEG_CONIC ? conic_rule_order : NULL,
-                         c, total, s, rtol * total, guess,
-                         kind == ARCLEN_SEG_CONIC ? 10 : 0, at, t, evals);
+  ** conic, ~600 ns) */
+  rc = arclen_seg_invert(len_to, speed_at, NULL, conic_rule_error,
+                         conic_rule_order, c, total, s, rtol * total, guess,
+                         10, at, t, evals);
   from[0] = at[0]; from[1] = e ? ldexp(at[1], e) : at[1];
   from[2] = e ? ldexp(at[2], e) : at[2];
   return rc;
@@ -486,9 +456,25 @@ static int conic_times(const seg_ctx *c, int e, const double *s, long n,
   return 1;
 }
 
+/* The times of the ascending s[0 .. n-1] on a quadratic set up as f, whose
+** length is total: quad_time.c, each search from the last one's answer. */
+static int quad_times(const arclen_quad_form *f, double total,
+                      const double *s, long n, double rtol, double *t,
+                      long *evals) {
+  double from[3] = {0, 0, 0};
+  long i, ev;
+  if (evals) *evals = 0;
+  for (i = 0; i < n; i++) {
+    int rc = arclen_quad_time(f, total, s[i], rtol * total, from, t + i, &ev);
+    if (rc != ARCLEN_OK) return rc;
+    if (evals) *evals += ev;
+  }
+  return ARCLEN_OK;
+}
+
 /* The times of the ascending s[0 .. n-1] on a segment that is not a cubic,
 ** whose length is total (NAN: measured here when needed), in one sweep:
-** each search starts where the last one ended (its time and exact
+** each search starts where the last one ended (its time and certified
 ** length); a conic's from its cover where it has one (conic_times). */
 static int plain_times(int kind, int dim, const double *seg, double total,
                        const double *s, long n, double rtol, double *t,
@@ -496,7 +482,17 @@ static int plain_times(int kind, int dim, const double *seg, double total,
   seg_ctx c;
   double scaled[ARCLEN_SEG_MAXN], from[3] = {0, 0, 0};
   long i, ev;
-  int rc, e = kind == ARCLEN_SEG_LINE ? 0 : setup_ctx(kind, dim, seg, scaled, &c);
+  int rc, e;
+  if (kind == ARCLEN_SEG_QUAD) {
+    arclen_quad_form f;
+    arclen_quad_time_setup(seg, dim, &f);
+    if (!(total > 0 && isfinite(total))) {
+      rc = plain_length(kind, dim, seg, 0, 1, &total, NULL);
+      if (rc != ARCLEN_OK) return rc;
+    }
+    return quad_times(&f, total, s, n, rtol, t, evals);
+  }
+  e = kind == ARCLEN_SEG_LINE ? 0 : setup_ctx(kind, dim, seg, scaled, &c);
   if (kind == ARCLEN_SEG_CONIC && conic_times(&c, e, s, n, rtol, t, evals, &rc))
     return rc;
   if (!(total > 0 && isfinite(total))) {
@@ -510,6 +506,26 @@ static int plain_times(int kind, int dim, const double *seg, double total,
     if (evals) *evals += ev;
   }
   return ARCLEN_OK;
+}
+
+/* A quadratic's time at s: one set-up for its length (bit for bit
+** arclen_quad_length's over [0, 1]) and the search. */
+static int quad_time(int dim, const double *seg, double s, double rtol,
+                     double *t, arclen_info *info) {
+  arclen_quad_form f;
+  double m1, S1, total;
+  long evals = 0;
+  int gauss, rc;
+  arclen_quad_time_setup(seg, dim, &f);
+  total = arclen_quad_form_unscale(&f, arclen_quad_form_length(&f, 1, &m1, &S1, &gauss));
+  if (info) {
+    info->branch = gauss ? "quad-gauss" : "quad";
+    info->evals += gauss ? 10 : 0;
+  }
+  if (!isfinite(total)) return ARCLEN_EOVERFLOW;
+  rc = quad_times(&f, total, &s, 1, rtol, t, &evals);
+  if (info) info->pieces = evals;
+  return rc;
 }
 
 int arclen_segment_time(int kind, int dim, const double *seg, double s,
@@ -533,6 +549,11 @@ int arclen_segment_time(int kind, int dim, const double *seg, double s,
   rc = check_opts(o);
   if (rc != ARCLEN_OK) return rc;
   if (o->t0 != 0 || o->t1 != 1) return ARCLEN_ERANGE;
+  if (kind == ARCLEN_SEG_QUAD) {
+    rc = quad_time(dim, seg, s, o->rtol, t, info);
+    if (rc != ARCLEN_OK) *t = NAN;
+    return rc;
+  }
   if (kind == ARCLEN_SEG_CONIC) total = NAN;   /* its cover's (conic_times) */
   else rc = plain_length(kind, dim, seg, 0, 1, &total, info);
   if (rc == ARCLEN_OK)

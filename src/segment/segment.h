@@ -21,6 +21,33 @@ void arclen_line_sub(const double *p, int dim, double t0, double t1,
 ** when the short Gauss rule was used instead of the closed form. */
 int arclen_quad_length(const double *p, int dim, double t0, double t1,
                        double *len, int *gauss);
+/* A quadratic set up once for its lengths from 0 (quad.c) and its time at
+** a length (quad_time.c): the legs a = P1 - P0, c = P2 - P1 scaled by a
+** power of two into [1/2, 1) (halved first where a difference overflows),
+** b = c - a, B = |b|^2, q = |b|, k = |a x c|, and v(0) = a's u0 = a.b, m0 =
+** |a|^2, S0 = |a|, Sc = |c| = |v(1)| and K = k/q = min |v| (-1 until
+** the time's set-up takes them); lengths of the scaled form times 2^scale (up, and down =
+** 2^-scale, where both are doubles: |scale| < 1000) are the segment's.
+** zero: all three points equal. */
+typedef struct arclen_quad_form {
+  double a[3], c[3], b[3], B, q, k, u0, m0, S0, Sc, K, up, down;
+  int dim, scale, zero;
+} arclen_quad_form;
+void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f);
+/* The scaled form's length over [0, t], t in (0, 1], bit for bit
+** arclen_quad_length's (before the scale): |v(t)|^2 into *m1 and |v(t)|
+** into *S1 where the closed form took it (else -1); *gauss as below. */
+double arclen_quad_form_length(const arclen_quad_form *f, double t,
+                               double *m1, double *S1, int *gauss);
+/* L of the scaled form in the segment's units (times 2^scale). */
+double arclen_quad_form_unscale(const arclen_quad_form *f, double L);
+/* quad_time.c: the set-up above with S0 and Sc, and the time at the
+** length s (total: the segment's length as the caller has it; tol
+** absolute; from: as arclen_seg_invert's, below; *evals: the lengths
+** measured), all in the segment's units. */
+void arclen_quad_time_setup(const double *p, int dim, arclen_quad_form *f);
+int arclen_quad_time(const arclen_quad_form *f, double total, double s,
+                     double tol, double from[3], double *t, long *evals);
 void arclen_quad_point(const double *p, int dim, double t, double *out);
 void arclen_quad_derivative(const double *p, int dim, double t,
                             double *out);

@@ -1,0 +1,227 @@
+/*
+** quad_time.c -- a quadratic's time at a length: the t with |s(t) - g| <=
+** tol, s(t) = 2 int_0^t |v|, v = a + t b (quad.c's form, set up once).
+**
+** Each length from 0 is quad.c's closed form from the set-up (one square
+** root, |v(t)|, and one log), and the last step needs none: the speed
+** sigma = 2|v| has sigma' = 2 v.b/|v| and, since v x b = a x c is
+** constant, sigma'' = 2 (|v|^2 |b|^2 - (v.b)^2)/|v|^3 = 2 k^2/|v|^3
+** exactly (k = |a x c|), and so on (step_from).  From a point x where f =
+** s(x) - g is known, the root e of the Taylor polynomial of s - g (series
+** reversion) leaves |f(x + e)| at most the polynomial's value there plus
+** Taylor's remainder, which the closed-form derivative bounds with |v| >=
+** max(k/|b|, |v(x)| - |b| |e|) on the step (k/|b| is |v|'s least value,
+** at the vertex; |dv/dt| = |b|).  Where that, the known value's own error
+** and the step's roundings stay within tol, x + e is the answer without
+** another length (as src/gauss/time.c's second_order_step on a cubic).
+** Else x + e is measured and the step repeats, inside a bracket of
+** measured points, bisecting where a step leaves it (a cusp: |v| = 0 at
+** the vertex when k = 0), capped.  A sweep over ascending distances (the
+** path walks) steps from the last answer first, carrying its bound.
+*/
+#include <float.h>
+#include <math.h>
+
+#include "arclen.h"
+#include "curve/numeric.h"
+#include "segment/segment.h"
+
+/* 64 halvings take [0, 1] below one ulp of any t, so the cap is reached
+** only by a length noisier than the tolerance asked for */
+#define MAX_STEPS 100
+
+/* The unit roundoff, 2^-53. */
+#define U (DBL_EPSILON / 2)
+
+/* The closed form's rounding, in units of U of its value: a sum of
+** positive terms (quad.c: u1 - u0 set exactly, no difference of nearly
+** equal values), each a product or quotient of a few rounded factors (the
+** squares' sums, the roots, log or log1p within an ulp of their value).
+** tools/ref_quad_times.py measures it on quadratics with exact legs
+** against mpmath: at most 6.2 U (the legs' own rounding is the set-up's,
+** shared by every length of the segment: a change of the curve by an ulp,
+** not of the measure).  The Gauss branch is below 1e-19 of it (quad.c). */
+#define FORM_ROUNDING 8
+
+/* x times 2^e for the form's scale (both powers exact within +-1000). */
+static double times_pow2(double x, int e, double p) {
+  return e > -1000 && e < 1000 ? x * p : ldexp(x, e);
+}
+
+/* The step from x, where f = s(x) - g within err and |v(x)| = S > 0:
+** x + *e with the bound *bound of |s(x + *e) - g|; 1 when that is within
+** tol.  The speed's derivatives at x are exact expressions (the head):
+** sigma = 2S, sigma' = 2u/S, sigma'' = 2k^2/S^3, sigma''' = -6k^2 u/S^5 (u
+** = v.b), so e is the root of the Taylor polynomial of fourth order by
+** series reversion (as src/gauss/time.c's reversion_tail), whose value
+** there is computed, and the remainder is max|sigma''''| |e|^5/120 with
+** sigma'''' = 6k^2 (5u^2 - B S^2)/S^7, at most 24 k^2 B/|v|^5 in size
+** (u^2 <= B S^2), and |v| >= m on the step.  Roundings: sigma's (1.5 U),
+** u's (U (|u0| + 2xB)) and the quotients' move each term by a few U of
+** itself, and the polynomial's terms are each at most a few |f|: 16 U of
+** their sizes' sum covers them. */
+static int step_from(const arclen_quad_form *F, double x, double f,
+                     double err, double S, double tol, double *e,
+                     double *bound) {
+  double u = F->u0 + x * F->B, inv = 1 / S, k2 = F->k * F->k;
+  double sig = 2 * S, s1 = 2 * u * inv, s2 = 2 * k2 * inv * inv * inv;
+  double s3 = -3 * s2 * u * inv * inv, h = inv / 2, d = -f * h;  /* h = 1/sigma */
+  double b2 = s1 * h / 2, b3 = s2 * h / 6, b4 = s3 * h / 24;
+  double tail, ae, e2, m, m2, t1, t2, t3, t4;
+  tail = d * d * (-b2 + d * (2 * b2 * b2 - b3 + d * (5 * b2 * (b3 - b2 * b2) - b4)));
+  *e = d + tail;
+  ae = fabs(*e);
+  e2 = *e * *e;
+  /* the polynomial at e: f + sigma e = sigma tail (sigma d = -f); where
+  ** it alone exceeds tol (a guess far off) the rest is not needed */
+  t1 = sig * tail; t2 = s1 / 2 * e2; t3 = s2 / 6 * e2 * *e; t4 = s3 / 24 * e2 * e2;
+  *bound = fabs(t1 + t2 + t3 + t4) + err;
+  m = S - F->q * ae;                     /* |v| on [x, x + e], from below */
+  if (F->K > m) m = F->K;
+  if (!(m > 0) || !(*bound <= tol)) return 0;
+  m2 = m * m;
+  *bound += 24 * k2 * F->B / (m2 * m2 * m) * (e2 * e2 * ae) / 120
+           + 16 * U * (sig * ae + fabs(t2) + fabs(t3) + fabs(t4))
+           + 2 * U * (fabs(F->u0) + 2 * x * F->B) * inv * e2;
+  /* the bound's own few roundings: a margin of 2^-10 */
+  return *bound <= tol * (1 - 1.0 / 1024);
+}
+
+/* The measured point x: s(x) into *len, |v(x)| into *S. */
+static double measure(const arclen_quad_form *F, double x, double *S) {
+  double m1, S1, len;
+  int gauss;
+  len = arclen_quad_form_length(F, x, &m1, &S1, &gauss);
+  *S = S1 >= 0 ? S1 : sqrt(m1);
+  return len;
+}
+
+/* |v(x)| where no length was measured (a chained start). */
+static double speed_of(const arclen_quad_form *F, double x) {
+  double m = 0, v;
+  int i;
+  for (i = 0; i < F->dim; i++) {
+    v = (1 - x) * F->a[i] + x * F->c[i];
+    m += v * v;
+  }
+  return sqrt(m);
+}
+
+void arclen_quad_time_setup(const double *p, int dim, arclen_quad_form *F) {
+  double m = 0;
+  int i;
+  arclen_quad_setup(p, dim, F);
+  if (F->zero) return;
+  F->S0 = sqrt(F->m0);
+  F->K = F->q > 0 ? F->k / F->q : 0;
+  for (i = 0; i < dim; i++) m += F->c[i] * F->c[i];
+  F->Sc = sqrt(m);
+}
+
+/* Newton's steps on the guess's quintic: 1 took 178 ns a time on random
+** quadratics (1.79 lengths), 2 took 186 (1.64), 3 207 (1.65): each step
+** costs about as much as the lengths it saves (doc/benchmarks.md) */
+#define GUESS_STEPS 1
+
+/* The first t for the goal g: the quintic Hermite interpolant of s(t) on
+** [0, 1] from s = 0, T at the ends, the speeds p0, p1 and their slopes r0,
+** r1 there (all exact expressions of the set-up), inverted by Newton's
+** steps from the length fraction, each kept inside (0, 1).  Against the
+** cubic Hermite guess (the speeds only) it halves the times that need
+** more than one length after it. */
+static double quintic_guess(const arclen_quad_form *F, double T, double g) {
+  double p0 = 2 * F->S0, p1 = 2 * F->Sc;
+  double r0 = 2 * F->u0 / F->S0, r1 = 2 * (F->u0 + F->B) / F->Sc;
+  double c3 = 10 * T - 6 * p0 - 4 * p1 - 1.5 * r0 + 0.5 * r1;
+  double c4 = -15 * T + 8 * p0 + 7 * p1 + 1.5 * r0 - r1;
+  double c5 = 6 * T - 3 * p0 - 3 * p1 - 0.5 * r0 + 0.5 * r1;
+  double x = g / T, v, dv, nx;
+  int i;
+  if (!(F->S0 > 0 && F->Sc > 0)) return x;       /* a cusp at an end */
+  for (i = 0; i < GUESS_STEPS; i++) {
+    v = x * (p0 + x * (r0 / 2 + x * (c3 + x * (c4 + x * c5)))) - g;
+    dv = p0 + x * (r0 + x * (3 * c3 + x * (4 * c4 + x * 5 * c5)));
+    nx = dv > 0 ? x - v / dv : -1;
+    if (!(nx > 0 && nx < 1)) break;               /* keep the last good x */
+    x = nx;
+  }
+  return x;
+}
+
+int arclen_quad_time(const arclen_quad_form *F, double total, double s,
+                     double tol, double from[3], double *t, long *evals) {
+  int e2 = -F->scale, i;
+  double down = F->down, up = F->up;
+  double g, T, lo, hi = 1, x, f, err, S, e = 0, bnd, len;
+  double best, bestf, bestlen, besterr;
+  *evals = 0;
+  if (F->zero) {                     /* a point: every length is 0 */
+    *t = from[0] = from[1] = from[2] = 0;
+    return ARCLEN_OK;
+  }
+  /* the certified start already answers (a distance within tol of the
+  ** last one), or lies beyond s (unsorted input): start from 0 */
+  if (fabs(from[1] - s) + from[2] <= tol) { *t = from[0]; return ARCLEN_OK; }
+  if (from[1] > s) from[0] = from[1] = from[2] = 0;
+  if (!(s > 0)) { *t = from[0] = from[1] = from[2] = 0; return ARCLEN_OK; }
+  if (!(s < total)) {
+    *t = from[0] = 1; from[1] = total; from[2] = HUGE_VAL;   /* total: the caller's */
+    return ARCLEN_OK;
+  }
+  /* the scaled form's units: exact (powers of two; a goal that becomes
+  ** subnormal loses digits below 2^-1074 of a length near 1) */
+  g = times_pow2(s, e2, down);
+  T = times_pow2(total, e2, down);
+  tol = times_pow2(tol, e2, down);
+  lo = from[0];
+  best = lo;
+  bestlen = times_pow2(from[1], e2, down);
+  besterr = times_pow2(from[2], e2, down);
+  bestf = fabs(bestlen - g);
+  if (lo > 0) {
+    /* a sweep's last answer: the step from it, its bound carried */
+    S = speed_of(F, lo);
+    f = bestlen - g;
+    if (S > 0 && step_from(F, lo, f, besterr + U * fabs(f), S, tol, &e, &bnd)
+        && lo + e > lo && lo + e < 1) {
+      *t = from[0] = lo + e;
+      from[1] = s;
+      from[2] = times_pow2(bnd, F->scale, up);
+      return ARCLEN_OK;
+    }
+    x = S > 0 ? lo + e : -1;
+  } else {
+    x = quintic_guess(F, T, g);
+  }
+  if (!(x > lo && x < hi)) x = lo + (hi - lo) * (g - bestlen) / (T - bestlen);
+  if (!(x > lo && x < hi)) x = lo + (hi - lo) / 2;
+  for (i = 0; i < MAX_STEPS; i++) {
+    len = measure(F, x, &S);
+    ++*evals;
+    f = len - g;
+    /* the closed form's rounding and the difference's */
+    err = FORM_ROUNDING * U * len + U * fabs(f);
+    /* a measured length within tol answers (the closed form is the
+    ** length's reference, as for arclen_quad_length itself) */
+    if (fabs(f) <= tol || fabs(f) < bestf) {
+      best = x; bestf = fabs(f); bestlen = len; besterr = err;
+      if (fabs(f) <= tol) break;
+    }
+    if (f < 0) lo = x; else hi = x;
+    if (S > 0 && step_from(F, x, f, err, S, tol, &e, &bnd)
+        && x + e > lo && x + e < hi) {
+      *t = from[0] = x + e;
+      from[1] = s;
+      from[2] = times_pow2(bnd, F->scale, up);
+      return ARCLEN_OK;
+    }
+    e = S > 0 ? x + e : -1;                 /* not certified: measure it */
+    if (!(e > lo && e < hi)) e = lo + (hi - lo) / 2;
+    if (e == x || !(e > lo && e < hi)) break;      /* lo, hi adjacent */
+    x = e;
+  }
+  *t = from[0] = best;
+  from[1] = times_pow2(bestlen, F->scale, up);
+  from[2] = times_pow2(besterr, F->scale, up);
+  return ARCLEN_OK;
+}
