@@ -1,0 +1,214 @@
+-- quad_time_spec.lua -- a quadratic's time at a length (issue 31 item 8,
+-- src/segment/quad_time.c): lengths from one set-up, and the last step
+-- certified by the speed's exact derivatives (sigma'' = 2 k^2/|v|^3) instead
+-- of another length.  Each answer t is checked by the closed form over [0,
+-- t] (arclen.segment_length, within 16 eps of 40-digit references:
+-- segment_spec) on random and hostile quadratics: cusps (k = 0), straight
+-- and nearly straight ones, a zero leg, tiny and huge scales, 3D, and
+-- distances at 0, at L, just inside both, and between; and a sweep of
+-- ascending distances (the path walks') against the single times.
+local arclen = require "arclen"
+local H = require "helpers"
+
+local EPS = 2 ^ -52
+local abs, max = math.abs, math.max
+
+-- a fixed generator: the same quadratics on every host
+local seed = 12345
+local function rand()
+  seed = (seed * 48271) % 2147483647
+  return seed / 2147483647
+end
+
+local HOSTILE = {
+  {"cusp: P2 = P0, turns back at t = 1/2", {0, 0, 1, 0, 0, 0}},
+  {"cusp: collinear, turns back at t = 2/3", {0, 0, 2, 0, 1, 0}},
+  {"collinear, no turn", {0, 0, 1, 0, 5, 0}},
+  {"straight, uniform speed (b = 0)", {0, 0, 1, 1, 2, 2}},
+  {"first leg 0 (speed 0 at t = 0)", {0, 0, 0, 0, 3, 1}},
+  {"second leg 0 (speed 0 at t = 1)", {0, 0, 3, 1, 3, 1}},
+  {"nearly straight (the Gauss branch)", {0, 0, 1.01, 1, 2, 2}},
+  {"tall arch", {0, 0, 1, 100, 2, 0}},
+  {"thin hairpin (k small)", {0, 0, 50, 1e-6, 0, 2e-6}},
+  {"skew arch", {0.5, 1, 7, 9.25, 3, -2}},
+  {"arch at 1e-300", {0, 0, 1e-300, 2e-300, 2e-300, 0}},
+  {"arch at 1e300", {0, 0, 1e300, 2e300, 2e300, 0}},
+  -- the C core's halved legs; the Lua engine's length overflows here
+  {"past DBL_MAX/2 (halved legs)", {-9e307, 0, 9e307, 0, -3e307, 3e307}, c_only = true},
+  {"3D arch", {0, 0, 0, 1, 2, 3, 2, 0, 1}},
+  {"3D cusp", {0, 0, 0, 1, 1, 1, 0, 0, 0}},
+}
+
+local function cases()
+  local list = {}
+  for _, c in ipairs(HOSTILE) do
+    if H.engine == "c" or not c.c_only then list[#list + 1] = c end
+  end
+  for i = 1, 60 do
+    local q = {}
+    for k = 1, 6 do q[k] = 10 * rand() - 5 end
+    list[#list + 1] = {"random " .. i, q}
+  end
+  for i = 1, 10 do
+    local q = {}
+    for k = 1, 9 do q[k] = 10 * rand() - 5 end
+    list[#list + 1] = {"random 3D " .. i, q}
+  end
+  return list
+end
+
+-- the fractions of L asked for: 0, just inside both ends, and between
+local FRACTIONS = {0, 1e-17, 1e-9, 0.01, 0.25, 0.5, 0.7, 0.999, 1 - 1e-9, 1 - 2 ^ -52, 1}
+
+local function miss(seg, t, s)
+  return abs(arclen.segment_length("quad", seg, {t1 = t}) - s)
+end
+
+describe("a quadratic's time at a length (quad_time.c)", function()
+  local tols = H.engine == "c" and {1e-6, 1e-12, 1e-15} or {1e-6, 1e-12}
+  for _, c in ipairs(cases()) do
+    it(c[1] .. ": |s(t) - s| <= tol L at 0, L, just inside and between", function()
+      local seg = c[2]
+      local L = arclen.segment_length("quad", seg)
+      for _, tol in ipairs(tols) do
+        for _, f in ipairs(FRACTIONS) do
+          local s = f * L
+          local t = arclen.segment_time("quad", seg, s, {tol = tol})
+          assert(t >= 0 and t <= 1, "t in [0, 1]")
+          -- the closed form's own rounding at t: 4 eps of L (segment_spec)
+          assert(miss(seg, t, s) <= tol * L + 4 * EPS * L,
+                 ("tol %g f=%.17g: miss %.3g L"):format(tol, f, miss(seg, t, s) / L))
+          if f == 0 then assert.are.equal(0, t) end
+          if f == 1 then assert.are.equal(1, t) end
+        end
+      end
+    end)
+  end
+
+  it("at the length of [0, t] for 200 random t, the time's length is within tol", function()
+    for _, c in ipairs({HOSTILE[2], HOSTILE[8], HOSTILE[9], HOSTILE[H.engine == "c" and 13 or 12]}) do
+      local seg = c[2]
+      local L = arclen.segment_length("quad", seg)
+      for _ = 1, 200 do
+        local s = arclen.segment_length("quad", seg, {t1 = rand()})
+        local t = arclen.segment_time("quad", seg, s, {tol = 1e-12})
+        assert(miss(seg, t, s) <= 1e-12 * L + 4 * EPS * L, c[1])
+      end
+    end
+  end)
+
+  if H.engine == "c" then
+    -- hk2-style count: the lengths measured after the total, random
+    -- quadratics in [-5, 5]^2 at L/2; 3.2 on average before the certified
+    -- step (Hermite guess, Halley's steps on exact lengths), 1.66 with it
+    it("takes 2 or fewer lengths on average after the total (tol 1e-12)", function()
+      local n, sum = 0, 0
+      for _ = 1, 500 do
+        local q = {}
+        for k = 1, 6 do q[k] = 10 * rand() - 5 end
+        local L = arclen.segment_length("quad", q)
+        local _, info = arclen.segment_time("quad", q, L / 2, {tol = 1e-12, info = true})
+        n, sum = n + 1, sum + info.pieces
+      end
+      assert(sum / n <= 2, ("%.2f lengths on average"):format(sum / n))
+    end)
+  end
+
+  it("a sweep of 300 ascending distances equals the single times within tol", function()
+    local tol = H.engine == "c" and 1e-15 or 1e-12
+    for _, c in ipairs({HOSTILE[1], HOSTILE[8], HOSTILE[10], HOSTILE[12], {"random", {-4, 3, 2, -1, 4.5, 2.5}}}) do
+      local seg = c[2]
+      local L = arclen.segment_length("quad", seg)
+      local ds = {}
+      for i = 0, 299 do ds[#ds + 1] = L * (i / 299) ^ 1.5 end
+      local ks, ts = {}, {}
+      arclen._walk_times({seg}, {[0] = 0, L}, ds, tol, false, ks, ts, "Q")
+      local prev = 0
+      for q, d in ipairs(ds) do
+        local t = ts[q]
+        assert(t >= prev, "times ascend")
+        prev = t
+        local one = arclen.segment_time("quad", seg, d, {tol = tol})
+        local m1, m2 = miss(seg, t, d), miss(seg, one, d)
+        assert(m1 <= tol * L + 4 * EPS * L, ("%s sweep %d: %.3g L"):format(c[1], q, m1 / L))
+        assert(m2 <= tol * L + 4 * EPS * L, ("%s single %d: %.3g L"):format(c[1], q, m2 / L))
+        assert(abs(arclen.segment_length("quad", seg, {t1 = t}) -
+                   arclen.segment_length("quad", seg, {t1 = one})) <= 2 * tol * L + 8 * EPS * L)
+      end
+    end
+  end)
+end)
+
+describe("a quadratic's time against 40-digit references", function()
+  -- spec/data/quad_times.tsv (tools/ref_quad_times.py): the true time T at
+  -- f L and the speed V there, from the textbook closed form at 60 digits
+  local rows = H.tsv("quad_times.tsv")
+  local function seg_of(row)
+    local q = {}
+    for x in row.seg:gmatch("%S+") do q[#q + 1] = assert(tonumber(x)) end
+    return q
+  end
+
+  it("each time misses the true length by at most tol L (|t - T| V)", function()
+    local n = 0
+    for _, row in ipairs(rows) do
+      if row.kind == "time" and (H.engine == "c" or row.name ~= "past DBL_MAX/2") then
+        local seg, f, L = seg_of(row), tonumber(row.f_or_t), tonumber(row.L_or_s)
+        local T, VL = tonumber(row.T), tonumber(row.VL)
+        for _, tol in ipairs(H.engine == "c" and {1e-6, 1e-12, 1e-15} or {1e-6, 1e-12}) do
+          local t = arclen.segment_time("quad", seg, f * L, {tol = tol})
+          -- in units of L; the closed form's bound at t (segment_spec: a
+          -- few eps of L)
+          local m = abs(t - T) * VL
+          assert(m <= 1.01 * tol + 4 * EPS,
+                 ("%s f=%s tol %g: %.3g L"):format(row.name, row.f_or_t, tol, m))
+          n = n + 1
+        end
+      end
+    end
+    assert(n >= 300, "rows read")
+  end)
+
+  if H.engine == "c" then
+    -- quad_time.c's FORM_ROUNDING: the closed form's own rounding, without
+    -- the legs' (exact here), at most 8 units of 2^-53 of the length
+    it("the closed form over [0, t] is within 8 U of its value (exact legs)", function()
+      local worst, n = 0, 0
+      for _, row in ipairs(rows) do
+        if row.kind == "rounding" then
+          local seg, t, want = seg_of(row), tonumber(row.f_or_t), tonumber(row.L_or_s)
+          local got = arclen.segment_length("quad", seg, {t1 = t})
+          worst = max(worst, abs(got - want) / want / 2 ^ -53)
+          n = n + 1
+        end
+      end
+      assert(n >= 400, "rows read")
+      assert(worst <= 8, ("%.2f U"):format(worst))
+    end)
+  end
+end)
+
+describe("a quadratic's time: the measure does not change", function()
+  it("segment_time clamps at segment_length's total (one set-up for both)", function()
+    -- the time at exactly L is 1 and just below L is below 1: the total the
+    -- search clamps against is the closed form's own
+    for _, c in ipairs(cases()) do
+      local L = arclen.segment_length("quad", c[2])
+      assert.are.equal(1, arclen.segment_time("quad", c[2], L))
+      if L > 0 then
+        local below = L - L * 2 ^ -40
+        assert(arclen.segment_time("quad", c[2], below, {tol = 1e-15}) < 1, c[1])
+      end
+    end
+  end)
+
+  it("the whole sweep's answers lie in [0, 1] and reach 1 at L", function()
+    local seg = {0, 0, 1, 2, 2, 0}
+    local L = arclen.segment_length("quad", seg)
+    local ks, ts = {}, {}
+    arclen._walk_times({seg}, {[0] = 0, L}, {0, L / 2, L}, 1e-12, false, ks, ts, "Q")
+    assert.are.equal(0, ts[1])
+    assert.are.equal(1, ts[3])
+    assert(max(ts[2], 0) > 0 and ts[2] < 1)
+  end)
+end)
