@@ -65,16 +65,19 @@ static int step_from(const arclen_quad_form *F, double x, double f,
                      double *bound) {
   double u = F->u0 + x * F->B, inv = 1 / S, k2 = F->k * F->k;
   double sig = 2 * S, s1 = 2 * u * inv, s2 = 2 * k2 * inv * inv * inv;
-  double s3 = -3 * s2 * u * inv * inv, h = inv / 2, d = -f * h;  /* h = 1/sigma */
+  double s3 = -3 * s2 * u * inv * inv;
+  double h = inv / 2, d = -f * h;                       /* h = 1/sigma */
   double b2 = s1 * h / 2, b3 = s2 * h / 6, b4 = s3 * h / 24;
   double tail, ae, e2, m, m2, t1, t2, t3, t4;
-  tail = d * d * (-b2 + d * (2 * b2 * b2 - b3 + d * (5 * b2 * (b3 - b2 * b2) - b4)));
+  tail = d * d * (-b2 + d * (2 * b2 * b2 - b3
+                             + d * (5 * b2 * (b3 - b2 * b2) - b4)));
   *e = d + tail;
   ae = fabs(*e);
   e2 = *e * *e;
   /* the polynomial at e: f + sigma e = sigma tail (sigma d = -f); where
   ** it alone exceeds tol (a guess far off) the rest is not needed */
-  t1 = sig * tail; t2 = s1 / 2 * e2; t3 = s2 / 6 * e2 * *e; t4 = s3 / 24 * e2 * e2;
+  t1 = sig * tail; t2 = s1 / 2 * e2;
+  t3 = s2 / 6 * e2 * *e; t4 = s3 / 24 * e2 * e2;
   *bound = fabs(t1 + t2 + t3 + t4) + err;
   m = S - F->q * ae;                     /* |v| on [x, x + e], from below */
   if (F->K > m) m = F->K;
@@ -119,7 +122,7 @@ void arclen_quad_time_setup(const double *p, int dim, arclen_quad_form *F) {
 }
 
 /* Newton's steps on the guess's quintic: 1 took 178 ns a time on random
-** quadratics (1.79 lengths), 2 took 186 (1.64), 3 207 (1.65): each step
+** quadratics (1.79 lengths), 2 took 186 (1.65), 4 216 (1.66): each step
 ** costs about as much as the lengths it saves (doc/benchmarks.md) */
 #define GUESS_STEPS 1
 
@@ -165,7 +168,8 @@ int arclen_quad_time(const arclen_quad_form *F, double total, double s,
   if (from[1] > s) from[0] = from[1] = from[2] = 0;
   if (!(s > 0)) { *t = from[0] = from[1] = from[2] = 0; return ARCLEN_OK; }
   if (!(s < total)) {
-    *t = from[0] = 1; from[1] = total; from[2] = HUGE_VAL;   /* total: the caller's */
+    /* total: the caller's, no bound of its own */
+    *t = from[0] = 1; from[1] = total; from[2] = HUGE_VAL;
     return ARCLEN_OK;
   }
   /* the scaled form's units: exact (powers of two; a goal that becomes

@@ -517,7 +517,8 @@ static int quad_time(int dim, const double *seg, double s, double rtol,
   long evals = 0;
   int gauss, rc;
   arclen_quad_time_setup(seg, dim, &f);
-  total = arclen_quad_form_unscale(&f, arclen_quad_form_length(&f, 1, &m1, &S1, &gauss));
+  total = arclen_quad_form_length(&f, 1, &m1, &S1, &gauss);
+  total = arclen_quad_form_unscale(&f, total);
   if (info) {
     info->branch = gauss ? "quad-gauss" : "quad";
     info->evals += gauss ? 10 : 0;

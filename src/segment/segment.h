@@ -25,10 +25,11 @@ int arclen_quad_length(const double *p, int dim, double t0, double t1,
 ** a length (quad_time.c): the legs a = P1 - P0, c = P2 - P1 scaled by a
 ** power of two into [1/2, 1) (halved first where a difference overflows),
 ** b = c - a, B = |b|^2, q = |b|, k = |a x c|, and v(0) = a's u0 = a.b, m0 =
-** |a|^2, S0 = |a|, Sc = |c| = |v(1)| and K = k/q = min |v| (-1 until
-** the time's set-up takes them); lengths of the scaled form times 2^scale (up, and down =
-** 2^-scale, where both are doubles: |scale| < 1000) are the segment's.
-** zero: all three points equal. */
+** |a|^2; for the time (arclen_quad_setup; -1 until quad_time.c's set-up
+** takes them) S0 = |a|, Sc = |c| = |v(1)|, K = k/q = min |v|, and up =
+** 2^scale, down = 2^-scale where both are doubles (|scale| < 1000).
+** Lengths of the scaled form times 2^scale are the segment's.  zero: all
+** three points equal. */
 typedef struct arclen_quad_form {
   double a[3], c[3], b[3], B, q, k, u0, m0, S0, Sc, K, up, down;
   int dim, scale, zero;
