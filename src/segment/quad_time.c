@@ -85,7 +85,10 @@ static int step_from(const arclen_quad_form *F, double x, double f,
   m2 = m * m;
   *bound += 24 * k2 * F->B / (m2 * m2 * m) * (e2 * e2 * ae) / 120
            + 16 * U * (sig * ae + fabs(t2) + fabs(t3) + fabs(t4))
-           + 2 * U * (fabs(F->u0) + 2 * x * F->B) * inv * e2;
+           + 2 * U * (fabs(F->u0) + 2 * x * F->B) * inv * e2
+           /* x + e rounded to a double moves by U (x + |e|), where the
+           ** speed is at most 2 (|v(x)| + |b| |e|) */
+           + 2 * (S + F->q * ae) * U * (x + ae);
   /* the bound's own few roundings: a margin of 2^-10 */
   return *bound <= tol * (1 - 1.0 / 1024);
 }
