@@ -8,7 +8,8 @@ spec/quad_time_spec.lua), two kinds of rows in spec/data/quad_times.tsv:
             the speed V = |B'(T)| there over L (VL, finite where V is
             not): the spec's answer t misses by about |t - T| VL of L.
   rounding  a quadratic whose legs a = P1 - P0, c = P2 - P1 are exact in
-            doubles (dyadic coordinates), a t and s(t): the closed form's
+            doubles (dyadic coordinates; 2D and 3D, hairpins, collinear
+            legs, sharp vertices), a t and s(t): the closed form's
             own rounding, which quad_time.c's certificate counts (its
             FORM_ROUNDING), measured without the legs' rounding.
 
@@ -143,16 +144,27 @@ def main():
             rows.append(["time", name, str(dim), " ".join(repr(float(x)) for x in p),
                          f, mp.nstr(L, 40), mp.nstr(T, 40),
                          mp.nstr(speed(p, dim, T) / L if L else 0, 40)])
-    for i in range(400):
-        a = [rnd.randint(-2 ** 20, 2 ** 20) / 2 ** 18 for _ in range(2)]
-        if i % 4 == 0:      # c nearly -a: a sharp vertex
+    for i in range(600):
+        # exact legs: dyadic coordinates, P0 = 0; 2D and 3D; sharp vertices,
+        # hairpins, collinear legs and plain ones
+        dim = 3 if i % 3 == 0 else 2
+        a = [rnd.randint(-2 ** 20, 2 ** 20) / 2 ** 18 for _ in range(dim)]
+        kind = i % 5
+        if kind == 0:       # a hairpin: c within 2^-14 of -a
+            c = [-x + rnd.randint(-2 ** 4, 2 ** 4) / 2 ** 18 for x in a]
+        elif kind == 1:     # collinear legs (k = 0), a turn or none
+            lam = rnd.randint(-2 ** 10, 2 ** 10) / 2 ** 8
+            c = [x * lam for x in a]
+        elif kind == 2:     # a sharp vertex
             c = [-x + rnd.randint(-2 ** 10, 2 ** 10) / 2 ** 18 for x in a]
         else:
-            c = [rnd.randint(-2 ** 20, 2 ** 20) / 2 ** 18 for _ in range(2)]
-        p = [0.0, 0.0, a[0], a[1], a[0] + c[0], a[1] + c[1]]
+            c = [rnd.randint(-2 ** 20, 2 ** 20) / 2 ** 18 for _ in range(dim)]
+        p = [0.0] * dim + a + [a[k] + c[k] for k in range(dim)]
         t = rnd.random()
-        s = length_fn(p, 2)(mp.mpf(t))
-        rows.append(["rounding", "exact legs %d" % (i + 1), "2", " ".join(repr(x) for x in p),
+        s = length_fn(p, dim)(mp.mpf(t))
+        if s == 0:
+            continue
+        rows.append(["rounding", "exact legs %d" % (i + 1), str(dim), " ".join(repr(x) for x in p),
                      repr(t), mp.nstr(s, 40), "", ""])
     with open(OUT, "w") as fh:
         fh.write("# tools/ref_quad_times.py: a quadratic's times at f L (kind time) and\n")

@@ -37,8 +37,9 @@
 ** positive terms (quad.c: u1 - u0 set exactly, no difference of nearly
 ** equal values), each a product or quotient of a few rounded factors (the
 ** squares' sums, the roots, log or log1p within an ulp of their value).
-** tools/ref_quad_times.py measures it on quadratics with exact legs
-** against mpmath: at most 6.2 U (the legs' own rounding is the set-up's,
+** Against mpmath on quadratics with exact legs it read at most 4.6 U on
+** tools/ref_quad_times.py's 600 (2D, 3D, hairpins, collinear legs) and
+** 6.2 U on 3000 more in a scratch set (the legs' own rounding is the set-up's,
 ** shared by every length of the segment: a change of the curve by an ulp,
 ** not of the measure).  The Gauss branch is below 1e-19 of it (quad.c). */
 #define FORM_ROUNDING 8
@@ -56,39 +57,62 @@ static double times_pow2(double x, int e, double p) {
 ** series reversion (as src/gauss/time.c's reversion_tail), whose value
 ** there is computed, and the remainder is max|sigma''''| |e|^5/120 with
 ** sigma'''' = 6k^2 (5u^2 - B S^2)/S^7, at most 24 k^2 B/|v|^5 in size
-** (u^2 <= B S^2), and |v| >= m on the step.  Roundings: sigma's (1.5 U),
-** u's (U (|u0| + 2xB)) and the quotients' move each term by a few U of
-** itself, and the polynomial's terms are each at most a few |f|: 16 U of
-** their sizes' sum covers them. */
+** (u^2 <= B S^2), and |v| >= m on the step.  The roundings, against the
+** exact parabola of the scaled legs a and c (bounds in units of U, to
+** first order, then times 3/2 where dS <= S/16):
+**   S: speed_vector's components within 3 (|a_i| + |c_i|) of theirs (1 -
+**      x itself rounded), the norm 2 of itself: dS = 6 (|a| + |c|) + 3 S
+**      (near a cusp S is far below |a|: the error is not relative);
+**   u = u0 + x B: u0 = a.b with b = c - a rounded, 3 |a||b|; B 4 of
+**      itself; the product and the sum: du = 4 (|a| q + 2 x B) + |u|;
+**   k = |a x c|: 6 |a||c| (the products before the difference);
+** each derivative's error from those (first order), each times |e|^n/n!;
+** the polynomial's own evaluation (f + sigma e = sigma tail to 3 |f| + 1
+** sigma |e|, each term a few): 16 of the terms' sizes; and m from below
+** with S - dS and (k - dk)/q. */
 static int step_from(const arclen_quad_form *F, double x, double f,
                      double err, double S, double tol, double *e,
                      double *bound) {
-  double u = F->u0 + x * F->B, inv = 1 / S, k2 = F->k * F->k;
+  double u = F->u0 + x * F->B, inv = 1 / S, k = F->k, k2 = k * k;
   double sig = 2 * S, s1 = 2 * u * inv, s2 = 2 * k2 * inv * inv * inv;
   double s3 = -3 * s2 * u * inv * inv;
   double h = inv / 2, d = -f * h;                       /* h = 1/sigma */
   double b2 = s1 * h / 2, b3 = s2 * h / 6, b4 = s3 * h / 24;
-  double tail, ae, e2, m, m2, t1, t2, t3, t4;
+  double tail, ae, e2, e3, m, m2, t1, t2, t3, t4, dS, du, dk, dk2, rS, r;
   tail = d * d * (-b2 + d * (2 * b2 * b2 - b3
                              + d * (5 * b2 * (b3 - b2 * b2) - b4)));
   *e = d + tail;
   ae = fabs(*e);
   e2 = *e * *e;
+  e3 = e2 * ae;
   /* the polynomial at e: f + sigma e = sigma tail (sigma d = -f); where
   ** it alone exceeds tol (a guess far off) the rest is not needed */
   t1 = sig * tail; t2 = s1 / 2 * e2;
   t3 = s2 / 6 * e2 * *e; t4 = s3 / 24 * e2 * e2;
   *bound = fabs(t1 + t2 + t3 + t4) + err;
-  m = S - F->q * ae;                     /* |v| on [x, x + e], from below */
-  if (F->K > m) m = F->K;
-  if (!(m > 0) || !(*bound <= tol)) return 0;
+  if (!(*bound <= tol)) return 0;
+  dS = U * (6 * (F->S0 + F->Sc) + 3 * S);
+  du = U * (4 * (F->S0 * F->q + 2 * x * F->B) + fabs(u));
+  dk = 6 * U * F->S0 * F->Sc;
+  dk2 = (2 * k + dk) * dk;                    /* |k^2 - k_true^2| */
+  rS = dS * inv;
+  m = S - dS - F->q * (1 + 8 * U) * ae;  /* |v| on [x, x + e], from below */
+  if (F->q > 0 && (k - dk) / F->q * (1 - 4 * U) > m)
+    m = (k - dk) / F->q * (1 - 4 * U);          /* the least |v|, from below */
+  if (!(m > 0) || !(rS <= 1.0 / 16)) return 0;
   m2 = m * m;
-  *bound += 24 * k2 * F->B / (m2 * m2 * m) * (e2 * e2 * ae) / 120
-           + 16 * U * (sig * ae + fabs(t2) + fabs(t3) + fabs(t4))
-           + 2 * U * (fabs(F->u0) + 2 * x * F->B) * inv * e2
+  /* the derivatives' errors times |e|^n/n! */
+  r = 2 * dS * ae
+      + (2 * du * inv + fabs(s1) * (rS + 2 * U)) * e2 / 2
+      + (2 * dk2 * inv * inv * inv + s2 * (3 * rS + 4 * U)) * e3 / 6
+      + (6 * (dk2 * fabs(u) + k2 * du) * inv * inv * inv * inv * inv
+         + fabs(s3) * (5 * rS + 6 * U)) * e2 * e2 / 24;
+  *bound += 24 * (k + dk) * (k + dk) * F->B / (m2 * m2 * m) * (e2 * e3) / 120
+           + 1.5 * r
+           + 16 * U * (sig * ae + fabs(f) + fabs(t2) + fabs(t3) + fabs(t4))
            /* x + e rounded to a double moves by U (x + |e|), where the
            ** speed is at most 2 (|v(x)| + |b| |e|) */
-           + 2 * (S + F->q * ae) * U * (x + ae);
+           + 2 * (S + dS + F->q * ae) * U * (x + ae);
   /* the bound's own few roundings: a margin of 2^-10 */
   return *bound <= tol * (1 - 1.0 / 1024);
 }
