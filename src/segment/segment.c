@@ -142,9 +142,9 @@ static int len_to(const void *ctx, double t, double *len) {
 /* The speed |C'(t)| for Newton's step and invert.c's model: a conic's 2
 ** |w (1-t)^2 a + t (1-t) k + w t^2 c| / D^2, D = (1-t)^2 + 2 w t (1-t) +
 ** t^2 (the quotient rule, t^3 terms cancelled), both divided by w when w
-** > 1 so that w a stays finite.  A
-** speed that overflows anyway (w near DBL_MAX) only makes invert.c
-** bisect: every answer is certified by an exact length. */
+** > 1 so that w a stays finite.  A speed that overflows anyway (w near
+** DBL_MAX) only makes invert.c bisect: every answer is certified by an
+** exact length. */
 static double speed_at(const void *ctx, double t) {
   const seg_ctx *c = (const seg_ctx *)ctx;
   double s = 1 - t, n2 = 0, x[3], D, wa, ts, wc;
