@@ -1,9 +1,9 @@
 /*
-** invert.c -- the time at a length for the kinds with a closed-form or
-** exact length: the t with |f(t)| <= tol, f(t) = len(0, t) - s.
+** invert.c -- a conic's time at a length: the t with |f(t)| <= tol, f(t) =
+** len(0, t) - s (a quadratic's is quad_time.c's).
 **
-** An exact length (a closed form, or Carlson's integrals for a conic) is
-** the expensive step, so it only certifies: between two of them, Newton's
+** An exact length (Carlson's integrals) is the expensive step, so it only
+** certifies: between two of them, Newton's
 ** method runs on a cheap model of f, the last certified value f(x0) plus a
 ** Gauss-Legendre rule of the speed from x0 (each step adds the rule over
 ** the step itself), and the point it settles on is measured exactly.
@@ -11,8 +11,8 @@
 ** falls as (|x - x0| / rho)^(2 NODES), rho the distance to the speed's
 ** nearest complex singularity) one exact length ends the search; where it
 ** was not, the next model starts from that exact value over a far shorter
-** range.  Where the kind states a bound of the rule's error (a conic:
-** segment.c's conic_rule_error), the model certifies itself when its
+** range.  Where the kind states a bound of the rule's error (segment.c's
+** conic_rule_error), the model certifies itself when its
 ** value, its rules' bounds, its start's own bound and the roundings of
 ** the sums leave |f| <= tol: the short steps of a sweep over sorted
 ** distances then need no exact length at all, and pass their bound on.
@@ -114,21 +114,8 @@ static int certified_integral(arclen_seg_speedfn speed,
   return 1;
 }
 
-/* The step from x where f = len - s and the speed d > 0 are known: with
-** the speed's slope d1 (slope given), Halley's, x - (f/d)/(1 - f d1/(2
-** d^2)), third order where Newton's is second (a quadratic's time takes
-** one exact length fewer), where its correction stays within a factor 2;
-** else Newton's. */
-static double exact_step(arclen_seg_speedfn slope, const void *ctx, double x,
-                         double f, double d) {
-  double nd = f / d, c;
-  if (!slope) return x - nd;
-  c = 1 - nd * slope(ctx, x) / (2 * d);
-  return c >= 0.5 && c <= 2 ? x - nd / c : x - nd;
-}
-
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
-                      arclen_seg_speedfn slope, arclen_seg_boundfn bound,
+                      arclen_seg_boundfn bound,
                       arclen_seg_orderfn order, const void *ctx,
                       double total, double s, double tol, double guess,
                       int nodes, double from[3], double *t, long *evals) {
@@ -227,10 +214,9 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
     if (fabs(f) <= tol) break;
     if (f < 0) lo = x; else hi = x;
     x0 = x; f0 = f; e0 = 0;
-    /* the next model's start: Newton's (or Halley's) step on the exact
-    ** value */
+    /* the next model's start: Newton's step on the exact value */
     d = speed(ctx, x);
-    nx = d > 0 ? exact_step(slope, ctx, x, f, d) : lo + (hi - lo) / 2;
+    nx = d > 0 ? x - f / d : lo + (hi - lo) / 2;
     if (!(nx > lo && nx < hi)) nx = lo + (hi - lo) / 2;
     if (nx == x || !(nx > lo && nx < hi)) break;   /* lo, hi adjacent */
     x = nx;

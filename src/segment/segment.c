@@ -386,7 +386,7 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double total,
   }
   /* the model pays where an exact length costs Carlson's integrals (a
   ** conic, ~600 ns) */
-  rc = arclen_seg_invert(len_to, speed_at, NULL, conic_rule_error,
+  rc = arclen_seg_invert(len_to, speed_at, conic_rule_error,
                          conic_rule_order, c, total, s, rtol * total, guess,
                          10, at, t, evals);
   from[0] = at[0]; from[1] = e ? ldexp(at[1], e) : at[1];
@@ -447,7 +447,7 @@ static int conic_times(const seg_ctx *c, int e, const double *s, long n,
       double d = speed_at(c, from[0]);
       guess = d > 0 ? from[0] + (sj - from[1]) / d : -1;
     }
-    *rc = arclen_seg_invert(len_to, speed_at, NULL, conic_rule_error,
+    *rc = arclen_seg_invert(len_to, speed_at, conic_rule_error,
                             conic_rule_order, c, total, sj, tol, guess, 10,
                             from, t + j, &ev);
     if (evals) *evals += ev;

@@ -69,25 +69,21 @@ void arclen_rquad_sub(const double *p, int dim, double t0, double t1,
 ** ulps), else 0 (the general path, arclen_conic_length). */
 int arclen_rquad_circular(const double q[6], double w, double *len);
 
-/* invert.c: the t in [0, 1] with |len(0, t) - s| <= tol, for len(0, t)
-** increasing with derivative speed(t) >= 0: Newton's method on a
-** Gauss-Legendre model of the length, certified by an exact length or
-** by the model's own error bound (bound: the n-point rule's error over
-** [a, b], HUGE_VAL where it has none; NULL: exact lengths only; order:
-** the fewest nodes up to max whose bound over [a, b] is within target,
-** and that bound, 0 where none, for a long range taken by rules the bound
-** certifies before an exact length is), kept
-** inside a shrinking bracket, bisection when a step leaves it (capped).
-** total is len(0, 1) as the caller has it; guess the first t tried
-** (outside the bracket: by the length fraction); nodes the model's first
-** rule (0: no model, each Newton step on an exact length, for lengths as
-** cheap as the model).  from: a known point (t, len(0, t), the bound of
-** that length's error) at or before the answer ({0, 0, 0} to start
-** afresh), which a sweep over ascending distances passes on: it comes
-** back as the answer's.  slope (may be NULL): the speed's derivative, for
-** Halley's step from an exact length instead of Newton's.  Returns 0 or
-** the length function's error code; *evals (may be NULL) counts length
-** evaluations. */
+/* invert.c: a conic's t in [0, 1] with |len(0, t) - s| <= tol, for
+** len(0, t) increasing with derivative speed(t) >= 0: Newton's method on
+** a Gauss-Legendre model of the length, certified by the model's own
+** error bound (bound: the n-point rule's error over [a, b], HUGE_VAL
+** where it has none; order: the fewest nodes up to max whose bound over
+** [a, b] is within target, and that bound, 0 where none, for a long range
+** taken again by such rules) or else by an exact length, kept inside a
+** shrinking bracket, bisection when a step leaves it (capped).  total is
+** len(0, 1) as the caller has it; guess the first t tried (outside the
+** bracket: by the length fraction); nodes the model's first rule.  from:
+** a known point (t, len(0, t), the bound of that length's error) at or
+** before the answer ({0, 0, 0} to start afresh), which a sweep over
+** ascending distances passes on: it comes back as the answer's.  Returns
+** 0 or the length function's error code; *evals (may be NULL) counts
+** exact length evaluations. */
 typedef int (*arclen_seg_lenfn)(const void *ctx, double t, double *len);
 typedef double (*arclen_seg_speedfn)(const void *ctx, double t);
 typedef double (*arclen_seg_boundfn)(const void *ctx, double a, double b,
@@ -111,7 +107,7 @@ int arclen_seg_cover(arclen_seg_speedfn speed, arclen_seg_orderfn order,
                      const void *ctx, double a, double b, double share,
                      int depth, arclen_seg_piece *pc, int *np);
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
-                      arclen_seg_speedfn slope, arclen_seg_boundfn bound,
+                      arclen_seg_boundfn bound,
                       arclen_seg_orderfn order, const void *ctx,
                       double total, double s, double tol, double guess,
                       int nodes, double from[3], double *t, long *evals);
