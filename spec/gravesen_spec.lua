@@ -96,8 +96,7 @@ describe("gravesen: fuzz_length finds (tools/ref_gravesen_fuzz.py, mpmath)", fun
     it(method .. ": within tol at the fuzzer's rtol and at 1e-3 .. 1e-12", function()
       local worst = H.worst()
       for _, row in ipairs(rows) do
-        local c = {}
-        for x in row.c:gmatch("%S+") do c[#c + 1] = tonumber(x) end
+        local c = H.numbers(row.c)
         local t0, t1, L = tonumber(row.t0), tonumber(row.t1), tonumber(row.L)
         for _, tol in ipairs({tonumber(row.rtol), 1e-3, 1e-6, 1e-9, 1e-12}) do
           local got = arclen.length(c, {method = method, tol = tol, t0 = t0, t1 = t1})

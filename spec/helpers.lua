@@ -31,6 +31,13 @@ function helpers.tsv(name)
   return rows, header
 end
 
+-- The numbers of a field written as numbers apart by spaces ("1 2.5 -3").
+function helpers.numbers(field)
+  local out = {}
+  for x in field:gmatch("%S+") do out[#out + 1] = assert(tonumber(x), x) end
+  return out
+end
+
 -- The control points of a row of curves2d.tsv / curves3d.tsv.
 function helpers.curve(row)
   local keys = row.z0 and {"x0", "y0", "z0", "x1", "y1", "z1", "x2", "y2", "z2", "x3", "y3", "z3"}

@@ -14,11 +14,7 @@ local unpack = table.unpack or unpack
 
 local EPS = 2.220446049250313e-16
 
-local function nums(s)
-  local out = {}
-  for x in s:gmatch("%S+") do out[#out + 1] = tonumber(x) end
-  return out
-end
+local nums = H.numbers
 
 -- The data's paths: id -> {segs = {{kind =, dim =, nums =, L =, ts =, ls =,
 -- pts =, tans =}}, L = total}

@@ -209,11 +209,7 @@ describe("arclen.path: against mpmath (spec/data/paths.tsv)", function()
   for _, row in ipairs(H.tsv("paths.tsv")) do
     if row.arcs == "0" then rows[#rows + 1] = row end
   end
-  local function nums(s)
-    local out = {}
-    for v in s:gmatch("%S+") do out[#out + 1] = tonumber(v) end
-    return out
-  end
+  local nums = H.numbers
   for _, tol in ipairs({1e-12, 1e-9, 1e-6}) do
     it(("points at distances within tol * L, right segment of the time (tol %g)"):format(tol), function()
       assert.is_true(#rows >= 14)
@@ -361,9 +357,7 @@ describe("arclen.path.mplib: knot tables from LuaTeX's mplib", function()
       if p.cyclic then cyc = cyc + 1 end
       assert.are.equal(p.cyclic and #knots or #knots - 1, p:segments())
       if p:length() ~= tonumber(row.L) then bad[#bad + 1] = row.id .. " L" end
-      local gs, ts = {}, {}
-      for g in row.goals:gmatch("%S+") do gs[#gs + 1] = tonumber(g) end
-      for t in row.times:gmatch("%S+") do ts[#ts + 1] = tonumber(t) end
+      local gs, ts = H.numbers(row.goals), H.numbers(row.times)
       for i, g in ipairs(gs) do
         if p:time(g) ~= ts[i] then bad[#bad + 1] = row.id .. " time " .. i end
       end

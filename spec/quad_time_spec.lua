@@ -144,9 +144,7 @@ describe("a quadratic's time against 40-digit references", function()
   -- f L and the speed V there, from the textbook closed form at 60 digits
   local rows = H.tsv("quad_times.tsv")
   local function seg_of(row)
-    local q = {}
-    for x in row.seg:gmatch("%S+") do q[#q + 1] = assert(tonumber(x)) end
-    return q
+    return H.numbers(row.seg)
   end
 
   it("each time misses the true length by at most tol L (|t - T| V)", function()

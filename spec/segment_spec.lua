@@ -27,9 +27,7 @@ local function bound(kind)
 end
 
 local function seg_of(row)
-  local s = {}
-  for x in row.seg:gmatch("%S+") do s[#s + 1] = assert(tonumber(x)) end
-  return s
+  return H.numbers(row.seg)
 end
 
 -- the largest coordinate: what a sub-range's rounded control points are

@@ -10,9 +10,7 @@ local H = require("helpers")
 local rows = H.tsv("subranges.tsv")
 
 local function coords(row)
-  local c = {}
-  for v in row.coords:gmatch("%S+") do c[#c + 1] = assert(tonumber(v)) end
-  return c
+  return H.numbers(row.coords)
 end
 
 -- The Lua engine measures plane cubics: its run takes the 2D rows (3D

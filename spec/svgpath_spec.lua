@@ -374,8 +374,7 @@ describe("svg path data: arcs = \"cubics\" gives today's cubics", function()
       if row.src == "d" then
         local T = nil
         if row.T ~= "-" then
-          T = {}
-          for v in row.T:gmatch("%S+") do T[#T + 1] = tonumber(v) end
+          T = H.numbers(row.T)
         end
         local R, msg = arclen.svg_pathdata(row.input, tonumber(row.arc_tol), T, "cubics")
         if row.subpaths == "error" then

@@ -226,10 +226,7 @@ describe("arclen.path: the one-pass walk", function()
       if row.arcs == "0" then
         local p = path.svg(row.d, {tol = 1e-12})
         local L = tonumber(row.L)
-        local goals, xs, ys = {}, {}, {}
-        for v in row.goals:gmatch("%S+") do goals[#goals + 1] = tonumber(v) end
-        for v in row.xs:gmatch("%S+") do xs[#xs + 1] = tonumber(v) end
-        for v in row.ys:gmatch("%S+") do ys[#ys + 1] = tonumber(v) end
+        local goals, xs, ys = H.numbers(row.goals), H.numbers(row.xs), H.numbers(row.ys)
         local pts = p:points(goals)
         for q = 1, #goals do
           local scale = math.max(math.abs(xs[q]), math.abs(ys[q]))
