@@ -18,13 +18,20 @@
 #include "arclen.h"
 #include "segment/segment.h"
 
-/* The closed form and the set-up, each with two callers now, kept inline
-** in the length (as calls they cost ~1 ns of the ~32 of a bare
-** arclen_quad_length). */
+/* The set-up and a span's length each have two callers (the length and
+** the time's set-up) and must give both the same bits: one body each, not
+** inlined, so that no compiler contracts their products differently at
+** two sites (clang -ffp-contract=fast did: a time at L read 1 - 2^-50).
+** The closed form is inline in the span's one body. */
 #if defined(__GNUC__)
 #define ALWAYS_INLINE __attribute__((always_inline)) inline
+#define ONE_BODY __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define ALWAYS_INLINE inline
+#define ONE_BODY __declspec(noinline)
 #else
 #define ALWAYS_INLINE inline
+#define ONE_BODY
 #endif
 
 /* The 10-point Gauss-Legendre rule on [0, 1], nodes x < 1/2 and their
@@ -168,7 +175,7 @@ static ALWAYS_INLINE double closed_form(double u0, double S0, double S1,
 }
 
 /* arclen_quad_setup's body. */
-static ALWAYS_INLINE void setup_form(const double *p, int dim,
+static ONE_BODY void setup_form(const double *p, int dim,
                                      arclen_quad_form *f) {
   double *a = f->a, *c = f->c, *b = f->b, mx = 0;
   int k, e, half = 0;
@@ -224,7 +231,7 @@ void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f) {
 ** |v|^2 and S0 = |v| given (S0 < 0: not yet taken), the end's |v|^2 and
 ** |v| into *m1 and *S1 (the latter only where the closed form took it,
 ** else -1).  *gauss: whether the short Gauss rule served. */
-static ALWAYS_INLINE double span(const arclen_quad_form *f, double lo,
+static ONE_BODY double span(const arclen_quad_form *f, double lo,
                                  double h, double u0, double m0, double S0,
                                  double *m1, double *S1, int *gauss) {
   double v1[3], m;
