@@ -34,6 +34,9 @@
 /* model steps between two exact lengths: Newton's quadratic convergence
 ** needs 3-4 from a fair guess; more only chase a model that is off */
 #define MODEL_STEPS 8
+/* the model's first rule, over the range from its start: 10 nodes (6, 14
+** and 20 took more instructions a conic's time, doc/benchmarks.md) */
+#define MODEL_NODES 10
 /* the rule over each Newton step of the model, much shorter than the
 ** range the model started with: 5 nodes integrate degree 9 */
 #define STEP_NODES 5
@@ -118,7 +121,7 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
                       arclen_seg_boundfn bound,
                       arclen_seg_orderfn order, const void *ctx,
                       double total, double s, double tol, double guess,
-                      int nodes, double from[3], double *t, long *evals) {
+                      double from[3], double *t, long *evals) {
   double lo = from[0], hi = 1, x0, f0, e0, x, f, d, nx, q, qerr, c0, cf, ce;
   double best = from[0], bestf = fabs(from[1] - s), bestlen = from[1];
   double besterr = from[2];
@@ -142,21 +145,18 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
   for (i = 0; i < MAX_STEPS; i++) {
     /* Newton on the model f0 + int_x0^x speed, inside the bracket */
     model_piece pc[MODEL_STEPS + 1];
-    int np = 0;
-    if (nodes > 0) {
-      pc[0].a = x0; pc[0].b = x; pc[0].n = nodes;
-      pc[0].v = model(speed, ctx, nodes, x0, x);
-      np = 1;
-    }
-    q = nodes > 0 ? f0 + pc[0].v : 0;
-    for (j = 0; nodes > 0 && j < MODEL_STEPS && fabs(q) > tol / 4; j++) {
+    int np = 1;
+    pc[0].a = x0; pc[0].b = x; pc[0].n = MODEL_NODES;
+    pc[0].v = model(speed, ctx, MODEL_NODES, x0, x);
+    q = f0 + pc[0].v;
+    for (j = 0; j < MODEL_STEPS && fabs(q) > tol / 4; j++) {
       d = speed(ctx, x);
       if (!(d > 0)) break;
       nx = x - q / d;
       if (!(nx > lo && nx < hi) || nx == x) break;
       /* a long step (a poor guess) gets the first rule's order */
       pc[np].a = x; pc[np].b = nx;
-      pc[np].n = fabs(nx - x) * 8 < fabs(x - x0) ? STEP_NODES : nodes;
+      pc[np].n = fabs(nx - x) * 8 < fabs(x - x0) ? STEP_NODES : MODEL_NODES;
       pc[np].v = model(speed, ctx, pc[np].n, x, nx);
       q += pc[np++].v;
       x = nx;
@@ -164,7 +164,7 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
     /* the model certifies itself where its error bound (the rules',
     ** the start's, the sums' roundings) leaves |f| <= tol; the length
     ** at x is then s + q within qerr, and the next search starts there */
-    if (nodes > 0 && bound && e0 < tol &&
+    if (e0 < tol &&
         model_certifies(bound, ctx, pc, np, e0, q, s, tol, &qerr)) {
       *t = from[0] = x;
       from[1] = s + q;
@@ -180,7 +180,7 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
     ** model as an exact one would */
     if (i == 0 && !(e0 < tol / 4)) { c0 = lo; cf = bestlen - s; ce = besterr; }
     else { c0 = x0; cf = f0; ce = e0; }
-    if (nodes > 0 && order && ce < tol / 4 && x != c0 &&
+    if (ce < tol / 4 && x != c0 &&
         tol >= ARCLEN_SEG_COVER_RTOL * total &&
         certified_integral(speed, order, ctx, fmin(c0, x), fmax(c0, x),
                            tol / 4, &q, &qerr)) {

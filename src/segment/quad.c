@@ -219,7 +219,7 @@ static ONE_BODY void setup_form(const double *p, int dim,
 
 void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f) {
   setup_form(p, dim, f);
-  f->S0 = f->Sc = f->K = -1;
+  f->S0 = f->Sc = -1;
   f->up = f->down = 1;
   if (!f->zero && f->scale > -1000 && f->scale < 1000) {
     f->up = pow2(f->scale);
@@ -268,6 +268,12 @@ double arclen_quad_form_length(const arclen_quad_form *f, double t,
 
 double arclen_quad_form_unscale(const arclen_quad_form *f, double L) {
   return unscaled(f, L);
+}
+
+double arclen_quad_form_speed(const arclen_quad_form *f, double t) {
+  double v[3];
+  speed_vector(f->a, f->c, f->dim, t, v);
+  return norm(v, f->dim);
 }
 
 int arclen_quad_length(const double *p, int dim, double t0, double t1,

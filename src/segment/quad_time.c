@@ -132,26 +132,11 @@ static double measure(const arclen_quad_form *F, double x, double *S,
   return len;
 }
 
-/* |v(x)| where no length was measured (a chained start). */
-static double speed_of(const arclen_quad_form *F, double x) {
-  double m = 0, v;
-  int i;
-  for (i = 0; i < F->dim; i++) {
-    v = (1 - x) * F->a[i] + x * F->c[i];
-    m += v * v;
-  }
-  return sqrt(m);
-}
-
 void arclen_quad_time_setup(const double *p, int dim, arclen_quad_form *F) {
-  double m = 0;
-  int i;
   arclen_quad_setup(p, dim, F);
   if (F->zero) return;
   F->S0 = sqrt(F->m0);
-  F->K = F->q > 0 ? F->k / F->q : 0;
-  for (i = 0; i < dim; i++) m += F->c[i] * F->c[i];
-  F->Sc = sqrt(m);
+  F->Sc = arclen_quad_form_speed(F, 1);          /* v(1) = c exactly */
 }
 
 /* Newton's steps on the guess's quintic: 1 took 178 ns a time on random
@@ -218,7 +203,7 @@ int arclen_quad_time(const arclen_quad_form *F, double total, double s,
   bestf = fabs(bestlen - g);
   if (lo > 0) {
     /* a sweep's last answer: the step from it, its bound carried */
-    S = speed_of(F, lo);
+    S = arclen_quad_form_speed(F, lo);     /* no length measured there */
     f = bestlen - g;
     if (S > 0 && step_from(F, lo, f, besterr + U * fabs(f), S, tol, &e, &bnd)
         && lo + e > lo && lo + e < 1) {

@@ -388,7 +388,7 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double total,
   ** conic, ~600 ns) */
   rc = arclen_seg_invert(len_to, speed_at, conic_rule_error,
                          conic_rule_order, c, total, s, rtol * total, guess,
-                         10, at, t, evals);
+                         at, t, evals);
   from[0] = at[0]; from[1] = e ? ldexp(at[1], e) : at[1];
   from[2] = e ? ldexp(at[2], e) : at[2];
   return rc;
@@ -448,8 +448,8 @@ static int conic_times(const seg_ctx *c, int e, const double *s, long n,
       guess = d > 0 ? from[0] + (sj - from[1]) / d : -1;
     }
     *rc = arclen_seg_invert(len_to, speed_at, conic_rule_error,
-                            conic_rule_order, c, total, sj, tol, guess, 10,
-                            from, t + j, &ev);
+                            conic_rule_order, c, total, sj, tol, guess, from,
+                            t + j, &ev);
     if (evals) *evals += ev;
     if (*rc != ARCLEN_OK) return 1;
   }
@@ -457,13 +457,21 @@ static int conic_times(const seg_ctx *c, int e, const double *s, long n,
 }
 
 /* The times of the ascending s[0 .. n-1] on a quadratic set up as f, whose
-** length is total: quad_time.c, each search from the last one's answer. */
+** length is total (NAN: the form's own, which *gauss then tells, when not
+** NULL, whether the Gauss rule gave): quad_time.c, each search from the
+** last one's answer. */
 static int quad_times(const arclen_quad_form *f, double total,
                       const double *s, long n, double rtol, double *t,
-                      long *evals) {
-  double from[3] = {0, 0, 0};
+                      long *evals, int *gauss) {
+  double from[3] = {0, 0, 0}, m1, S1;
   long i, ev;
+  int g;
   if (evals) *evals = 0;
+  if (!(total > 0 && isfinite(total))) {
+    total = arclen_quad_form_unscale(f, arclen_quad_form_length(f, 1, &m1, &S1, &g));
+    if (gauss) *gauss = g;
+    if (!isfinite(total)) return ARCLEN_EOVERFLOW;
+  }
   for (i = 0; i < n; i++) {
     int rc = arclen_quad_time(f, total, s[i], rtol * total, from, t + i, &ev);
     if (rc != ARCLEN_OK) return rc;
@@ -486,11 +494,7 @@ static int plain_times(int kind, int dim, const double *seg, double total,
   if (kind == ARCLEN_SEG_QUAD) {
     arclen_quad_form f;
     arclen_quad_time_setup(seg, dim, &f);
-    if (!(total > 0 && isfinite(total))) {
-      rc = plain_length(kind, dim, seg, 0, 1, &total, NULL);
-      if (rc != ARCLEN_OK) return rc;
-    }
-    return quad_times(&f, total, s, n, rtol, t, evals);
+    return quad_times(&f, total, s, n, rtol, t, evals, NULL);
   }
   e = kind == ARCLEN_SEG_LINE ? 0 : setup_ctx(kind, dim, seg, scaled, &c);
   if (kind == ARCLEN_SEG_CONIC && conic_times(&c, e, s, n, rtol, t, evals, &rc))
@@ -513,19 +517,15 @@ static int plain_times(int kind, int dim, const double *seg, double total,
 static int quad_time(int dim, const double *seg, double s, double rtol,
                      double *t, arclen_info *info) {
   arclen_quad_form f;
-  double m1, S1, total;
   long evals = 0;
-  int gauss, rc;
+  int gauss = 0, rc;
   arclen_quad_time_setup(seg, dim, &f);
-  total = arclen_quad_form_length(&f, 1, &m1, &S1, &gauss);
-  total = arclen_quad_form_unscale(&f, total);
+  rc = quad_times(&f, NAN, &s, 1, rtol, t, &evals, &gauss);
   if (info) {
     info->branch = gauss ? "quad-gauss" : "quad";
     info->evals += gauss ? 10 : 0;
+    info->pieces = evals;
   }
-  if (!isfinite(total)) return ARCLEN_EOVERFLOW;
-  rc = quad_times(&f, total, &s, 1, rtol, t, &evals);
-  if (info) info->pieces = evals;
   return rc;
 }
 

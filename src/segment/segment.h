@@ -26,12 +26,12 @@ int arclen_quad_length(const double *p, int dim, double t0, double t1,
 ** power of two into [1/2, 1) (halved first where a difference overflows),
 ** b = c - a, B = |b|^2, q = |b|, k = |a x c|, and v(0) = a's u0 = a.b, m0 =
 ** |a|^2; for the time (arclen_quad_setup; -1 until quad_time.c's set-up
-** takes them) S0 = |a|, Sc = |c| = |v(1)|, K = k/q = min |v|, and up =
+** takes them) S0 = |a|, Sc = |c| = |v(1)|, and up =
 ** 2^scale, down = 2^-scale where both are doubles (|scale| < 1000).
 ** Lengths of the scaled form times 2^scale are the segment's.  zero: all
 ** three points equal. */
 typedef struct arclen_quad_form {
-  double a[3], c[3], b[3], B, q, k, u0, m0, S0, Sc, K, up, down;
+  double a[3], c[3], b[3], B, q, k, u0, m0, S0, Sc, up, down;
   int dim, scale, zero;
 } arclen_quad_form;
 void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f);
@@ -42,6 +42,8 @@ double arclen_quad_form_length(const arclen_quad_form *f, double t,
                                double *m1, double *S1, int *gauss);
 /* L of the scaled form in the segment's units (times 2^scale). */
 double arclen_quad_form_unscale(const arclen_quad_form *f, double L);
+/* |v(t)| of the scaled form, v = (1 - t) a + t c (half the speed). */
+double arclen_quad_form_speed(const arclen_quad_form *f, double t);
 /* quad_time.c: the set-up above with S0 and Sc, and the time at the
 ** length s (total: the segment's length as the caller has it; tol
 ** absolute; from: as arclen_seg_invert's, below; *evals: the lengths
@@ -75,10 +77,10 @@ int arclen_rquad_circular(const double q[6], double w, double *len);
 ** error bound (bound: the n-point rule's error over [a, b], HUGE_VAL
 ** where it has none; order: the fewest nodes up to max whose bound over
 ** [a, b] is within target, and that bound, 0 where none, for a long range
-** taken again by such rules) or else by an exact length, kept inside a
-** shrinking bracket, bisection when a step leaves it (capped).  total is
-** len(0, 1) as the caller has it; guess the first t tried (outside the
-** bracket: by the length fraction); nodes the model's first rule.  from:
+** taken again by such rules; both required) or else by an exact length,
+** kept inside a shrinking bracket, bisection when a step leaves it
+** (capped).  total is len(0, 1) as the caller has it; guess the first t
+** tried (outside the bracket: by the length fraction).  from:
 ** a known point (t, len(0, t), the bound of that length's error) at or
 ** before the answer ({0, 0, 0} to start afresh), which a sweep over
 ** ascending distances passes on: it comes back as the answer's.  Returns
@@ -110,6 +112,6 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
                       arclen_seg_boundfn bound,
                       arclen_seg_orderfn order, const void *ctx,
                       double total, double s, double tol, double guess,
-                      int nodes, double from[3], double *t, long *evals);
+                      double from[3], double *t, long *evals);
 
 #endif
