@@ -77,6 +77,7 @@ local VALID = {
   ["lengths3"] = {arclen.lengths3, {C3}},
   ["times"] = {arclen.times, {C2, {1, 5}, {points = true, tangents = true}}},
   ["_walk_times"] = {arclen._walk_times, {{C2}, {[0] = 0, 14}, {1, 5}, 1e-12, false, {}, {}}},
+  ["_locate"] = {arclen._locate, {{C2}, {[0] = 0, 14}, 5, 1e-12, false}},
   ["_array"] = {arclen._array, {4}},
   ["_queries"] = {arclen._queries, {{1, 5}, 14, false}},
   ["_walk_samples"] = {arclen._walk_samples, {{C2}, {[0] = 0, 14}, {1, 5}, 1e-12, {}}},

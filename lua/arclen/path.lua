@@ -47,7 +47,7 @@ local function check_number(x, n, fname, what)
   if type(x) ~= "number" then
     argerror(n, fname, format("%s must be a number, got %s", what, type(x)))
   end
-  if not isfinite(x) then argerror(n, fname, what .. " must be finite") end
+  if x - x ~= 0 then argerror(n, fname, what .. " must be finite") end  -- inf, NaN
   return x
 end
 
@@ -541,6 +541,9 @@ end
 
 -- Raise for what a query cannot do on this path (level: the user's call).
 local function usable(self, fname)
+  local cum = self.cum
+  -- measured by the default method: known, with a time, not MetaPost's
+  if cum and self.method == "gauss" then return cum[self.n] end
   method_known(self.method)
   if self.n > 0 and not HAS_TIME[self.method] then
     error(format("bad argument #1 to '%s' (method '%s' has no time (inverse): "
@@ -555,10 +558,24 @@ local function usable(self, fname)
   return L
 end
 
+local walk_times = arclen._walk_times       -- locate_many's walk, in C
+local walk_samples = arclen._walk_samples   -- the walk and the samples, in C
+local reduce_queries = arclen._queries      -- read_queries' loop, in C
+local walk_locate = arclen._locate          -- one distance as the walk takes it
+
+-- Whether distances go through the one-pass walk (arclen.times per
+-- segment): the default method's paths; others take one time per distance.
+local function walks(self)
+  return self.method == "gauss" and self.n > 0
+end
+
 -- Segment k in 1..n and parameter t for distance s (already in [0, L]):
 -- the first segment whose end is beyond s (at_end: at or beyond s, so that
 -- a distance at a joint belongs to the segment that ends there).
 local function locate(self, s, at_end)
+  if walks(self) then     -- the walk's own search and time: no table made
+    return walk_locate(self.packed or self.segs, self.cum, s, self.tol, at_end, self.kindstr)
+  end
   local n = self.n
   if is_metapost(self) then
     local T = assert(arclen.metapost.path_arctime(segs_of(self), s, self.cyclic))
@@ -595,15 +612,6 @@ end
 
 -- ---- many distances in one walk -------------------------------------------
 
-local walk_times = arclen._walk_times       -- locate_many's walk, in C
-local walk_samples = arclen._walk_samples   -- the walk and the samples, in C
-local reduce_queries = arclen._queries      -- read_queries' loop, in C
-
--- Whether distances go through the one-pass walk (arclen.times per
--- segment): the default method's paths; others take one time per distance.
-local function walks(self)
-  return self.method == "gauss" and self.n > 0
-end
 
 -- The segments ks[] and times ts[] of the ascending distances ds (in
 -- [0, L]), as locate() gives them one by one (at_end: a distance at a
@@ -754,6 +762,10 @@ function Path:point(s)
   check_number(s, 1, "point", "distance")
   local L = usable(self, "point")
   if self.n == 0 then return start_point(self) end
+  if walks(self) then            -- the segment, its time and point in C
+    return walk_locate(self.packed or self.segs, self.cum, (reduce(self, s, L)), self.tol,
+                       false, self.kindstr, "point")
+  end
   local k, t = locate(self, (reduce(self, s, L)))
   return seg_point(kind_of(self, k), segs_of(self)[k], t)
 end
@@ -765,6 +777,10 @@ function Path:tangent(s)
   check_number(s, 1, "tangent", "distance")
   local L = usable(self, "tangent")
   if self.n == 0 then return unpack_dim({0, 0, 0}, self.dim) end
+  if walks(self) then            -- the segment, its time and tangent in C
+    return walk_locate(self.packed or self.segs, self.cum, (reduce(self, s, L)), self.tol,
+                       false, self.kindstr, "tangent")
+  end
   local k, t = locate(self, (reduce(self, s, L)))
   return unpack_dim(direction(self, k, t), self.dim)
 end

@@ -722,7 +722,7 @@ function M.segment_sub(kind, seg, t0, t1)
 end
 
 -- The kinds string at argument arg (n letters of L, Q, C, R), or nil.
-local function check_kinds(kinds, n, arg, fname)
+local function check_kinds(kinds, n, arg, fname, lazy)
   if kinds == nil then return nil end
   if type(kinds) ~= "string" then
     argerror(arg, fname, "kinds must be a string of letters L, Q, C, R, got " .. type(kinds))
@@ -730,11 +730,21 @@ local function check_kinds(kinds, n, arg, fname)
   if n and #kinds ~= n then
     argerror(arg, fname, format("kinds must have one letter per segment (%d), got %d", n, #kinds))
   end
+  if lazy then return kinds end      -- each letter checked as it is read (kind_at)
   local bad = kinds:find("[^LQCR]")
   if bad then
     argerror(arg, fname, format("kinds: letter %d is not L, Q, C or R", bad))
   end
   return kinds
+end
+
+-- The kind name of segment k of the kinds (nil: a cubic), its letter
+-- checked (arg names the kinds).
+local function kind_at(kinds, k, arg, fname)
+  if not kinds then return "cubic" end
+  local kind = S.NAME[kinds:sub(k, k)]
+  if not kind then argerror(arg, fname, format("kinds: letter %d is not L, Q, C or R", k)) end
+  return kind
 end
 
 -- Records of stride 4d from packed doubles (a string or a flat table):
@@ -758,7 +768,7 @@ local function records(packed, kinds, d, arg, fname, kinds_arg)
       n, #kinds))
   end
   return n, function(k)
-    local kind = kinds and S.NAME[kinds:sub(k, k)] or "cubic"
+    local kind = kind_at(kinds, k, kinds_arg or 2, fname)
     local cnt, base, c = S.count(kind, d), stride * (k - 1), {}
     for i = 1, cnt do
       local x = v[base + i]
@@ -806,17 +816,18 @@ end
 -- The path's segments: a list of tables, or packed records (a string, or
 -- a flat table: 8 numbers a cubic; with kinds, records of stride 4d, d
 -- from the count); returns their count and seg(k) -> numbers, kind, d.
-local function segments_of(segs, kinds, arg)
-  check_kinds(kinds, nil, arg, "_walk")
+-- lazy: each kind letter checked when its segment is read, not all now.
+local function segments_of(segs, kinds, arg, lazy)
+  check_kinds(kinds, nil, arg, "_walk", lazy)
   if type(segs) == "string" then segs = unpack_doubles(segs, "_walk", 1) end
   if type(segs) ~= "table" then
     argerror(1, "_walk", "a list of segments or packed segments expected")
   end
   if type(segs[1]) ~= "number" then
     local n = #segs
-    check_kinds(kinds, n, arg, "_walk")
+    check_kinds(kinds, n, arg, "_walk", lazy)
     return n, function(k)
-      local kind = kinds and S.NAME[kinds:sub(k, k)] or "cubic"
+      local kind = kind_at(kinds, k, arg, "_walk")
       local c, d = check_segment(kind, segs[k], 1, "_walk")
       return c, kind, d
     end
@@ -901,6 +912,47 @@ function M._walk_times(segs, cum, ds, tol, at_end, ks, ts, kinds)
   walk(segs, cum, ds, tol, at_end, function(q, k, t)
     ks[q], ts[q] = k, t
   end, kinds, 8)
+end
+
+-- arclen._locate(segs, cum, s, tol, at_end [, kinds [, what]]) -> k, t: one
+-- distance s in [0, cum[n]] as the walk takes it, in O(log n) reads of cum
+-- (p:time, p:point, p:tangent); what "point" or "tangent": the point or
+-- unit tangent there instead, d numbers (nothing on a path of no segments).
+function M._locate(segs, cum, s, tol, at_end, kinds, what)
+  local fname = "_locate"
+  if what ~= nil and what ~= "time" and what ~= "point" and what ~= "tangent" then
+    argerror(7, fname, format("invalid option '%s'", tostring(what)))
+  end
+  check_table(cum, 2, fname)
+  check_number(s, 3, fname)
+  check_tol(check_number(tol, 4, fname), 4, fname)
+  local n, segment = segments_of(segs, kinds, 6, true)
+  if n == 0 then return end
+  local function cum_at(k)            -- lua_tonumber's reading, as the walk's
+    local v = tonumber(cum[k]) or 0
+    if not isfinite(v) then argerror(2, fname, "cumulative lengths must be finite") end
+    return v
+  end
+  local lo, hi = 1, n                 -- the first segment whose end is past s
+  while lo < hi do
+    local mid = floor((lo + hi) / 2)
+    local e = cum_at(mid)
+    if at_end and e >= s or not at_end and e > s then hi = mid else lo = mid + 1 end
+  end
+  local c, kind, dim = segment(lo)
+  local shift = cum_at(lo - 1)
+  local x, seglen, t = s - shift, cum_at(lo) - shift, nil
+  if x <= 0 then t = 0
+  elseif x >= seglen then t = 1
+  elseif kind == "cubic" then
+    if dim == 3 then argerror(1, fname, "a 3D cubic " .. NEEDS_C) end
+    t = times_of(c, {x}, tol)[1]
+  else
+    t = seg_times(kind, c, dim, seglen, {x}, tol)[1]
+  end
+  if what == "point" then return unpack(seg_point(kind, c, dim, t)) end
+  if what == "tangent" then return unpack(seg_tangent(kind, c, dim, t)) end
+  return lo, t
 end
 
 -- arclen._walk_samples(segs, cum, ds, tol, out [, tans, times [, kinds]]):

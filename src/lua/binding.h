@@ -48,8 +48,13 @@ int arclenL_checkkind(lua_State *L, int arg);
 ** the dimension; raises naming arg. */
 int arclenL_checksegment(lua_State *L, int arg, int kind, double *seg);
 /* A kinds string at arg for n segments (nil or none: NULL, all cubics):
-** one letter L, Q, C or R per segment; raises naming arg. */
-const char *arclenL_optkinds(lua_State *L, int arg, long n);
+** one letter L, Q, C or R per segment; raises naming arg.  letters: whether
+** every letter is checked here (else the caller checks the ones it reads,
+** arclenL_kindat: a single lookup stays O(1)). */
+const char *arclenL_optkinds(lua_State *L, int arg, long n, int letters);
+/* The kind of segment k (from 1) of the kinds at arg; raises naming arg
+** on a letter that is not L, Q, C or R. */
+int arclenL_kindat(lua_State *L, int arg, const char *kinds, long k);
 /* Record k (from 0) of packed segments (stride 4 dim doubles) into seg: its
 ** kind's numbers, checked; raises naming arg and the segment. */
 void arclenL_packedsegment(lua_State *L, int arg, const char *packed,

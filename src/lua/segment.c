@@ -69,8 +69,17 @@ int arclenL_checksegment(lua_State *L, int arg, int kind, double *seg) {
   return dim;
 }
 
-const char *arclenL_optkinds(lua_State *L, int arg, long n) {
-  size_t len, i;
+int arclenL_kindat(lua_State *L, int arg, const char *kinds, long k) {
+  int kind = arclen_segment_kind_of_letter((unsigned char)kinds[k - 1]);
+  if (kind < 0)
+    luaL_argerror(L, arg, lua_pushfstring(L,
+        "kinds: letter %d is not L, Q, C or R", (int)k));
+  return kind;
+}
+
+const char *arclenL_optkinds(lua_State *L, int arg, long n, int letters) {
+  size_t len;
+  long i;
   const char *k;
   if (lua_isnoneornil(L, arg)) return NULL;
   if (lua_type(L, arg) != LUA_TSTRING)
@@ -82,10 +91,7 @@ const char *arclenL_optkinds(lua_State *L, int arg, long n) {
     return luaL_argerror(L, arg, lua_pushfstring(L,
         "kinds must have one letter per segment (%d), got %d", (int)n,
         (int)len)), NULL;
-  for (i = 0; i < len; i++)
-    if (arclen_segment_kind_of_letter((unsigned char)k[i]) < 0)
-      return luaL_argerror(L, arg, lua_pushfstring(L,
-          "kinds: letter %d is not L, Q, C or R", (int)i + 1)), NULL;
+  for (i = 1; letters && i <= n; i++) arclenL_kindat(L, arg, k, i);
   return k;
 }
 
@@ -189,7 +195,7 @@ static int l_segments(lua_State *L) {
         "packed segments: a multiple of %d bytes expected", (int)rec));
   luaL_argcheck(L, len / rec <= 0x7fffffff, 1, "too many segments");
   n = (long)(len / rec);
-  kinds = arclenL_optkinds(L, 2, n);
+  kinds = arclenL_optkinds(L, 2, n, 1);
   lua_createtable(L, (int)n, 0);
   for (k = 0; k < n; k++) {
     double seg[ARCLEN_SEG_MAXN];

@@ -5,6 +5,7 @@
 ** segment the run of sorted distances that falls in it:
 **   arclen._walk_samples(segs, cum, ds, tol, out [, tans, times [, kinds]])
 **   arclen._walk_times(segs, cum, ds, tol, at_end, ks, ts [, kinds])
+**   arclen._locate(segs, cum, s, tol, at_end [, kinds [, what]])  (one)
 **   arclen._queries(ds, L, wrap)  (a query list read, checked and reduced)
 ** (segs: the list of cubics, or a 2D path's packed cubics, a string;
 ** with kinds, a string of one letter L, Q, C, R per segment, the segments
@@ -213,37 +214,87 @@ static int past(double cum, double x, int at_end) {
   return at_end ? cum < x : cum <= x;
 }
 
-/* The walk over the path of segments segs (at 1, or its packed cubics: 2D,
-** a string of doubles; cumulative lengths cum[0
-** .. n] at 2) for the ascending distances ds (at 3, in [0, cum[n]]) at tol
-** (at 4): each run of ds in one segment found by arclen_times with the
-** segment's set-up (times_of), with a gallop and a bisection to the next
-** run's segment, O(log gap) a run: O(n + k) in all, O(k log n) for few
-** distances.  With o, the samples go out as emit_samples writes them;
-** without, segment k and time t of ds[q] into the tables ks and ts. */
+/* The path's segments at 1 (a list, or a 2D path's packed cubics or
+** records: a string) and the kinds of kinds_arg (nil: every one a cubic):
+** their count and how to read one (load_segment). */
+typedef struct path_segments {
+  long n;
+  int packed, kinds_arg;
+  const char *kinds;
+} path_segments;
+
+/* letters: whether every kind letter is checked now (a walk reads most
+** segments) or each as its segment is read (one distance: O(log n)). */
+static void check_segments(lua_State *L, int kinds_arg, int letters,
+                           path_segments *ps) {
+  ps->packed = lua_type(L, 1) == LUA_TSTRING;
+  if (!ps->packed && lua_type(L, 1) != LUA_TTABLE)
+    luaL_argerror(L, 1, "a list of cubics or packed cubics expected");
+  ps->n = (long)lua_rawlen(L, 1);
+  if (ps->packed) {
+    if (ps->n % (8 * sizeof(double)) != 0)
+      luaL_argerror(L, 1, "packed cubics: a multiple of 64 bytes expected");
+    ps->n /= 8 * sizeof(double);
+  }
+  ps->kinds_arg = kinds_arg;
+  ps->kinds = arclenL_optkinds(L, kinds_arg, ps->n, letters);
+}
+
+/* Segment k (from 1) into r: its kind, dim and numbers, checked. */
+static void load_segment(lua_State *L, const path_segments *ps, long k,
+                         segment_run *r) {
+  r->kind = ps->kinds ? arclenL_kindat(L, ps->kinds_arg, ps->kinds, k)
+                      : ARCLEN_SEG_CUBIC;
+  if (ps->packed && !ps->kinds) r->dim = packed_cubic(L, k, r->c);
+  else if (ps->packed) {
+    r->dim = 2;
+    arclenL_packedsegment(L, 1, lua_tostring(L, 1), k - 1, r->kind, 2, r->c);
+  } else {
+    lua_rawgeti(L, 1, (int)k);
+    r->dim = ps->kinds ? arclenL_checksegment(L, lua_gettop(L), r->kind, r->c)
+                       : arclenL_checkcurve(L, lua_gettop(L), r->c);
+    lua_pop(L, 1);
+  }
+}
+
+/* The segment of distance x from segment k on (x past k's end, k < n):
+** a gallop and a bisection over cum (at 2), O(log gap). */
+static long segment_after(lua_State *L, long k, long n, double x, int at_end) {
+  long lo = k, step = 1, hi = lo + step;
+  while (hi < n && past(cum_at(L, 2, hi), x, at_end)) {
+    lo = hi;
+    step *= 2;
+    hi = lo + step;
+  }
+  if (hi > n) hi = n;                  /* the segment lies in (lo, hi] */
+  while (hi - lo > 1) {
+    long mid = (lo + hi) / 2;
+    if (past(cum_at(L, 2, mid), x, at_end)) lo = mid; else hi = mid;
+  }
+  return hi;
+}
+
+/* The walk over the path of segments segs (at 1, check_segments; its
+** cumulative lengths cum[0 .. n] at 2) for the ascending distances ds (at
+** 3, in [0, cum[n]]) at tol (at 4): each run of ds in one segment found by
+** arclen_times with the segment's set-up (times_of), with a gallop and a
+** bisection to the next run's segment (segment_after), O(log gap) a run:
+** O(n + k) in all, O(k log n) for few distances.  With o, the samples go
+** out as emit_samples writes them; without, segment k and time t of ds[q]
+** into the tables ks and ts. */
 static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts) {
   segment_run r;
+  path_segments ps;
   double t[CHUNK], p[3 * CHUNK], v[3 * CHUNK], s[CHUNK], prev = -HUGE_VAL;
   double *d, lo_cum, hi_cum;
   long n, nd, i, j, k, a, q;
-  int packed;
-  const char *kinds;
   luaL_checktype(L, 2, LUA_TTABLE);
   luaL_checktype(L, 3, LUA_TTABLE);
   r.rtol = arclenL_checktol(L, 4, luaL_checknumber(L, 4));
-  /* segs: a list of cubics, or a 2D path's packed cubics (a string) */
-  packed = lua_type(L, 1) == LUA_TSTRING;
-  if (!packed && lua_type(L, 1) != LUA_TTABLE)
-    luaL_argerror(L, 1, "a list of cubics or packed cubics expected");
-  n = (long)lua_rawlen(L, 1);
-  if (packed) {
-    if (n % (8 * sizeof(double)) != 0)
-      luaL_argerror(L, 1, "packed cubics: a multiple of 64 bytes expected");
-    n /= 8 * sizeof(double);
-  }
+  check_segments(L, 8, 1, &ps);
+  n = ps.n;
   if (lua_rawlen(L, 3) > 0x7fffffff / 3) luaL_argerror(L, 3, "too many distances");
   nd = (long)lua_rawlen(L, 3);
-  kinds = arclenL_optkinds(L, 8, n);   /* nil: every segment a cubic */
   if (n == 0 || nd == 0) return;
   d = (double *)lua_newuserdata(L, sizeof(double) * (size_t)nd);
   for (i = 0; i < nd; i += CHUNK)      /* checked: numbers, ascending */
@@ -253,18 +304,7 @@ static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts)
   for (i = 0; i < nd; i = j + 1) {
     double x = d[i];
     if (k < n && past(hi_cum, x, at_end)) {
-      long lo = k, step = 1, hi = lo + step;
-      while (hi < n && past(cum_at(L, 2, hi), x, at_end)) {
-        lo = hi;
-        step *= 2;
-        hi = lo + step;
-      }
-      if (hi > n) hi = n;              /* the segment lies in (lo, hi] */
-      while (hi - lo > 1) {
-        long mid = (lo + hi) / 2;
-        if (past(cum_at(L, 2, mid), x, at_end)) lo = mid; else hi = mid;
-      }
-      k = hi;
+      k = segment_after(L, k, n, x, at_end);
       hi_cum = cum_at(L, 2, k);
     }
     j = i;
@@ -272,18 +312,7 @@ static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts)
     else while (j + 1 < nd && !past(hi_cum, d[j + 1], at_end)) j++;
     /* the run d[i .. j] in segment k */
     lo_cum = cum_at(L, 2, k - 1);
-    r.kind = kinds ? arclen_segment_kind_of_letter((unsigned char)kinds[k - 1])
-                   : ARCLEN_SEG_CUBIC;
-    if (packed && !kinds) r.dim = packed_cubic(L, k, r.c);
-    else if (packed) {
-      r.dim = 2;
-      arclenL_packedsegment(L, 1, lua_tostring(L, 1), k - 1, r.kind, 2, r.c);
-    } else {
-      lua_rawgeti(L, 1, (int)k);
-      r.dim = kinds ? arclenL_checksegment(L, lua_gettop(L), r.kind, r.c)
-                    : arclenL_checkcurve(L, lua_gettop(L), r.c);
-      lua_pop(L, 1);
-    }
+    load_segment(L, &ps, k, &r);
     r.shift = lo_cum;
     r.seglen = hi_cum - lo_cum;
     for (a = i; a <= j; a += CHUNK) {
@@ -333,6 +362,41 @@ static int l_walk_times(lua_State *L) {
   lua_settop(L, 8);
   walk(L, at_end, NULL, 6, 7);
   return 0;
+}
+
+/* arclen._locate(segs, cum, s, tol, at_end [, kinds [, what]]) -> k, t:
+** one distance s in [0, cum[n]] as the walk takes it (path.lua's locate
+** for the default method: p:time, p:point, p:tangent), with no table made;
+** what "point" or "tangent": the point or unit tangent there instead (dim
+** numbers, as the walk's samples).  A path of no segments gives nothing. */
+static int l_locate(lua_State *L) {
+  static const char *const whats[] = {"time", "point", "tangent", NULL};
+  segment_run r;
+  path_segments ps;
+  double x = luaL_checknumber(L, 3), t, out[3];
+  int at_end = lua_toboolean(L, 5), what, k;
+  long seg;
+  luaL_checktype(L, 2, LUA_TTABLE);
+  r.rtol = arclenL_checktol(L, 4, luaL_checknumber(L, 4));
+  what = luaL_checkoption(L, 7, "time", whats);
+  lua_settop(L, 6);
+  check_segments(L, 6, 0, &ps);
+  if (isnan(x)) return luaL_argerror(L, 3, "the distance is NaN");
+  if (ps.n == 0) return 0;
+  seg = ps.n > 1 && past(cum_at(L, 2, 1), x, at_end)
+        ? segment_after(L, 1, ps.n, x, at_end) : 1;
+  load_segment(L, &ps, seg, &r);
+  r.shift = cum_at(L, 2, seg - 1);
+  r.seglen = cum_at(L, 2, seg) - r.shift;
+  x -= r.shift;
+  times_of(L, &r, &x, 1, &t, what == 1 ? out : NULL, what == 2 ? out : NULL);
+  if (what == 0) {
+    lua_pushinteger(L, (lua_Integer)seg);
+    lua_pushnumber(L, t);
+    return 2;
+  }
+  for (k = 0; k < r.dim; k++) lua_pushnumber(L, out[k]);
+  return r.dim;
 }
 
 /* arclen._array(n) -> an empty table with room for n array items, for
@@ -402,6 +466,7 @@ static const luaL_Reg times_funcs[] = {
   {"_queries", l_queries},
   {"times", l_times},
   {"_walk_times", l_walk_times},
+  {"_locate", l_locate},
   {"_array", l_array},
   {NULL, NULL}
 };
