@@ -314,6 +314,25 @@ describe("arclen.path: the cache and the search", function()
 end)
 
 describe("arclen.path: resample spacing", function()
+  it("makes its distances L i / (n - 1) (cyclic: L i / n) as a list of them gives", function()
+    for _, d in ipairs({"M0 0 L10 0 Q15 5 10 10 A5 5 0 0 1 0 10 C-5 5 -5 0 3 1",
+                        "M0 0 C10 10 20 -10 30 0 L30 7 Z"}) do
+      local p = path.svg(d, {tol = 1e-12})
+      local L, n = p:length(), 37
+      local div = p.cyclic and n or n - 1
+      local ds = {}
+      for i = 0, n - 1 do ds[i + 1] = i == div and L or L * i / div end
+      local a, b = p:resample(n), p:samples(ds)
+      assert.are.equal(n, #a)
+      for i = 1, n do
+        for _, key in ipairs({"x", "y", "s", "time", "tx", "ty"}) do
+          assert.are.equal(b[i][key], a[i][key], ("%s, point %d: %s"):format(d, i, key))
+        end
+      end
+      if not p.cyclic then assert.are.equal(L, a[n].s) end
+    end
+  end)
+
   it("spaces points evenly along the path to tol * L", function()
     local p = path.svg("M100 100 C300 0 0 0 200 100 C250 200 -100 300 100 100", {tol = 1e-12})
     local L = p:length()

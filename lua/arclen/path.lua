@@ -907,9 +907,13 @@ function Path:resample(spec)
     if n ~= floor(n) or n < low or n > MAX_POINTS then
       argerror(1, fname, format("n must be an integer in [%d, %d]", low, MAX_POINTS))
     end
-    dists = new_array(n)
     local div = self.cyclic and n or n - 1
-    for i = 0, n - 1 do dists[i + 1] = i == div and L or L * i / div end
+    if walks(self) then
+      dists = {n = n, div = div}     -- the walk makes them: L i / div, L at i = div
+    else
+      dists = new_array(n)
+      for i = 0, n - 1 do dists[i + 1] = i == div and L or L * i / div end
+    end
   elseif type(spec) == "table" then
     for key in pairs(spec) do
       if key ~= "step" then argerror(1, fname, format("unknown option '%s'", tostring(key))) end
@@ -931,7 +935,7 @@ function Path:resample(spec)
   else
     argerror(1, fname, "a count n or {step = h} expected, got " .. type(spec))
   end
-  local out = new_array(#dists)
+  local out = new_array(dists.n or #dists)
   if self.n == 0 then
     for i = 1, #dists do
       out[i] = {x = self.x0, y = self.y0, z = self.z0, s = 0, time = 0,

@@ -846,9 +846,10 @@ local function segments_of(segs, kinds, arg, lazy)
   end
 end
 
--- The walk: for the ascending distances ds (in [0, cum[n]]) on the path of
--- segments with cumulative lengths cum[0..n], call emit(q, k, t, c, kind,
--- d) with the segment k and time t of ds[q] -- a distance at a joint
+-- The walk: for the ascending distances ds (in [0, cum[n]]; or {n =, div
+-- =}: the n distances cum[n] i / div, resample's) on the path of segments
+-- with cumulative lengths cum[0..n], call emit(q, k, t, c, kind, d, s) with
+-- the segment k and time t of the q-th distance s -- a distance at a joint
 -- belongs to the segment that starts there (at_end: that ends there) --
 -- each run of distances in one segment solved in one sweep.
 local function walk(segs, cum, ds, tol, at_end, emit, kinds, kinds_arg)
@@ -856,8 +857,21 @@ local function walk(segs, cum, ds, tol, at_end, emit, kinds, kinds_arg)
   check_table(cum, 2, "_walk")
   check_table(ds, 3, "_walk")
   check_tol(check_number(tol, 4, "_walk"), 4, "_walk")
-  local nd = #ds
-  local d = read_distances(ds, 3, "_walk")
+  local d
+  if ds.div ~= nil then              -- {n =, div =}: resample's, len i / div
+    local m, div = ds.n, ds.div
+    if not (type(m) == "number" and m >= 0 and m == floor(m) and m <= 715827882
+            and type(div) == "number" and div >= 1 and div == floor(div)) then
+      argerror(3, "_walk", "evenly spaced distances: n an integer in [0, 715827882], "
+        .. "div a positive integer")
+    end
+    local len = n > 0 and (tonumber(cum[n]) or 0) or 0
+    d = {}
+    for i = 0, m - 1 do d[i + 1] = i == div and len or len * i / div end
+  else
+    d = read_distances(ds, 3, "_walk")
+  end
+  local nd = #d
   if n == 0 or nd == 0 then return end
   local cums = {}                   -- cum[0..n] as numbers (lua_tonumber: else 0)
   for k = 0, n do
@@ -899,7 +913,7 @@ local function walk(segs, cum, ds, tol, at_end, emit, kinds, kinds_arg)
     for q = i, j do
       local x, t = s[q - i + 1], nil
       if x <= 0 then t = 0 elseif x >= seglen then t = 1 else t = ts[q - first + 1] end
-      emit(q, k, t, c, kind, dim)
+      emit(q, k, t, c, kind, dim, d[q])
     end
     i = j + 1
   end
@@ -964,7 +978,7 @@ function M._walk_samples(segs, cum, ds, tol, out, tans, times, kinds)
   local flat = tans ~= nil
   if type(tans) ~= "table" then tans = nil end      -- flat, no tangents
   if type(times) ~= "table" then times = nil end
-  walk(segs, cum, ds, tol, false, function(q, k, t, c, kind, d)
+  walk(segs, cum, ds, tol, false, function(q, k, t, c, kind, d, s)
     local p = seg_point(kind, c, d, t)
     local v = seg_tangent(kind, c, d, t)
     if flat then
@@ -974,7 +988,7 @@ function M._walk_samples(segs, cum, ds, tol, out, tans, times, kinds)
       end
       if times then times[q] = (k - 1) + t end
     else
-      out[q] = {x = p[1], y = p[2], z = p[3], s = ds[q], time = (k - 1) + t,
+      out[q] = {x = p[1], y = p[2], z = p[3], s = s, time = (k - 1) + t,
                 tx = v[1], ty = v[2], tz = v[3]}
     end
   end, kinds, 8)

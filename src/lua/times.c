@@ -146,6 +146,7 @@ enum { KEY_X = 1, KEY_TX = 4, KEY_S = 7, KEY_TIME = 8, KEYS = 8 };
 ** flat, the tangents' and times' tables (0: not wanted). */
 typedef struct sample_sink {
   int ds, out, tans, times, flat;
+  const double *d;               /* the distances, for s = when ds is 0 */
 } sample_sink;
 
 /* The samples of ds[i .. i + m - 1] (times t, points p, tangents v) in
@@ -178,7 +179,8 @@ static void emit_samples(lua_State *L, const sample_sink *o, int dim,
       lua_rawset(L, -3);
     }
     lua_pushvalue(L, lua_upvalueindex(KEY_S));
-    lua_rawgeti(L, o->ds, (int)(i + q));
+    if (o->ds) lua_rawgeti(L, o->ds, (int)(i + q));   /* as given: 0 stays an integer */
+    else lua_pushnumber(L, o->d[i + q - 1]);
     lua_rawset(L, -3);
     lua_pushvalue(L, lua_upvalueindex(KEY_TIME));
     lua_pushnumber(L, base + t[q]);
@@ -274,6 +276,47 @@ static long segment_after(lua_State *L, long k, long n, double x, int at_end) {
   return hi;
 }
 
+/* Whether the walk's distances (at 3, a table) are {n =, div =}. */
+static int even_spaced(lua_State *L) {
+  int yes;
+  lua_getfield(L, 3, "div");
+  yes = !lua_isnil(L, -1);
+  lua_pop(L, 1);
+  return yes;
+}
+
+/* The walk's distances (at 3) into a buffer on the stack: a list of
+** numbers, ascending, or {n =, div =}: the n distances len i / div (i = 0
+** .. n - 1; i = div gives len itself), resample's, made here without a
+** list (len: the path's length, cum[n]). */
+static double *read_distances(lua_State *L, double len, long *nd) {
+  double *d, prev = -HUGE_VAL, div;
+  long i, n;
+  if (even_spaced(L)) {
+    double m;
+    lua_getfield(L, 3, "div");
+    lua_getfield(L, 3, "n");
+    div = lua_tonumber(L, -2);
+    m = lua_tonumber(L, -1);
+    lua_pop(L, 2);
+    if (!(m >= 0 && m <= 0x7fffffff / 3 && m == floor(m) && div >= 1 && div == floor(div)))
+      luaL_argerror(L, 3, "evenly spaced distances: n an integer in [0, 715827882], "
+                          "div a positive integer");
+    n = (long)m;
+    d = (double *)lua_newuserdata(L, sizeof(double) * (size_t)(n > 0 ? n : 1));
+    for (i = 0; i < n; i++) d[i] = (double)i == div ? len : len * (double)i / div;
+    *nd = n;
+    return d;
+  }
+  if (lua_rawlen(L, 3) > 0x7fffffff / 3) luaL_argerror(L, 3, "too many distances");
+  n = (long)lua_rawlen(L, 3);
+  d = (double *)lua_newuserdata(L, sizeof(double) * (size_t)(n > 0 ? n : 1));
+  for (i = 0; i < n; i += CHUNK)       /* checked: numbers, ascending */
+    read_chunk(L, 3, 3, i + 1, n - i < CHUNK ? n - i : CHUNK, 0, &prev, d + i);
+  *nd = n;
+  return d;
+}
+
 /* The walk over the path of segments segs (at 1, check_segments; its
 ** cumulative lengths cum[0 .. n] at 2) for the ascending distances ds (at
 ** 3, in [0, cum[n]]) at tol (at 4): each run of ds in one segment found by
@@ -282,10 +325,10 @@ static long segment_after(lua_State *L, long k, long n, double x, int at_end) {
 ** O(n + k) in all, O(k log n) for few distances.  With o, the samples go
 ** out as emit_samples writes them; without, segment k and time t of ds[q]
 ** into the tables ks and ts. */
-static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts) {
+static void walk(lua_State *L, int at_end, sample_sink *o, int ks, int ts) {
   segment_run r;
   path_segments ps;
-  double t[CHUNK], p[3 * CHUNK], v[3 * CHUNK], s[CHUNK], prev = -HUGE_VAL;
+  double t[CHUNK], p[3 * CHUNK], v[3 * CHUNK], s[CHUNK];
   double *d, lo_cum, hi_cum;
   long n, nd, i, j, k, a, q;
   luaL_checktype(L, 2, LUA_TTABLE);
@@ -293,12 +336,10 @@ static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts)
   r.rtol = arclenL_checktol(L, 4, luaL_checknumber(L, 4));
   check_segments(L, 8, 1, &ps);
   n = ps.n;
-  if (lua_rawlen(L, 3) > 0x7fffffff / 3) luaL_argerror(L, 3, "too many distances");
-  nd = (long)lua_rawlen(L, 3);
-  if (n == 0 || nd == 0) return;
-  d = (double *)lua_newuserdata(L, sizeof(double) * (size_t)nd);
-  for (i = 0; i < nd; i += CHUNK)      /* checked: numbers, ascending */
-    read_chunk(L, 3, 3, i + 1, nd - i < CHUNK ? nd - i : CHUNK, 0, &prev, d + i);
+  if (n == 0) return;
+  d = read_distances(L, cum_at(L, 2, n), &nd);
+  if (nd == 0) return;
+  if (o && !o->ds) o->d = d;
   k = 1;
   hi_cum = cum_at(L, 2, 1);
   for (i = 0; i < nd; i = j + 1) {
@@ -334,7 +375,7 @@ static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts)
 }
 
 /* arclen._walk_samples(segs, cum, ds, tol, out [, tans, times [, kinds]]): the
-** samples at ds (walk).  With tans absent or nil, out[q] = {x =, y =[, z
+** samples at ds (walk; ds a list, or {n =, div =}: read_distances).  With tans absent or nil, out[q] = {x =, y =[, z
 ** =], s =, time = k - 1 + t, tx =, ty =[, tz =]} (segment k); with tans
 ** a table or false, flat arrays: out gets the points (dim numbers each),
 ** tans the unit tangents, times the path times (each when a table).
@@ -342,7 +383,9 @@ static void walk(lua_State *L, int at_end, const sample_sink *o, int ks, int ts)
 static int l_walk_samples(lua_State *L) {
   sample_sink o;
   luaL_checktype(L, 5, LUA_TTABLE);
-  o.ds = 3;
+  luaL_checktype(L, 3, LUA_TTABLE);
+  o.ds = even_spaced(L) ? 0 : 3;      /* a list, or n, div: s = from o.d */
+  o.d = NULL;
   o.out = 5;
   o.flat = !lua_isnoneornil(L, 6);
   o.tans = o.flat && lua_istable(L, 6) ? 6 : 0;
