@@ -21,9 +21,12 @@
 */
 #include <float.h>
 #include <math.h>
+#include <stdint.h>
+#include <string.h>
 
 #include "arclen.h"
 #include "curve/numeric.h"
+#include "segment/quad_guess_table.h"
 #include "segment/segment.h"
 
 /* 64 halvings take [0, 1] below one ulp of any t, so the cap is reached
@@ -139,35 +142,76 @@ void arclen_quad_time_setup(const double *p, int dim, arclen_quad_form *F) {
   F->Sc = arclen_quad_form_speed(F, 1);          /* v(1) = c exactly */
 }
 
-/* Newton's steps on the guess's quintic: 1 took 178 ns a time on random
-** quadratics (1.79 lengths), 2 took 186 (1.65), 4 216 (1.66): each step
-** costs about as much as the lengths it saves (doc/benchmarks.md) */
-#define GUESS_STEPS 1
-
-/* The first t for the goal g: the quintic Hermite interpolant of s(t) on
-** [0, 1] from s = 0, T at the ends, the speeds p0, p1 and their slopes r0,
-** r1 there (all exact expressions of the set-up), inverted by Newton's
-** steps from the length fraction, each kept inside (0, 1).  Against the
-** cubic Hermite guess (the speeds only) it took 1.79 lengths a time on
-** random quadratics instead of 1.91, and three or more in 31 of 2000
-** instead of 142. */
-static double quintic_guess(const arclen_quad_form *F, double T, double g) {
-  double p0 = 2 * F->S0, p1 = 2 * F->Sc;
-  double r0 = 2 * F->u0 / F->S0, r1 = 2 * (F->u0 + F->B) / F->Sc;
-  double c3 = 10 * T - 6 * p0 - 4 * p1 - 1.5 * r0 + 0.5 * r1;
-  double c4 = -15 * T + 8 * p0 + 7 * p1 + 1.5 * r0 - r1;
-  double c5 = 6 * T - 3 * p0 - 3 * p1 - 0.5 * r0 + 0.5 * r1;
-  double x = g / T, v, dv, nx;
-  int i;
-  if (!(F->S0 > 0 && F->Sc > 0)) return x;       /* a cusp at an end */
-  for (i = 0; i < GUESS_STEPS; i++) {
-    v = x * (p0 + x * (r0 / 2 + x * (c3 + x * (c4 + x * c5)))) - g;
-    dv = p0 + x * (r0 + x * (3 * c3 + x * (4 * c4 + x * 5 * c5)));
-    nx = dv > 0 ? x - v / dv : -1;
-    if (!(nx > 0 && nx < 1)) break;               /* keep the last good x */
-    x = nx;
-  }
+/* x = m 2^e with m in [1, 2), for a normal x > 0, from the bits. */
+static double mantissa(double x, int *e) {
+  uint64_t bits;
+  memcpy(&bits, &x, sizeof bits);
+  *e = (int)((bits >> 52) & 0x7ff) - 1023;
+  bits = (bits & ~((uint64_t)0x7ff << 52)) | ((uint64_t)1023 << 52);
+  memcpy(&x, &bits, sizeof x);
   return x;
+}
+
+/* log x within 2e-6 for a normal x > 0: e log 2 + log m by the table's
+** polynomial (Estrin's order: a short chain; libm's log is a call). */
+static double rough_log(double x) {
+  const double *c = arclen_qg_log;
+  int e;
+  double r = mantissa(x, &e) - 1.5, r2 = r * r;
+  return e * 0.69314718055994530942
+         + ((c[0] + c[1] * r) + r2 * (c[2] + c[3] * r)
+            + r2 * r2 * (c[4] + c[5] * r + r2 * c[6]));
+}
+
+/* G^-1(y) for 0 <= y < 2^ARCLEN_QG_JMAX, G(U) = U sqrt(1 + U^2) + asinh U:
+** below the table U = y/2 - y^3/48 (G = 2U + U^3/3 - U^5/20 ..., the next
+** term 13 y^5/3840 is below 1e-11 of U there), else the octave's
+** polynomial in its mantissa. */
+static double g_inverse(double y) {
+  const double *c;
+  int e;
+  double r, r2;
+  if (y < 1.0 / (1 << -ARCLEN_QG_JMIN)) return y / 2 * (1 - y * y / 24);
+  r = mantissa(y, &e) - 1.5;
+  r2 = r * r;
+  c = arclen_qg_ginv[e - ARCLEN_QG_JMIN];
+  return (c[0] + c[1] * r) + r2 * (c[2] + c[3] * r)
+         + r2 * r2 * (c[4] + c[5] * r);
+}
+
+/* The first t for the goal g, without the total: in u = v.b = u0 + t B,
+** with S = sqrt(u^2 + k^2) (= |b| |v|), s(t) = (H(u) - H(u0))/|b|^3 with
+** H(u) = u S + k^2 asinh(u/k) (the parabola's length; H' = 2S), so the
+** goal's u solves H(u) = Y = H(u0) + g |b|^3, that is G(U) = y = Y/k^2
+** for U = u/k.  The asinh and G^-1 are approximations (the table's); an
+** error d in Y moves u by d/(2S), and the log's 2e-6 enters Y times k^2 <=
+** S^2: u is off by about 1e-6 of S, that is t by 1e-6 of |v|/|b|, which
+** the fourth-order step nearly always certifies after one length.  For y
+** past the table U^2 = y - 1/2 - log(2U) - O(1/U^2) with log(2U) = log(4y)/2
+** - O(log y / y): u^2 = |Y| - k^2 (1/2 + log(4|y|)/2), within 1e-9; k = 0
+** (collinear legs) is the case u^2 = |Y| exactly.  b = 0 (uniform speed
+** 2|a|): g/(2|a|). */
+static double first_guess(const arclen_quad_form *F, double g) {
+  double u0 = F->u0, k = F->k, k2 = k * k, B = F->B, q = F->q;
+  double ik2 = 1 / k2, iB = 1 / B;        /* off the chain: k, B come first */
+  double Su0 = q * F->S0, Y = u0 * Su0 + g * B * q, y, u, w;
+  if (B == 0) return g / (2 * F->S0);
+  if (k2 >= DBL_MIN) {          /* else k^2 asinh(u0/k) is below Y's ulp */
+    w = rough_log(fabs(u0) + Su0) - rough_log(k);
+    Y += k2 * (u0 < 0 ? -w : w);
+  }
+  y = Y * ik2;
+  if (fabs(y) < (double)(1L << ARCLEN_QG_JMAX)) {
+    u = k * g_inverse(fabs(y));
+    if (y < 0) u = -u;
+  } else {                      /* far from the vertex, or k = 0: y = inf, NaN */
+    w = fabs(Y);
+    if (k2 >= DBL_MIN && isfinite(y))
+      w -= k2 * (0.5 + 0.5 * rough_log(4 * fabs(y)));
+    u = w > 0 ? sqrt(w) : 0;
+    if (Y < 0) u = -u;
+  }
+  return (u - u0) * iB;
 }
 
 int arclen_quad_time(const arclen_quad_form *F, double total, double s,
@@ -214,7 +258,7 @@ int arclen_quad_time(const arclen_quad_form *F, double total, double s,
     }
     x = S > 0 ? lo + e : -1;
   } else {
-    x = quintic_guess(F, T, g);
+    x = first_guess(F, g);
   }
   if (!(x > lo && x < hi)) x = lo + (hi - lo) * (g - bestlen) / (T - bestlen);
   if (!(x > lo && x < hi)) x = lo + (hi - lo) / 2;
