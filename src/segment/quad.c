@@ -227,6 +227,16 @@ void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f) {
   }
 }
 
+/* Whether near_straight() serves the span of h from v.b = u0, |v|^2 = m0
+** to |v|^2 = m1 (B > 0): min |v| >= 4 h |b|, with min |v|^2 = K^2 where
+** the vertex (u = 0) is inside. */
+static int straight_enough(const arclen_quad_form *f, double h, double u0,
+                           double m0, double m1) {
+  double m = u0 < 0 && u0 + h * f->B > 0 ? f->k * f->k / f->B
+             : m0 < m1 ? m0 : m1;
+  return m >= 16 * h * h * f->B;
+}
+
 /* 2 int |v| over [lo, lo + h] of the scaled form, v(lo)'s u0 = v.b, m0 =
 ** |v|^2 and S0 = |v| given (S0 < 0: not yet taken), the end's |v|^2 and
 ** |v| into *m1 and *S1 (the latter only where the closed form took it,
@@ -234,7 +244,7 @@ void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f) {
 static ONE_BODY double span(const arclen_quad_form *f, double lo,
                                  double h, double u0, double m0, double S0,
                                  double *m1, double *S1, int *gauss) {
-  double v1[3], m;
+  double v1[3];
   const double *a = f->a, *c = f->c;
   int dim = f->dim;
   *gauss = 0;
@@ -242,9 +252,7 @@ static ONE_BODY double span(const arclen_quad_form *f, double lo,
   speed_vector(a, c, dim, lo + h, v1);
   *m1 = dot(v1, v1, dim);
   if (f->B == 0) return 2 * h * norm(a, dim);
-  /* min |v|^2 over the range: K^2 where the vertex (u = 0) is inside */
-  m = u0 < 0 && u0 + h * f->B > 0 ? f->k * f->k / f->B : m0 < *m1 ? m0 : *m1;
-  if (m >= 16 * h * h * f->B) {                        /* min |v| >= 4 h |b| */
+  if (straight_enough(f, h, u0, m0, *m1)) {
     *gauss = 1;
     return near_straight(a, c, dim, lo, h);
   }
@@ -264,6 +272,11 @@ double arclen_quad_form_length(const arclen_quad_form *f, double t,
   *m1 = *S1 = 0;
   if (f->zero || t == 0) return 0;
   return span(f, 0, t, f->u0, f->m0, f->S0, m1, S1, gauss);
+}
+
+int arclen_quad_form_gauss(const arclen_quad_form *f) {
+  return !f->zero && f->B > 0
+         && straight_enough(f, 1, f->u0, f->m0, dot(f->c, f->c, f->dim));
 }
 
 double arclen_quad_form_unscale(const arclen_quad_form *f, double L) {

@@ -214,32 +214,96 @@ static double first_guess(const arclen_quad_form *F, double g) {
   return (u - u0) * iB;
 }
 
-int arclen_quad_time(const arclen_quad_form *F, double total, double s,
-                     double tol, double from[3], double *t, long *evals) {
-  int e2 = -F->scale, i;
+/* The segment's length in its units, measured where the caller has none
+** (*total not positive and finite); 0 where it overflows. */
+static int know_total(const arclen_quad_form *F, double *total) {
+  double m1, S1;
+  int gauss;
+  if (*total > 0 && isfinite(*total)) return 1;
+  *total = arclen_quad_form_unscale(F, arclen_quad_form_length(F, 1, &m1,
+                                                               &S1, &gauss));
+  return isfinite(*total);
+}
+
+/* A lower bound of the scaled length from the measured point x: s(x) = len
+** (within 16 U) plus 2 (1 - x) min |v| over [x, 1], where |v| grows past
+** the vertex (u = v.b >= 0: S = |v(x)|), falls up to it (u(1) <= 0: Sc) or
+** is least there (k/|b|); each less 32 U (S0 + Sc), which covers S's,
+** Sc's and k's roundings (step_from's dS, dk) and u's sign, and all less
+** 2^-30 of themselves. */
+static double length_below(const arclen_quad_form *F, double x, double len,
+                           double S) {
+  double m, slack = 32 * U * (F->S0 + F->Sc);
+  if (F->u0 + x * F->B >= 0) m = S;
+  else if (F->u0 + F->B <= 0) m = F->Sc;
+  else m = F->k / F->q;
+  m = m > slack ? m - slack : 0;
+  return (len + 2 * (1 - x) * m) * (1 - 0x1p-30);
+}
+
+/* s at or past the length total: t = 1, the total's length (no bound). */
+static int at_end(double total, double from[3], double *t) {
+  *t = from[0] = 1;
+  from[1] = total;
+  from[2] = HUGE_VAL;
+  return ARCLEN_OK;
+}
+
+/* The total measured (where the caller has none) and the scaled T and tol
+** from it; 0 where it overflows. */
+static int settle(const arclen_quad_form *F, double *total, double rtol,
+                  double *T, double *tol) {
+  if (!know_total(F, total)) return 0;
+  *T = times_pow2(*total, -F->scale, F->down);
+  *tol = times_pow2(rtol * *total, -F->scale, F->down);
+  return 1;
+}
+
+/* The certified answer t at the distance s, with the bound of its length's
+** miss (scaled) into from. */
+static int answer(const arclen_quad_form *F, double t, double s, double bnd,
+                  double from[3], double *out) {
+  *out = from[0] = t;
+  from[1] = s;
+  from[2] = times_pow2(bnd, F->scale, F->up);
+  return ARCLEN_OK;
+}
+
+int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
+                     double rtol, double from[3], double *t, long *evals) {
+  int e2 = -F->scale, i, lazy, ok;
   double down = F->down, up = F->up;
-  double g, T, lo, hi = 1, x, f, err, S, e = 0, bnd, len, r;
+  double g, T = NAN, tol = 0, lo, hi = 1, x, f, err, S, e = 0, bnd, len, r;
   double best, bestf, bestlen, besterr;
   *evals = 0;
   if (F->zero) {                     /* a point: every length is 0 */
     *t = from[0] = from[1] = from[2] = 0;
     return ARCLEN_OK;
   }
-  /* the certified start already answers (a distance within tol of the
-  ** last one), or lies beyond s (unsorted input): start from 0 */
-  if (fabs(from[1] - s) + from[2] <= tol) { *t = from[0]; return ARCLEN_OK; }
-  if (from[1] > s) from[0] = from[1] = from[2] = 0;
-  if (!(s > 0)) { *t = from[0] = from[1] = from[2] = 0; return ARCLEN_OK; }
-  if (!(s < total)) {
-    /* total: the caller's, no bound of its own */
-    *t = from[0] = 1; from[1] = total; from[2] = HUGE_VAL;
-    return ARCLEN_OK;
-  }
   /* the scaled form's units: exact (powers of two; a goal that becomes
   ** subnormal loses digits below 2^-1074 of a length near 1) */
   g = times_pow2(s, e2, down);
-  T = times_pow2(total, e2, down);
-  tol = times_pow2(tol, e2, down);
+  /* A first search (from 0) for an s in (0, S0 + Sc), the control
+  ** polygon's length (>= L), needs no total: tol comes from a lower bound
+  ** of L after its first length (length_below), so the total's closed form
+  ** is off the search's chain; it is measured only where that bound is
+  ** too strict or s may reach L (the clamp below, t = 1 at L). */
+  lazy = !(*total > 0 && isfinite(*total)) && from[0] == 0 && from[1] == 0
+         && from[2] == 0 && s > 0 && g < F->S0 + F->Sc && e2 > -1000
+         && e2 < 1000;
+  if (!lazy) {
+    if (!know_total(F, total)) return ARCLEN_EOVERFLOW;
+    tol = rtol * *total;
+    /* the certified start already answers (a distance within tol of the
+    ** last one), or lies beyond s (unsorted input): start from 0 */
+    if (fabs(from[1] - s) + from[2] <= tol) { *t = from[0]; return ARCLEN_OK; }
+    if (from[1] > s) from[0] = from[1] = from[2] = 0;
+    if (!(s > 0)) { *t = from[0] = from[1] = from[2] = 0; return ARCLEN_OK; }
+    /* total: the caller's, no bound of its own */
+    if (!(s < *total)) return at_end(*total, from, t);
+    T = times_pow2(*total, e2, down);
+    tol = times_pow2(tol, e2, down);
+  }
   lo = from[0];
   best = lo;
   bestlen = times_pow2(from[1], e2, down);
@@ -250,15 +314,16 @@ int arclen_quad_time(const arclen_quad_form *F, double total, double s,
     S = arclen_quad_form_speed(F, lo);     /* no length measured there */
     f = bestlen - g;
     if (S > 0 && step_from(F, lo, f, besterr + U * fabs(f), S, tol, &e, &bnd)
-        && lo + e > lo && lo + e < 1) {
-      *t = from[0] = lo + e;
-      from[1] = s;
-      from[2] = times_pow2(bnd, F->scale, up);
-      return ARCLEN_OK;
-    }
+        && lo + e > lo && lo + e < 1)
+      return answer(F, lo + e, s, bnd, from, t);
     x = S > 0 ? lo + e : -1;
   } else {
     x = first_guess(F, g);
+  }
+  if (!(x > lo && x < hi) && lazy) {          /* the fallbacks need T */
+    lazy = 0;
+    if (!settle(F, total, rtol, &T, &tol)) return ARCLEN_EOVERFLOW;
+    if (!(s < *total)) return at_end(*total, from, t);
   }
   if (!(x > lo && x < hi)) x = lo + (hi - lo) * (g - bestlen) / (T - bestlen);
   if (!(x > lo && x < hi)) x = lo + (hi - lo) / 2;
@@ -268,6 +333,16 @@ int arclen_quad_time(const arclen_quad_form *F, double total, double s,
     f = len - g;
     /* the closed form's rounding and the difference's */
     err = r * U * len + U * fabs(f);
+    if (lazy) {
+      double below = length_below(F, x, len, S);
+      if (g < below) {
+        tol = rtol * below;
+      } else {                     /* s may be L or past it: the clamp */
+        lazy = 0;
+        if (!settle(F, total, rtol, &T, &tol)) return ARCLEN_EOVERFLOW;
+        if (!(s < *total)) return at_end(*total, from, t);
+      }
+    }
     /* a measured length within tol answers (the closed form is the
     ** length's reference, as for arclen_quad_length itself) */
     if (fabs(f) <= tol || fabs(f) < bestf) {
@@ -275,13 +350,16 @@ int arclen_quad_time(const arclen_quad_form *F, double total, double s,
       if (fabs(f) <= tol) break;
     }
     if (f < 0) lo = x; else hi = x;
-    if (S > 0 && step_from(F, x, f, err, S, tol, &e, &bnd)
-        && x + e > lo && x + e < hi) {
-      *t = from[0] = x + e;
-      from[1] = s;
-      from[2] = times_pow2(bnd, F->scale, up);
-      return ARCLEN_OK;
+    ok = S > 0 && step_from(F, x, f, err, S, tol, &e, &bnd)
+         && x + e > lo && x + e < hi;
+    if (!ok && lazy) {       /* too strict a tol, perhaps: L's own, again */
+      lazy = 0;
+      if (!settle(F, total, rtol, &T, &tol)) return ARCLEN_EOVERFLOW;
+      if (!(s < *total)) return at_end(*total, from, t);
+      ok = S > 0 && step_from(F, x, f, err, S, tol, &e, &bnd)
+           && x + e > lo && x + e < hi;
     }
+    if (ok) return answer(F, x + e, s, bnd, from, t);
     e = S > 0 ? x + e : -1;                 /* not certified: measure it */
     if (!(e > lo && e < hi)) e = lo + (hi - lo) / 2;
     if (e == x || !(e > lo && e < hi)) break;      /* lo, hi adjacent */

@@ -457,23 +457,16 @@ static int conic_times(const seg_ctx *c, int e, const double *s, long n,
 }
 
 /* The times of the ascending s[0 .. n-1] on a quadratic set up as f, whose
-** length is total (NAN: the form's own, which *gauss then tells, when not
-** NULL, whether the Gauss rule gave): quad_time.c, each search from the
-** last one's answer. */
+** length is total (NAN: the form's own, measured where a search needs it),
+** each search from the last one's answer: quad_time.c. */
 static int quad_times(const arclen_quad_form *f, double total,
                       const double *s, long n, double rtol, double *t,
-                      long *evals, int *gauss) {
-  double from[3] = {0, 0, 0}, m1, S1;
+                      long *evals) {
+  double from[3] = {0, 0, 0};
   long i, ev;
-  int g;
   if (evals) *evals = 0;
-  if (!(total > 0 && isfinite(total))) {
-    total = arclen_quad_form_unscale(f, arclen_quad_form_length(f, 1, &m1, &S1, &g));
-    if (gauss) *gauss = g;
-    if (!isfinite(total)) return ARCLEN_EOVERFLOW;
-  }
   for (i = 0; i < n; i++) {
-    int rc = arclen_quad_time(f, total, s[i], rtol * total, from, t + i, &ev);
+    int rc = arclen_quad_time(f, &total, s[i], rtol, from, t + i, &ev);
     if (rc != ARCLEN_OK) return rc;
     if (evals) *evals += ev;
   }
@@ -494,7 +487,7 @@ static int plain_times(int kind, int dim, const double *seg, double total,
   if (kind == ARCLEN_SEG_QUAD) {
     arclen_quad_form f;
     arclen_quad_time_setup(seg, dim, &f);
-    return quad_times(&f, total, s, n, rtol, t, evals, NULL);
+    return quad_times(&f, total, s, n, rtol, t, evals);
   }
   e = kind == ARCLEN_SEG_LINE ? 0 : setup_ctx(kind, dim, seg, scaled, &c);
   if (kind == ARCLEN_SEG_CONIC && conic_times(&c, e, s, n, rtol, t, evals, &rc))
@@ -518,10 +511,11 @@ static int quad_time(int dim, const double *seg, double s, double rtol,
                      double *t, arclen_info *info) {
   arclen_quad_form f;
   long evals = 0;
-  int gauss = 0, rc;
+  int gauss, rc;
   arclen_quad_time_setup(seg, dim, &f);
-  rc = quad_times(&f, NAN, &s, 1, rtol, t, &evals, &gauss);
+  rc = quad_times(&f, NAN, &s, 1, rtol, t, &evals);
   if (info) {
+    gauss = arclen_quad_form_gauss(&f);
     info->branch = gauss ? "quad-gauss" : "quad";
     info->evals += gauss ? 10 : 0;
     info->pieces = evals;

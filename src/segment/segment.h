@@ -44,13 +44,17 @@ double arclen_quad_form_length(const arclen_quad_form *f, double t,
 double arclen_quad_form_unscale(const arclen_quad_form *f, double L);
 /* |v(t)| of the scaled form, v = (1 - t) a + t c (half the speed). */
 double arclen_quad_form_speed(const arclen_quad_form *f, double t);
+/* Whether the form's length over [0, 1] takes the short Gauss rule. */
+int arclen_quad_form_gauss(const arclen_quad_form *f);
 /* quad_time.c: the set-up above with S0 and Sc, and the time at the
-** length s (total: the segment's length as the caller has it; tol
-** absolute; from: as arclen_seg_invert's, below; *evals: the lengths
-** measured), all in the segment's units. */
+** length s (*total: the segment's length as the caller has it, or NAN:
+** measured and stored where the search needs it; rtol relative to it;
+** from: as arclen_seg_invert's, below; *evals: the lengths measured at
+** points inside), all in the segment's units; ARCLEN_EOVERFLOW where the
+** length overflows. */
 void arclen_quad_time_setup(const double *p, int dim, arclen_quad_form *f);
-int arclen_quad_time(const arclen_quad_form *f, double total, double s,
-                     double tol, double from[3], double *t, long *evals);
+int arclen_quad_time(const arclen_quad_form *f, double *total, double s,
+                     double rtol, double from[3], double *t, long *evals);
 void arclen_quad_point(const double *p, int dim, double t, double *out);
 void arclen_quad_derivative(const double *p, int dim, double t,
                             double *out);
