@@ -37,6 +37,12 @@ local HOSTILE = {
   {"past DBL_MAX/2 (halved legs)", {-9e307, 0, 9e307, 0, -3e307, 3e307}, c_only = true},
   {"3D arch", {0, 0, 0, 1, 2, 3, 2, 0, 1}},
   {"3D cusp", {0, 0, 0, 1, 1, 1, 0, 0, 0}},
+  -- the first guess's branches (quad_time.c first_guess): k^2 below
+  -- DBL_MIN (no log), y past the table (the asymptote), y below it (the
+  -- series, at the vertex); random ones take the table, U0 < 0 < U or not
+  {"hairpin, k^2 below DBL_MIN", {0, 0, 1, 1e-160, 0, 2e-160}},
+  {"far from the vertex, U ~ 2e9", {0, 0, 1, 1e-9, 3, 2.5e-9}},
+  {"symmetric arch, vertex at L/2", {0, 0, 1, 1, 2, 0}},
 }
 
 local function cases()

@@ -3,7 +3,8 @@
 spec/quad_time_spec.lua), two kinds of rows in spec/data/quad_times.tsv:
 
   time      a quadratic (hostile ones: cusps, straight, a zero leg, a thin
-            hairpin, tiny and huge scales, 3D; and seeded random ones), a
+            hairpin, tiny and huge scales, 3D, one for each branch of
+            quad_time.c's first guess; and seeded random ones), a
             fraction f, its length L and the time T with s(T) = f L, and
             the speed V = |B'(T)| there over L (VL, finite where V is
             not): the spec's answer t misses by about |t - T| VL of L.
@@ -45,6 +46,10 @@ HOSTILE = [
     ("past DBL_MAX/2", [-9e307, 0, 9e307, 0, -3e307, 3e307]),
     ("3D arch", [0, 0, 0, 1, 2, 3, 2, 0, 1]),
     ("3D cusp", [0, 0, 0, 1, 1, 1, 0, 0, 0]),
+    # quad_time.c's first guess, branch by branch (the table's: the rest)
+    ("hairpin, k^2 below DBL_MIN", [0, 0, 1, 1e-160, 0, 2e-160]),
+    ("far from the vertex, U ~ 2e9", [0, 0, 1, 1e-9, 3, 2.5e-9]),
+    ("symmetric arch, vertex at L/2", [0, 0, 1, 1, 2, 0]),
 ]
 FRACTIONS = ["1e-9", "0.01", "0.25", "0.5", "0.7", "0.999", "0.999999999"]
 
