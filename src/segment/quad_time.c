@@ -55,6 +55,12 @@ static double times_pow2(double x, int e, double p) {
   return e > -1000 && e < 1000 ? x * p : ldexp(x, e);
 }
 
+/* 1/3! and 1/4! as products: a division by a constant is a divsd (the
+** divider is one unit, ~4 cycles apart); each is within U/2 of its value,
+** an extra rounding inside the evaluation's 16 U and the bound's 2^-10 */
+#define C6 (1.0 / 6)
+#define C24 (1.0 / 24)
+
 /* The step from x, where f = s(x) - g within err and |v(x)| = S > 0:
 ** x + *e with the bound *bound of |s(x + *e) - g|; 1 when that is within
 ** tol.  The speed's derivatives at x are exact expressions (the head):
@@ -75,7 +81,7 @@ static double times_pow2(double x, int e, double p) {
 ** each derivative's error from those (first order), each times |e|^n/n!;
 ** the polynomial's own evaluation (f + sigma e = sigma tail to 3 |f| + 1
 ** sigma |e|, each term a few): 16 of the terms' sizes; and m from below
-** with S - dS and (k - dk)/q. */
+** with S - dS and (k - dk)/q.  The remainder's 24/120 is 0.2 rounded up. */
 static int step_from(const arclen_quad_form *F, double x, double f,
                      double err, double S, double tol, double *e,
                      double *bound) {
@@ -83,8 +89,9 @@ static int step_from(const arclen_quad_form *F, double x, double f,
   double sig = 2 * S, s1 = 2 * u * inv, s2 = 2 * k2 * inv * inv * inv;
   double s3 = -3 * s2 * u * inv * inv;
   double h = inv / 2, d = -f * h;                       /* h = 1/sigma */
-  double b2 = s1 * h / 2, b3 = s2 * h / 6, b4 = s3 * h / 24;
+  double b2 = s1 * h / 2, b3 = s2 * h * C6, b4 = s3 * h * C24;
   double tail, ae, e2, e3, m, m2, t1, t2, t3, t4, dS, du, dk, dk2, rS, r;
+  double kmin;
   tail = d * d * (-b2 + d * (2 * b2 * b2 - b3
                              + d * (5 * b2 * (b3 - b2 * b2) - b4)));
   *e = d + tail;
@@ -94,7 +101,7 @@ static int step_from(const arclen_quad_form *F, double x, double f,
   /* the polynomial at e: f + sigma e = sigma tail (sigma d = -f); where
   ** it alone exceeds tol (a guess far off) the rest is not needed */
   t1 = sig * tail; t2 = s1 / 2 * e2;
-  t3 = s2 / 6 * e2 * *e; t4 = s3 / 24 * e2 * e2;
+  t3 = s2 * C6 * e2 * *e; t4 = s3 * C24 * e2 * e2;
   *bound = fabs(t1 + t2 + t3 + t4) + err;
   if (!(*bound <= tol)) return 0;
   dS = U * (6 * (F->S0 + F->Sc) + 3 * S);
@@ -103,17 +110,17 @@ static int step_from(const arclen_quad_form *F, double x, double f,
   dk2 = (2 * k + dk) * dk;                    /* |k^2 - k_true^2| */
   rS = dS * inv;
   m = S - dS - F->q * (1 + 8 * U) * ae;  /* |v| on [x, x + e], from below */
-  if (F->q > 0 && (k - dk) / F->q * (1 - 4 * U) > m)
-    m = (k - dk) / F->q * (1 - 4 * U);          /* the least |v|, from below */
+  kmin = F->q > 0 ? (k - dk) / F->q * (1 - 4 * U) : 0;
+  if (kmin > m) m = kmin;                       /* the least |v|, from below */
   if (!(m > 0) || !(rS <= 1.0 / 16)) return 0;
   m2 = m * m;
   /* the derivatives' errors times |e|^n/n! */
   r = 2 * dS * ae
       + (2 * du * inv + fabs(s1) * (rS + 2 * U)) * e2 / 2
-      + (2 * dk2 * inv * inv * inv + s2 * (3 * rS + 4 * U)) * e3 / 6
+      + (2 * dk2 * inv * inv * inv + s2 * (3 * rS + 4 * U)) * e3 * C6
       + (6 * (dk2 * fabs(u) + k2 * du) * inv * inv * inv * inv * inv
-         + fabs(s3) * (5 * rS + 6 * U)) * e2 * e2 / 24;
-  *bound += 24 * (k + dk) * (k + dk) * F->B / (m2 * m2 * m) * (e2 * e3) / 120
+         + fabs(s3) * (5 * rS + 6 * U)) * e2 * e2 * C24;
+  *bound += 0.2 * (k + dk) * (k + dk) * F->B / (m2 * m2 * m) * (e2 * e3)
            + 1.5 * r
            + 16 * U * (sig * ae + fabs(f) + fabs(t2) + fabs(t3) + fabs(t4))
            /* x + e rounded to a double moves by U (x + |e|), where the
