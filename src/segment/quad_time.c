@@ -200,18 +200,18 @@ static double g_inverse(double y) {
 ** 2|a|): g/(2|a|). */
 static double first_guess(const arclen_quad_form *F, double g) {
   double u0 = F->u0, k = F->k, k2 = k * k, B = F->B, q = F->q;
-  double ik2 = 1 / k2, iB = 1 / B;        /* off the chain: k, B come first */
-  double Su0 = q * F->S0, Y = u0 * Su0 + g * B * q, y, u, w;
+  double Su0 = q * F->S0, Y = u0 * Su0 + g * B * q, y = HUGE_VAL, u, w, iB;
   if (B == 0) return g / (2 * F->S0);
-  if (k2 >= DBL_MIN) {          /* else k^2 asinh(u0/k) is below Y's ulp */
+  iB = 1 / B;                     /* waits on B only, not on the guess */
+  if (k2 >= DBL_MIN) {  /* else k^2 asinh(u0/k) < 1e-305, left out: y huge */
     w = rough_log(fabs(u0) + Su0) - rough_log(k);
     Y += k2 * (u0 < 0 ? -w : w);
+    y = Y * (1 / k2);    /* a product: 1/k^2 waits on k only, not on Y */
   }
-  y = Y * ik2;
   if (fabs(y) < (double)(1L << ARCLEN_QG_JMAX)) {
     u = k * g_inverse(fabs(y));
     if (y < 0) u = -u;
-  } else {                      /* far from the vertex, or k = 0: y = inf, NaN */
+  } else {                    /* far from the vertex, or k^2 below DBL_MIN */
     w = fabs(Y);
     if (k2 >= DBL_MIN && isfinite(y))
       w -= k2 * (0.5 + 0.5 * rough_log(4 * fabs(y)));
@@ -234,18 +234,19 @@ static int know_total(const arclen_quad_form *F, double *total) {
 
 /* A lower bound of the scaled length from the measured point x: s(x) = len
 ** (within 16 U) plus 2 (1 - x) min |v| over [x, 1], where |v| grows past
-** the vertex (u = v.b >= 0: S = |v(x)|), falls up to it (u(1) <= 0: Sc) or
-** is least there (k/|b|); each less 32 U (S0 + Sc), which covers S's,
-** Sc's and k's roundings (step_from's dS, dk) and u's sign, and all less
-** 2^-30 of themselves. */
+** the vertex (u = v.b >= 0: S = |v(x)|), falls up to it (u(1) <= 0: Sc)
+** or is least there.  The least |v| of all is k/|b|, from below (k - dk)/q
+** as in step_from; S and Sc are taken less 32 U (S0 + Sc), which covers
+** their roundings (step_from's dS) and, where u's sign is in doubt (|u| <=
+** du), |v(x)| - k/|b| <= du/q <= 13 U (S0 + Sc).  All less 2^-30 of
+** itself, which covers len's rounding. */
 static double length_below(const arclen_quad_form *F, double x, double len,
                            double S) {
   double m, slack = 32 * U * (F->S0 + F->Sc);
-  if (F->u0 + x * F->B >= 0) m = S;
-  else if (F->u0 + F->B <= 0) m = F->Sc;
-  else m = F->k / F->q;
-  m = m > slack ? m - slack : 0;
-  return (len + 2 * (1 - x) * m) * (1 - 0x1p-30);
+  if (F->u0 + x * F->B >= 0) m = S - slack;
+  else if (F->u0 + F->B <= 0) m = F->Sc - slack;
+  else m = (F->k - 6 * U * F->S0 * F->Sc) / F->q * (1 - 4 * U);
+  return (len + 2 * (1 - x) * (m > 0 ? m : 0)) * (1 - 0x1p-30);
 }
 
 /* s at or past the length total: t = 1, the total's length (no bound). */
