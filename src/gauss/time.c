@@ -163,6 +163,30 @@ static int stadium_order(const integrator *in, double c, double h,
   return nn <= 2 ? 2 : nn < ARCLEN_GAUSS_MAX ? (int)ceil(nn) : 0;
 }
 
+/* The order for a window [c - h, c + h] taken ahead (solve_goal), from
+** the ellipse through its nearest branch point (arclen_bound_piece: |f| <=
+** M on it, Trefethen's bound as in integrator.h's head), else
+** stadium_order.  It holds for every sub-range too: the ellipse of the
+** same rho about a sub-range lies inside the window's (the Green's
+** function of a subset is the larger), where |f| <= M, and the bound
+** falls with the half-width.  Where a branch point stands off an end of
+** the window, or low over it, the ellipse through it is much wider than
+** the stadium (rho - 1 ~ sqrt(2 d/h) against d/h at a distance d): on
+** `make bench`'s curves at L/2 it asks 27 points on average where
+** stadium_order asked 36, and fails on 2% of the windows, not 16%
+** (doc/benchmarks.md). */
+static int window_order(const integrator *in, double c, double h,
+                        double target) {
+  piece_bound eb;
+  arclen_bound_piece(&in->br, c, h, &eb);
+  if (!eb.inside && eb.log_rho2 > 0) {
+    double nn = (arclen_rough_log2(h * (64.0 / 15.0) / target) +
+                 ARCLEN_LOG2_ERR + eb.logc) / eb.log_rho2;
+    if (nn < ARCLEN_GAUSS_MAX) return nn <= 2 ? 2 : (int)ceil(nn);
+  }
+  return stadium_order(in, c, h, target);
+}
+
 /* The order for [x, y] inside the piece [pa, pb] to within target
 ** (scaled units) from [x, y]'s own distance to the branch points
 ** (stadium_order); where that fails (a root too near), the piece's
@@ -209,12 +233,12 @@ static int sub_order(integrator *in, double x, double y, double target,
 }
 
 /* The integral over [x, y] inside the piece [pa, pb] to within target:
-** by the order n when given (stadium_order's for a range that holds it),
-** else sub_order's; where no order is to be had, the piece's rule r, or
-** in an open piece (r NULL, no rule of its own) the two halves, each to
-** half the target (a graded cut towards the root that defeats the
-** bounds; the integrator's caps: MAXDEPTH levels, MAXSPLITS halvings,
-** then its floor rule). */
+** by the order n when given (window_order's or stadium_order's for a
+** range that holds it), else sub_order's; where no order is to be had,
+** the piece's rule r, or in an open piece (r NULL, no rule of its own)
+** the two halves, each to half the target (a graded cut towards the
+** root that defeats the bounds; the integrator's caps: MAXDEPTH levels,
+** MAXSPLITS halvings, then its floor rule). */
 static double sub_integral(integrator *in, double x, double y, double target,
                            double pa, double pb, const arclen_gauss_rule *r,
                            int n, int depth) {
@@ -265,7 +289,7 @@ typedef struct piece_search {
   double a, b, plen, rough, sqlead;
   const arclen_gauss_rule *r;
   known lo, hi;
-  double pre_x, pre_y, pre_share;  /* stadium_order's pre_n holds there */
+  double pre_x, pre_y, pre_share;  /* an order pre_n that holds there */
   int pre_n;
 } piece_search;
 
@@ -358,6 +382,13 @@ static void eval_at(integrator *in, piece_search *p, double t,
   speed_of(in, k);
 }
 
+/* Cauchy's estimates at a point are taken before the integral there, for
+** a step of up to this share of the bracket (the refined guess errs by
+** 3.5e-9 of the piece at the median): off the integral's chain, they
+** certify a short Newton step as soon as it is known; the estimates for
+** the step itself (reach 2 |d|) are taken only where these do not. */
+#define AHEAD_STEP 0x1p-16
+
 /* Safeguarded Newton for s(t) = goal from the guess t inside the bracket:
 ** s is increasing, so the bracket always holds the answer, and a step
 ** leaving it is replaced by bisection.  The k-th integral may err by share
@@ -371,7 +402,9 @@ static double newton_search(integrator *in, piece_search *p, double t,
     t = p->lo.t + (p->hi.t - p->lo.t) / 2;
   for (it = 0; it < 100; it++) {
     known k, *kp;
-    double g, next, d, e, e3, lo, hi;
+    cauchy ahead;
+    double g, next, d, e, e3, lo, hi, reach = (p->hi.t - p->lo.t) * AHEAD_STEP;
+    cauchy_near(&in->br, p->sqlead, t, reach, &ahead);
     eval_at(in, p, t, share, &k);
     share /= 2;
     g = (k.s - goal) + k.sc;
@@ -390,6 +423,11 @@ static double newton_search(integrator *in, piece_search *p, double t,
       d = -g * kp->inv;
       if (t + d > lo && t + d < hi) {
         cauchy cb;
+        /* the estimates for a wider reach are the weaker (dist and r fall,
+        ** m grows with D), so these certify only what the step's own
+        ** would (up to rounding): the same answer */
+        if (2 * fabs(d) <= reach && newton_certified(&ahead, d, tol))
+          return t + d;
         cauchy_near(&in->br, p->sqlead, t, 2 * fabs(d), &cb);
         if (newton_certified(&cb, d, tol)) return t + d;
         slopes_of(in, kp);
@@ -461,8 +499,9 @@ static double refine_guess(integrator *in, const piece_search *p, double t,
 #define REVERSION_REACH 8
 
 /* An open piece's first certified integral reaches this share of the
-** piece past the length's fraction (doc/benchmarks.md: 1/2 to 1/8 tried). */
-#define OPEN_WINDOW 0.25
+** piece past the length's fraction (doc/benchmarks.md: 1/16 to the whole
+** piece tried; 1/4 with stadium_order's windows, 3/8 with window_order's). */
+#define OPEN_WINDOW 0.375
 
 static double solve_goal(integrator *in, piece_search *p, double goal,
                          double tol, double share) {
@@ -488,12 +527,13 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
     if (open && !(ds > gap)) ds = gap * (1 + 1.0 / 16);  /* rough fell short */
     t = hermite_guess(lo, hi, speed_of(in, &p->lo), speed_of(in, &p->hi), ds,
                       gap);
-    /* the first certified integral's order, taken beside the refined
-    ** guess, not after it: for the bracket's part from its nearer end to a
-    ** 32nd of it past the guess (the refined guess moves it by less nine
-    ** times in ten; else eval_at takes its own); in an open piece from lo
-    ** to OPEN_WINDOW of the bracket past the length's fraction, known
-    ** before the Hermite guess, whose chain it then runs beside */
+    /* the first certified integral's order (window_order), taken beside
+    ** the refined guess, not after it: for the bracket's part from its
+    ** nearer end to a 32nd of it past the guess (the refined guess moves
+    ** it by less nine times in ten; else eval_at takes its own); in an
+    ** open piece from lo to OPEN_WINDOW of the bracket past the length's
+    ** fraction, known before the Hermite guess, whose chain it then runs
+    ** beside */
     if (open) {
       double u = gap / ds;
       p->pre_x = lo;
@@ -506,8 +546,8 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
       p->pre_y = hi;
     }
     p->pre_share = share;
-    p->pre_n = stadium_order(in, p->pre_x + (p->pre_y - p->pre_x) / 2,
-                             (p->pre_y - p->pre_x) / 2, share);
+    p->pre_n = window_order(in, p->pre_x + (p->pre_y - p->pre_x) / 2,
+                            (p->pre_y - p->pre_x) / 2, share);
     t = refine_guess(in, p, t, goal);
   }
   return newton_search(in, p, t, goal, tol, share);
