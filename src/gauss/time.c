@@ -4,6 +4,7 @@
 ** integrator's piece that holds s (integrator.h).
 */
 #include "gauss/integrator.h"
+#include "gauss/ellipse_table.h"
 
 /* Cauchy's estimates near t: f is analytic within r of [t - D, t + D]
 ** with |f| <= m there, so that |f^(k)| <= k! m / r^k on [t - D, t + D].
@@ -164,27 +165,65 @@ static int stadium_order(const integrator *in, double c, double h,
 }
 
 /* The order for a window [c - h, c + h] taken ahead (solve_goal), from
-** the ellipse through its nearest branch point (arclen_bound_piece: |f| <=
-** M on it, Trefethen's bound as in integrator.h's head), else
-** stadium_order.  It holds for every sub-range too: the ellipse of the
-** same rho about a sub-range lies inside the window's (the Green's
-** function of a subset is the larger), where |f| <= M, and the bound
-** falls with the half-width.  Where a branch point stands off an end of
-** the window, or low over it, the ellipse through it is much wider than
-** the stadium (rho - 1 ~ sqrt(2 d/h) against d/h at a distance d): on
-** `make bench`'s curves at L/2 it asks 27 points on average where
-** stadium_order asked 36, and fails on 2% of the windows, not 16%
-** (doc/benchmarks.md). */
+** the Bernstein ellipse E through its nearest branch point, where f is
+** analytic: Trefethen's bound (integrator.h's head) h (64/15) M rho^(2 -
+** 2n) / (rho^2 - 1) with |f| <= M on E.  It holds for every sub-range too:
+** the ellipse of the same rho about a sub-range lies inside E (the
+** Green's function of a subset is the larger), and the bound falls with
+** the half-width.  Where a branch point stands off an end of the window,
+** or low over it, E is much wider than stadium_order's stadium (rho - 1 ~
+** sqrt(2 d/h) against d/h at a distance d): at L/2 on `make bench`'s
+** curves it asks 32 points on average where the stadium asks 49 on the
+** same windows, and finds none on 2.4% of them, not 21%
+** (doc/benchmarks.md).
+**
+** In the window's units the branch point z has a - 1 = (|z - 1| + |z + 1|
+** - 2)/2 (E's semi-major axis a, rounded down as in bound.c), and the
+** ellipse table gives log2(rho^2) from below and its inverse from above;
+** rho^2 / (rho^2 - 1) = rho / (2 b) <= a / b with b^2 = (a - 1)(a + 1);
+** every point of E lies within h a of c, so M = sqrt(lead2) prod (|c -
+** re_k| + im_k + h a) over the pairs (as arclen_bound_piece).  One
+** division and two square roots a pair, where arclen_bound_piece and
+** its order took eleven such operations (doc/benchmarks.md).  0 where
+** there is no such order (a real root inside the window, a - 1 off the
+** table, or more than the tables' points): then stadium_order's. */
 static int window_order(const integrator *in, double c, double h,
                         double target) {
-  piece_bound eb;
-  arclen_bound_piece(&in->br, c, h, &eb);
-  if (!eb.inside && eb.log_rho2 > 0) {
-    double nn = (arclen_rough_log2(h * (64.0 / 15.0) / target) +
-                 ARCLEN_LOG2_ERR + eb.logc) / eb.log_rho2;
-    if (nn < ARCLEN_GAUSS_MAX) return nn <= 2 ? 2 : (int)ceil(nn);
+  const arclen_branch *br = &in->br;
+  const arclen_ellipse_cell *cell;
+  double inv = 1 / h, am1 = HUGE_VAL, s12 = 0, prod, x0, dx, x, nn, ah;
+  uint64_t u;
+  int k;
+  for (k = 0; k < br->n; k += 2) {   /* the upper roots of the pairs */
+    double dr = br->re[k] - c, im = br->im[k];
+    if (im > 0) {
+      double zu = dr * inv, zv = im * inv;
+      double r1 = sqrt((zu - 1) * (zu - 1) + zv * zv);
+      double r2 = sqrt((zu + 1) * (zu + 1) + zv * zv);
+      double sk = r1 + r2, ak = (sk - 2) * 0.5 - sk * 0x1p-50;
+      if (ak < am1) {
+        am1 = ak;
+        s12 = sk;
+      }
+    } else if (fabs(dr) < h * (1 - 1e-12)) {
+      return 0;                        /* a kink inside: no bound sees it */
+    }
   }
-  return stadium_order(in, c, h, target);
+  memcpy(&u, &am1, sizeof u);
+  u = (u >> ARCLEN_ELLIPSE_SHIFT) - ARCLEN_ELLIPSE_BASE;
+  if (!(am1 > 0) || u >= ARCLEN_ELLIPSE_CELLS) return 0;   /* also NaN */
+  cell = &arclen_ellipse_cells[u];
+  u = (u + ARCLEN_ELLIPSE_BASE) << ARCLEN_ELLIPSE_SHIFT;  /* the cell's start */
+  memcpy(&x0, &u, sizeof x0);
+  dx = am1 - x0;                       /* exact: Sterbenz */
+  ah = h * s12 * (0.5 + 0x1p-50);      /* h a, rounded up */
+  prod = h * (64.0 / 15.0) * (s12 * (0.5 + 0x1p-50));
+  for (k = 0; k < br->n; k += 2) prod *= fabs(br->re[k] - c) + br->im[k] + ah;
+  x = arclen_rough_log2(prod) - arclen_rough_log2(target) + in->lead_log -
+      0.5 * arclen_rough_log2(am1 * (am1 + 2)) + 3 * ARCLEN_LOG2_ERR;
+  if (!(prod > 0 && prod < 1e300)) return 0;
+  nn = x * (cell->ilam + dx * cell->dilam);     /* >= x / log2(rho^2) */
+  return x <= 0 ? 2 : nn < ARCLEN_GAUSS_MAX ? (nn <= 2 ? 2 : (int)ceil(nn)) : 0;
 }
 
 /* The order for [x, y] inside the piece [pa, pb] to within target
@@ -552,6 +591,9 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
     p->pre_share = share;
     p->pre_n = window_order(in, p->pre_x + (p->pre_y - p->pre_x) / 2,
                             (p->pre_y - p->pre_x) / 2, share);
+    if (!p->pre_n)
+      p->pre_n = stadium_order(in, p->pre_x + (p->pre_y - p->pre_x) / 2,
+                               (p->pre_y - p->pre_x) / 2, share);
     t = refine_guess(in, p, t, goal);
   }
   return newton_search(in, p, t, goal, tol, share);
