@@ -425,11 +425,12 @@ static void eval_at(integrator *in, piece_search *p, double t,
   speed_of(in, k);
 }
 
-/* Cauchy's estimates at a point are taken before the integral there, for
-** a step of up to this share of the bracket (the refined guess errs by
-** 3.5e-9 of the piece at the median): off the integral's chain, they
+/* At the refined guess, Cauchy's estimates are taken before the integral
+** there, for a reach of this share of the bracket (the guess errs by
+** 1.2e-8 of the piece at the median): off the integral's chain, they
 ** certify a short Newton step as soon as it is known; the estimates for
-** the step itself (reach 2 |d|) are taken only where these do not. */
+** the step itself (reach 2 |d|) are taken only where these do not.  A
+** sweep's chained guesses, ~1e-5 off, would seldom use them. */
 #define AHEAD_STEP 0x1p-16
 
 /* Safeguarded Newton for s(t) = goal from the guess t inside the bracket:
@@ -437,17 +438,22 @@ static void eval_at(integrator *in, piece_search *p, double t,
 ** leaving it is replaced by bisection.  The k-th integral may err by share
 ** 2^-k, so the s values known err by less than 2 share more than the
 ** bracket's did.  The bracket is left holding the last points evaluated,
-** for the next distance. */
+** for the next distance.  refined: t is the refined guess. */
 static double newton_search(integrator *in, piece_search *p, double t,
-                            double goal, double tol, double share) {
+                            double goal, double tol, double share,
+                            int refined) {
   int it;
   if (!(t > p->lo.t && t < p->hi.t))   /* a guess from outside: the middle */
     t = p->lo.t + (p->hi.t - p->lo.t) / 2;
   for (it = 0; it < 100; it++) {
     known k, *kp;
     cauchy ahead;
-    double g, next, d, e, e3, lo, hi, reach = (p->hi.t - p->lo.t) * AHEAD_STEP;
-    cauchy_near(&in->br, p->sqlead, t, reach, &ahead);
+    double g, next, d, e, e3, lo, hi, reach = -1;
+    ahead.ok = 0;
+    if (it == 0 && refined) {
+      reach = (p->hi.t - p->lo.t) * AHEAD_STEP;
+      cauchy_near(&in->br, p->sqlead, t, reach, &ahead);
+    }
     eval_at(in, p, t, share, &k);
     share /= 2;
     g = (k.s - goal) + k.sc;
@@ -549,6 +555,7 @@ static double refine_guess(integrator *in, const piece_search *p, double t,
 static double solve_goal(integrator *in, piece_search *p, double goal,
                          double tol, double share) {
   double t = -1;
+  int refined = 0;
   if (goal >= p->hi.s + p->hi.sc && p->hi.t < p->b) {
     p->lo = p->hi;                     /* the last search ended above */
     set_known(&p->hi, p->b, p->plen);
@@ -595,8 +602,9 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
       p->pre_n = stadium_order(in, p->pre_x + (p->pre_y - p->pre_x) / 2,
                                (p->pre_y - p->pre_x) / 2, share);
     t = refine_guess(in, p, t, goal);
+    refined = 1;
   }
-  return newton_search(in, p, t, goal, tol, share);
+  return newton_search(in, p, t, goal, tol, share, refined);
 }
 
 /* time cuts at the feet within 0.2 of the width, more than the length
