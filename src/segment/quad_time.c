@@ -61,6 +61,30 @@ static double times_pow2(double x, int e, double p) {
 #define C6 (1.0 / 6)
 #define C24 (1.0 / 24)
 
+/* The bound of |s(x + e) - g| for the second-order step e = d - b2 d^2
+** (t1 = sigma tail, t2 = sigma' e^2/2: the quadratic Taylor polynomial's
+** value is t1 + t2), where step_from found |b||e| <= 2^-16 S (eps below)
+** and dS <= S/16.  Its terms are step_from's for a polynomial of second
+** order, each bounded on the values at hand:
+**   remainder: max|sigma''| |e|^3/6 with sigma'' = 2k^2/|v|^3 <= 2|b|^2/|v|
+**      (k = |v x b| <= |v||b|) and |v| >= S - dS - |b||e| >= 0.937 S on the
+**      step: B |e|^3/(3 0.937 S) with B, 1/S within a few U, 0.37 B|e|^3/S;
+**   the derivatives' errors, 3/2 (2 dS|e| + (2 du/S + |sigma'| (dS/S + 2U))
+**      e^2/2): with e^2/S <= eps |e|/|b|, du/|b| = U (4 (|a| + 2x|b|) +
+**      |u|/|b|) <= 2 dS (|b| <= |a| + |c|, |u| <= |b| |v| <= 1.1 |b| S) and
+**      |sigma'| e^2/2 <= 1.1 eps S |e|, 2US <= dS: the e^2 term is within
+**      4.3 eps dS |e|, so the whole within 3.001 dS |e|;
+**   the evaluation's rounding, 16 U of the terms' sizes, as in step_from;
+**   x + e rounded (U (x + |e|)) where the speed is at most 2 (S + dS +
+**      |b||e|) <= 2.13 S: 2.2 U S (x + |e|). */
+static double short_bound(const arclen_quad_form *F, double x, double f,
+                          double err, double S, double inv, double t2,
+                          double t1, double ae, double dS) {
+  return fabs(t1 + t2) + err
+         + ae * (3.001 * dS + 32 * U * S + 0.37 * F->B * ae * ae * inv)
+         + 16 * U * (fabs(f) + fabs(t2)) + 2.2 * U * S * (x + ae);
+}
+
 /* The step from x, where f = s(x) - g within err and |v(x)| = S > 0:
 ** x + *e with the bound *bound of |s(x + *e) - g|; 1 when that is within
 ** tol.  The speed's derivatives at x are exact expressions (the head):
@@ -85,13 +109,28 @@ static double times_pow2(double x, int e, double p) {
 static int step_from(const arclen_quad_form *F, double x, double f,
                      double err, double S, double tol, double *e,
                      double *bound) {
-  double u = F->u0 + x * F->B, inv = 1 / S, k = F->k, k2 = k * k;
-  double sig = 2 * S, s1 = 2 * u * inv, s2 = 2 * k2 * inv * inv * inv;
-  double s3 = -3 * s2 * u * inv * inv;
+  double u = F->u0 + x * F->B, inv = 1 / S, k = F->k, k2;
+  double sig = 2 * S, s1 = 2 * u * inv, s2, s3;
   double h = inv / 2, d = -f * h;                       /* h = 1/sigma */
-  double b2 = s1 * h / 2, b3 = s2 * h * C6, b4 = s3 * h * C24;
+  double b2 = s1 * h / 2, b3, b4;
   double tail, ae, e2, e3, m, m2, t1, t2, t3, t4, dS, du, dk, dk2, rS, r;
   double kmin;
+  /* the short step first: second order (e = d - b2 d^2) where it is below
+  ** 2^-16 of |v|/|b|, certified by short_bound; else the fourth order */
+  tail = -b2 * d * d;
+  *e = d + tail;
+  ae = fabs(*e);
+  dS = U * (6 * (F->S0 + F->Sc) + 3 * S);
+  if (F->q * ae <= 0x1p-16 * S && dS <= S / 16) {
+    *bound = short_bound(F, x, f, err, S, inv, s1 / 2 * *e * *e, sig * tail,
+                         ae, dS);
+    if (*bound <= tol * (1 - 1.0 / 1024)) return 1;
+  }
+  k2 = k * k;
+  s2 = 2 * k2 * inv * inv * inv;
+  s3 = -3 * s2 * u * inv * inv;
+  b3 = s2 * h * C6;
+  b4 = s3 * h * C24;
   tail = d * d * (-b2 + d * (2 * b2 * b2 - b3
                              + d * (5 * b2 * (b3 - b2 * b2) - b4)));
   *e = d + tail;
@@ -104,7 +143,6 @@ static int step_from(const arclen_quad_form *F, double x, double f,
   t3 = s2 * C6 * e2 * *e; t4 = s3 * C24 * e2 * e2;
   *bound = fabs(t1 + t2 + t3 + t4) + err;
   if (!(*bound <= tol)) return 0;
-  dS = U * (6 * (F->S0 + F->Sc) + 3 * S);
   du = U * (4 * (F->S0 * F->q + 2 * x * F->B) + fabs(u));
   dk = 6 * U * F->S0 * F->Sc;
   dk2 = (2 * k + dk) * dk;                    /* |k^2 - k_true^2| */
