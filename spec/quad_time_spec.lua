@@ -120,6 +120,31 @@ describe("a quadratic's time at a length (quad_time.c)", function()
     end)
   end
 
+  -- a sweep steps from the last answer, often by more than the first
+  -- guess's 1e-6 of |v|/|b|: the short step's guard (2^-16) and bound
+  -- decide there (a copy that took second-order steps up to 1/8 of |v|/|b|
+  -- without their remainder missed by 2.9 tol on the first of these)
+  it("sweeps of random ascending distances are within tol of the closed form", function()
+    local tols = H.engine == "c" and {1e-15, 1e-12, 1e-9} or {1e-12, 1e-9}
+    for i = 1, 300 do
+      local q = {}
+      for k = 1, 6 do q[k] = 10 * rand() - 5 end
+      local L = arclen.segment_length("quad", q)
+      local ds = {}
+      for j = 1, 2 + math.floor(rand() * 12) do ds[j] = L * rand() end
+      table.sort(ds)
+      for _, tol in ipairs(tols) do
+        local ks, ts = {}, {}
+        arclen._walk_times({q}, {[0] = 0, L}, ds, tol, false, ks, ts, "Q")
+        for j, d in ipairs(ds) do
+          local m = miss(q, ts[j], d)
+          assert(m <= tol * L + 4 * EPS * L,
+                 ("random %d, distance %d, tol %g: %.3g L"):format(i, j, tol, m / L))
+        end
+      end
+    end
+  end)
+
   it("a sweep of 300 ascending distances equals the single times within tol", function()
     local tol = H.engine == "c" and 1e-15 or 1e-12
     for _, c in ipairs({HOSTILE[1], HOSTILE[8], HOSTILE[10], HOSTILE[12], {"random", {-4, 3, 2, -1, 4.5, 2.5}}}) do
