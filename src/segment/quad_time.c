@@ -13,7 +13,9 @@
 ** max(k/|b|, |v(x)| - |b| |e|) on the step (k/|b| is |v|'s least value,
 ** at the vertex; |dv/dt| = |b|).  Where that, the known value's own error
 ** and the step's roundings stay within tol, x + e is the answer without
-** another length (as src/gauss/time.c's second_order_step on a cubic).
+** another length (as src/gauss/time.c's second_order_step on a cubic);
+** a step below 2^-16 of |v|/|b|, as from the first guess, takes the
+** second-order polynomial and a shorter bound (short_bound).
 ** Else x + e is measured and the step repeats, inside a bracket of
 ** measured points, bisecting where a step leaves it (a cusp: |v| = 0 at
 ** the vertex when k = 0), capped.  A sweep over ascending distances (the
@@ -89,8 +91,9 @@ static double short_bound(const arclen_quad_form *F, double x, double f,
 ** x + *e with the bound *bound of |s(x + *e) - g|; 1 when that is within
 ** tol.  The speed's derivatives at x are exact expressions (the head):
 ** sigma = 2S, sigma' = 2u/S, sigma'' = 2k^2/S^3, sigma''' = -6k^2 u/S^5 (u
-** = v.b), so e is the root of the Taylor polynomial of fourth order by
-** series reversion (as src/gauss/time.c's reversion_tail), whose value
+** = v.b), so e is, past the short step (below 2^-16 of |v|/|b|: the
+** quadratic polynomial's root, short_bound), the root of the Taylor
+** polynomial of fourth order by series reversion (as src/gauss/time.c's reversion_tail), whose value
 ** there is computed, and the remainder is max|sigma''''| |e|^5/120 with
 ** sigma'''' = 6k^2 (5u^2 - B S^2)/S^7, at most 24 k^2 B/|v|^5 in size
 ** (u^2 <= B S^2), and |v| >= m on the step.  The roundings, against the
