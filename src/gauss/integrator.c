@@ -274,6 +274,11 @@ void arclen_integ_push_from(integrator *in, int i0) {
     push(in, arclen_first_from(in, i), arclen_first_to(in, i), 0);
 }
 
+/* First piece i alone, for the stack to cut and pop before piece i + 1. */
+void arclen_integ_push_one(integrator *in, int i) {
+  push(in, arclen_first_from(in, i), arclen_first_to(in, i), 0);
+}
+
 /* sum plus a first piece that no order up to NMAX meets, cut on the
 ** stack (its pieces added one by one, in increasing t). */
 static double integrate_cut(integrator *in, const span *s, double sum) {

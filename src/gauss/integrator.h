@@ -220,6 +220,9 @@ int arclen_integ_orders_of(const integrator *in, int i0, int i1, const double *c
 /* The first pieces from i0 on onto the stack; then next_piece pops them
 ** in order. */
 void arclen_integ_push_from(integrator *in, int i0);
+/* First piece i alone onto the stack (the caller takes the next first
+** piece once next_piece has popped its parts). */
+void arclen_integ_push_one(integrator *in, int i);
 /* The next accepted piece [*from, *to] in increasing t, its length and
 ** rule (rule may be NULL); 0 when none is left.  A piece whose chord
 ** reaches past open_below (a distance from its start; HUGE_VAL: never)

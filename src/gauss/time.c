@@ -613,21 +613,29 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
 ** of a bound, a rule and a division (doc/benchmarks.md: the shares tried). */
 #define TIME_FOOTCUT 0.2
 
-/* The pieces of the integral in increasing t: the first pieces with their
-** orders straight from the branch points when those are to be had (taken
-** together, as the length takes them: their chains of square roots and
-** logs run side by side, doc/benchmarks.md), else the integrator's stack,
-** whose pieces and rules are the same (spec/fastpath_spec.lua), so that
-** the answer does not depend on which path gave them.  Only the pieces
-** that the chords show to hold the last distance take their orders at
-** the start (a chord is shorter than its arc); the rest are taken when
-** reached, and when their orders are not to be had, the stack takes over
-** from there. */
+/* The pieces of the integral in increasing t: each first piece (between
+** the feet) by the order of its own Bernstein ellipse (window_order: a
+** few square roots, where the branch-cut bound's order is a long chain of
+** tables, logs and sums that a goal in the next piece waits for; it asks
+** a quarter more points, doc/benchmarks.md), up to WALK_ELLIPSE_MAX points;
+** else by the branch-cut bound's order straight from the branch points
+** when no report is asked (their chains taken side by side, as the length
+** takes them), else by the integrator's stack for that piece alone, whose
+** parts and rules are the same where that order is to be had
+** (spec/fastpath_spec.lua), so that the answer does not depend on which
+** path gave them.  Only the pieces that the chords show to hold the last
+** distance take their orders at the start (a chord is shorter than its
+** arc); the rest are taken when reached. */
 typedef struct piece_walk {
   int fast, k, have;
   double c[ARCLEN_CUT_PIECES], half_width[ARCLEN_CUT_PIECES];
-  int n[ARCLEN_CUT_PIECES];
+  int n[ARCLEN_CUT_PIECES];            /* 0: the stack's */
 } piece_walk;
+
+/* The most points a first piece takes from its ellipse; past it the
+** branch-cut bound's order, which is tighter (doc/benchmarks.md: 32 lost
+** on the curves of two pieces, 64 to 128 read the same). */
+#define WALK_ELLIPSE_MAX 64
 
 /* The first pieces whose chords reach past the distance s (scaled): the
 ** pieces that certainly hold it, and all before (every one when the
@@ -642,20 +650,36 @@ static int pieces_reaching(const integrator *in, double s) {
   return in->nmin + 1;
 }
 
+/* First piece i's share of the truncation budget (scaled units), as the
+** integrator's bounds take it: rtol len_lower times its share of the
+** width. */
+static double piece_target(const integrator *in, double half_width) {
+  return in->rtol * in->len_lower * (2 * half_width / in->width);
+}
+
+/* The orders of first pieces i0 <= i < i1: their ellipses' (their chains
+** side by side), then on the fast path the branch-cut bound's for those
+** whose ellipse gives none; 0 where the stack is to take the piece. */
+static void walk_orders(integrator *in, piece_walk *w, int i0, int i1) {
+  int i, all = 1;
+  for (i = i0; i < i1; i++) {
+    int n = window_order(in, w->c[i], w->half_width[i],
+                         piece_target(in, w->half_width[i]));
+    w->n[i] = n <= WALK_ELLIPSE_MAX ? n : 0;
+    all = all && w->n[i];
+  }
+  if (all || !w->fast) return;
+  for (i = i0; i < i1; i++)            /* 0 where the cut order fails too */
+    if (!w->n[i]) arclen_integ_orders_of(in, i, i + 1, w->c, w->half_width, w->n);
+}
+
 static void walk_start(integrator *in, piece_walk *w, double s_last) {
   w->k = 0;
-  w->fast = 0;
-  if (!in->want_err) {
-    arclen_integ_first_pieces(in, w->c, w->half_width);
-    /* not the last: it may be open, and then needs no order */
-    w->have = pieces_reaching(in, s_last) - 1;
-    w->fast = w->have == 0 ||
-              arclen_integ_orders_of(in, 0, w->have, w->c, w->half_width, w->n);
-  }
-  if (!w->fast) {
-    arclen_integ_prepare_bounds(in);
-    arclen_integ_push_from(in, 0);
-  }
+  w->fast = !in->want_err;
+  arclen_integ_first_pieces(in, w->c, w->half_width);
+  /* not the last: it may be open, and then needs no order */
+  w->have = pieces_reaching(in, s_last) - 1;
+  walk_orders(in, w, 0, w->have);
 }
 
 /* The next piece [*a, *b] with its rule and length *len; a piece whose
@@ -666,38 +690,38 @@ static void walk_start(integrator *in, piece_walk *w, double s_last) {
 static int walk_next(integrator *in, piece_walk *w, double open_below,
                      double *a, double *b, double *len,
                      const arclen_gauss_rule **r, int *last) {
-  if (w->fast && w->k <= in->nmin &&
-      arclen_chord_holds(in->chords[w->k], open_below)) {
-    *a = arclen_first_from(in, w->k);
-    *b = arclen_first_to(in, w->k);
-    *last = w->k == in->nmin;
+  int k;
+  if (in->top > 0 && arclen_integ_next_piece(in, open_below, a, b, len, r)) {
+    *last = in->top == 0 && w->k > in->nmin;   /* a part of piece k - 1 */
+    return 1;
+  }
+  if ((k = w->k) > in->nmin) return 0;
+  *a = arclen_first_from(in, k);
+  *b = arclen_first_to(in, k);
+  *last = k == in->nmin;
+  w->k++;
+  if (arclen_chord_holds(in->chords[k], open_below)) {
     *r = NULL;
     *len = HUGE_VAL;
-    w->k++;
     return 1;
   }
-  if (w->fast && w->k == w->have && w->k <= in->nmin) {
-    w->have = in->nmin + 1;            /* its order, and the rest's */
-    if (!arclen_integ_orders_of(in, w->k, w->have, w->c, w->half_width, w->n)) {
-      w->fast = 0;                     /* the stack from piece k on */
-      arclen_integ_prepare_bounds(in);
-      arclen_integ_push_from(in, w->k);
-    }
+  if (k >= w->have) {                  /* its order, and the rest's */
+    w->have = in->nmin + 1;
+    walk_orders(in, w, k, w->have);
   }
-  if (w->fast) {
-    if (w->k > in->nmin) return 0;
-    *r = arclen_rule_at_least(w->n[w->k]);
-    *a = arclen_first_from(in, w->k);
-    *b = arclen_first_to(in, w->k);
-    *last = w->k == in->nmin;
-    *len = arclen_apply_rule(&in->h, *r, w->c[w->k], w->half_width[w->k]);
-    in->evals += (*r)->n;
-    in->pieces++;
-    w->k++;
+  if (!w->n[k]) {                      /* the stack cuts and pops it */
+    arclen_integ_prepare_bounds(in);
+    arclen_integ_push_one(in, k);
+    if (!arclen_integ_next_piece(in, open_below, a, b, len, r)) return 0;
+    *last = in->top == 0 && k == in->nmin;
     return 1;
   }
-  if (!arclen_integ_next_piece(in, open_below, a, b, len, r)) return 0;
-  *last = in->top == 0;
+  *r = arclen_rule_at_least(w->n[k]);
+  *len = arclen_apply_rule(&in->h, *r, w->c[k], w->half_width[k]);
+  if (in->want_err)                    /* the bound at n is below it */
+    in->err += piece_target(in, w->half_width[k]);
+  in->evals += (*r)->n;
+  in->pieces++;
   return 1;
 }
 
