@@ -617,7 +617,7 @@ static double solve_goal(integrator *in, piece_search *p, double goal,
 ** the feet) by the order of its own Bernstein ellipse (window_order: a
 ** few square roots, where the branch-cut bound's order is a long chain of
 ** tables, logs and sums that a goal in the next piece waits for; it asks
-** a quarter more points, doc/benchmarks.md), up to WALK_ELLIPSE_MAX points;
+** about a third more points, doc/benchmarks.md), up to WALK_ELLIPSE_MAX points;
 ** else by the branch-cut bound's order straight from the branch points
 ** when no report is asked (their chains taken side by side, as the length
 ** takes them), else by the integrator's stack for that piece alone, whose
