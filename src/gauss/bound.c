@@ -202,21 +202,13 @@ static ALWAYS_INLINE double term_log2(const arclen_cut_curve *cc,
 }
 
 /* The ellipse's quantities for x = a - 1 (rounded down) from the table:
-** lines on x's cell (ellipse_table.h), no square root or division on the
-** way to the order.  0 when x lies outside the table, or is 0 or NaN (its
-** bits then give no cell). */
+** lines on x's cell (arclen_ellipse_cell_of), no square root or division
+** on the way to the order.  0 when x lies off the table. */
 static ALWAYS_INLINE int from_table(double am1, double sqrthh,
                                     arclen_cut_piece *pbound, int j) {
-  const arclen_ellipse_cell *e;
-  uint64_t u, k;
-  double x0, dx;
-  memcpy(&u, &am1, sizeof u);
-  k = (u >> ARCLEN_ELLIPSE_SHIFT) - ARCLEN_ELLIPSE_BASE;
-  if (k >= ARCLEN_ELLIPSE_CELLS) return 0;       /* also negative, 0, NaN */
-  e = &arclen_ellipse_cells[k];
-  u &= ~((1ULL << ARCLEN_ELLIPSE_SHIFT) - 1);    /* the cell's start */
-  memcpy(&x0, &u, sizeof x0);
-  dx = am1 - x0;                                 /* exact: Sterbenz */
+  double dx;
+  const arclen_ellipse_cell *e = arclen_ellipse_cell_of(am1, &dx);
+  if (!e) return 0;
   pbound->lam[j] = e->lam + dx * e->dlam;
   pbound->ilam[j] = e->ilam + dx * e->dilam;
   pbound->cc[j] = e->c2 + dx * e->dc2;
@@ -263,11 +255,8 @@ static ALWAYS_INLINE void pair_bound(const arclen_cut_curve *cc, int j,
                                      double c, double half_width, double inv,
                                      double sqrthh, arclen_cut_piece *pbound) {
   /* The Bernstein ellipse through the branch point z = u + iv (piece
-  ** units) has foci +-1, so its semi-major axis is a = (|z - 1| + |z + 1|)/2
-  ** (two square roots side by side).  Next to the interval a - 1 cancels:
-  ** it is rounded down by the sum's rounding (r1, r2 are each within 2
-  ** ulps), and all else is taken from it, from the table or the formulas,
-  ** each erring on the safe side. */
+  ** units): a - 1 from below (arclen_ellipse_am1), and all else taken from
+  ** it, from the table or the formulas, each erring on the safe side. */
   double dr = cc->re[j] - c, im = cc->im[j];
   if (fabs(dr) + im > FAR_PAIR * half_width) {
     /* Far from the piece (|z| >= 2^39; for a piece of subnormal width u
@@ -280,10 +269,7 @@ static ALWAYS_INLINE void pair_bound(const arclen_cut_curve *cc, int j,
     pbound->z[j] = sqrt((fabs(dr) + im + half_width) * (1 + 0x1p-50));
     pbound->ilam[j] = 1 / pbound->lam[j];
   } else {
-    double u = dr * inv, v = im * inv;
-    double r1 = sqrt((u - 1) * (u - 1) + v * v);
-    double r2 = sqrt((u + 1) * (u + 1) + v * v), s12 = r1 + r2;
-    double am1 = (s12 - 2) * 0.5 - s12 * 0x1p-50;
+    double s12, am1 = arclen_ellipse_am1(dr * inv, im * inv, &s12);
     if (!from_table(am1, sqrthh, pbound, j))
       from_formulas(am1, s12, half_width, pbound, j);
   }

@@ -8,6 +8,11 @@
 #ifndef ARCLEN_ELLIPSE_TABLE_H
 #define ARCLEN_ELLIPSE_TABLE_H
 
+#include <math.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <string.h>
+
 /* Cells: each octave of x in [2^EMIN, 2^EMAX) in four, found from the bits
 ** of x: cell (bits >> SHIFT) - BASE, starting at those bits with the rest
 ** cleared. */
@@ -26,6 +31,34 @@ typedef struct arclen_ellipse_cell {
 } arclen_ellipse_cell;
 
 extern const arclen_ellipse_cell arclen_ellipse_cells[ARCLEN_ELLIPSE_CELLS];
+
+/* x = a - 1 rounded down for the Bernstein ellipse through z = u + iv in
+** an interval's units (foci +-1: a = (|z - 1| + |z + 1|)/2, two square
+** roots side by side); next to the interval a - 1 cancels, so it is
+** lowered by the sum's rounding (each root within 2 ulps).  *s12 = 2 a,
+** from below too. */
+static inline double arclen_ellipse_am1(double u, double v, double *s12) {
+  double r1 = sqrt((u - 1) * (u - 1) + v * v);
+  double r2 = sqrt((u + 1) * (u + 1) + v * v);
+  *s12 = r1 + r2;
+  return (*s12 - 2) * 0.5 - *s12 * 0x1p-50;
+}
+
+/* The cell of x = a - 1 and *dx = x - the cell's start (exact: Sterbenz);
+** NULL where x lies off the table, or is 0, negative or NaN (its bits then
+** give no cell). */
+static inline const arclen_ellipse_cell *arclen_ellipse_cell_of(double am1,
+                                                                double *dx) {
+  uint64_t u, k;
+  double x0;
+  memcpy(&u, &am1, sizeof u);
+  k = (u >> ARCLEN_ELLIPSE_SHIFT) - ARCLEN_ELLIPSE_BASE;
+  if (k >= ARCLEN_ELLIPSE_CELLS) return NULL;
+  u &= ~((1ULL << ARCLEN_ELLIPSE_SHIFT) - 1);    /* the cell's start */
+  memcpy(&x0, &u, sizeof x0);
+  *dx = am1 - x0;
+  return &arclen_ellipse_cells[k];
+}
 
 /* Bounds of the n-point rule's error on T_2n, on T_2n+2, and on T_k for
 ** even k in [2n + 4, 3n] (it is 0 for odd k), for every stored rule with

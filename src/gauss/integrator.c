@@ -267,13 +267,6 @@ int arclen_integ_next_piece(integrator *in, double open_below, double *from,
   return 0;
 }
 
-/* The first pieces from i0 on, between the feet, in increasing t. */
-void arclen_integ_push_from(integrator *in, int i0) {
-  int i;
-  for (i = in->nmin; i >= i0; i--)     /* the stack pops the first first */
-    push(in, arclen_first_from(in, i), arclen_first_to(in, i), 0);
-}
-
 /* First piece i alone, for the stack to cut and pop before piece i + 1. */
 void arclen_integ_push_one(integrator *in, int i) {
   push(in, arclen_first_from(in, i), arclen_first_to(in, i), 0);

@@ -217,9 +217,6 @@ int arclen_integ_first_orders(const integrator *in, double *c, double *half_widt
 void arclen_integ_first_pieces(const integrator *in, double *c, double *half_width);
 int arclen_integ_orders_of(const integrator *in, int i0, int i1, const double *c,
                            const double *half_width, int *n);
-/* The first pieces from i0 on onto the stack; then next_piece pops them
-** in order. */
-void arclen_integ_push_from(integrator *in, int i0);
 /* First piece i alone onto the stack (the caller takes the next first
 ** piece once next_piece has popped its parts). */
 void arclen_integ_push_one(integrator *in, int i);

@@ -191,16 +191,12 @@ static int window_order(const integrator *in, double c, double h,
                         double target) {
   const arclen_branch *br = &in->br;
   const arclen_ellipse_cell *cell;
-  double inv = 1 / h, am1 = HUGE_VAL, s12 = 0, prod, x0, dx, x, nn, ah;
-  uint64_t u;
+  double inv = 1 / h, am1 = HUGE_VAL, s12 = 0, prod, dx, x, nn, ah;
   int k;
   for (k = 0; k < br->n; k += 2) {   /* the upper roots of the pairs */
     double dr = br->re[k] - c, im = br->im[k];
     if (im > 0) {
-      double zu = dr * inv, zv = im * inv;
-      double r1 = sqrt((zu - 1) * (zu - 1) + zv * zv);
-      double r2 = sqrt((zu + 1) * (zu + 1) + zv * zv);
-      double sk = r1 + r2, ak = (sk - 2) * 0.5 - sk * 0x1p-50;
+      double sk, ak = arclen_ellipse_am1(dr * inv, im * inv, &sk);
       if (ak < am1) {
         am1 = ak;
         s12 = sk;
@@ -209,13 +205,8 @@ static int window_order(const integrator *in, double c, double h,
       return 0;                        /* a kink inside: no bound sees it */
     }
   }
-  memcpy(&u, &am1, sizeof u);
-  u = (u >> ARCLEN_ELLIPSE_SHIFT) - ARCLEN_ELLIPSE_BASE;
-  if (!(am1 > 0) || u >= ARCLEN_ELLIPSE_CELLS) return 0;   /* also NaN */
-  cell = &arclen_ellipse_cells[u];
-  u = (u + ARCLEN_ELLIPSE_BASE) << ARCLEN_ELLIPSE_SHIFT;  /* the cell's start */
-  memcpy(&x0, &u, sizeof x0);
-  dx = am1 - x0;                       /* exact: Sterbenz */
+  cell = arclen_ellipse_cell_of(am1, &dx);   /* none: no upper root, or off */
+  if (!cell) return 0;
   ah = h * s12 * (0.5 + 0x1p-50);      /* h a, rounded up */
   prod = h * (64.0 / 15.0) * (s12 * (0.5 + 0x1p-50));
   for (k = 0; k < br->n; k += 2) prod *= fabs(br->re[k] - c) + br->im[k] + ah;
