@@ -569,13 +569,17 @@ local function walks(self)
   return self.method == "gauss" and self.n > 0
 end
 
+-- One distance s (in [0, L]) by the walk: segment k and time t, or with
+-- what "point" or "tangent" those at s (arclen._locate).
+local function walk_at(self, s, at_end, what)
+  return walk_locate(self.packed or self.segs, self.cum, s, self.tol, at_end, self.kindstr, what)
+end
+
 -- Segment k in 1..n and parameter t for distance s (already in [0, L]):
 -- the first segment whose end is beyond s (at_end: at or beyond s, so that
 -- a distance at a joint belongs to the segment that ends there).
 local function locate(self, s, at_end)
-  if walks(self) then     -- the walk's own search and time: no table made
-    return walk_locate(self.packed or self.segs, self.cum, s, self.tol, at_end, self.kindstr)
-  end
+  if walks(self) then return walk_at(self, s, at_end) end  -- no table made
   local n = self.n
   if is_metapost(self) then
     local T = assert(arclen.metapost.path_arctime(segs_of(self), s, self.cyclic))
@@ -762,10 +766,7 @@ function Path:point(s)
   check_number(s, 1, "point", "distance")
   local L = usable(self, "point")
   if self.n == 0 then return start_point(self) end
-  if walks(self) then            -- the segment, its time and point in C
-    return walk_locate(self.packed or self.segs, self.cum, (reduce(self, s, L)), self.tol,
-                       false, self.kindstr, "point")
-  end
+  if walks(self) then return walk_at(self, (reduce(self, s, L)), false, "point") end
   local k, t = locate(self, (reduce(self, s, L)))
   return seg_point(kind_of(self, k), segs_of(self)[k], t)
 end
@@ -777,10 +778,7 @@ function Path:tangent(s)
   check_number(s, 1, "tangent", "distance")
   local L = usable(self, "tangent")
   if self.n == 0 then return unpack_dim({0, 0, 0}, self.dim) end
-  if walks(self) then            -- the segment, its time and tangent in C
-    return walk_locate(self.packed or self.segs, self.cum, (reduce(self, s, L)), self.tol,
-                       false, self.kindstr, "tangent")
-  end
+  if walks(self) then return walk_at(self, (reduce(self, s, L)), false, "tangent") end
   local k, t = locate(self, (reduce(self, s, L)))
   return unpack_dim(direction(self, k, t), self.dim)
 end

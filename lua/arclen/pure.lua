@@ -846,6 +846,14 @@ local function segments_of(segs, kinds, arg, lazy)
   end
 end
 
+-- The times of the ascending distances xs, each inside (0, seglen), on a
+-- segment of the walk (seglen: its length as the path has it).
+local function segment_times(kind, c, dim, seglen, xs, tol, fname)
+  if kind ~= "cubic" then return seg_times(kind, c, dim, seglen, xs, tol) end
+  if dim == 3 then argerror(1, fname, "a 3D cubic " .. NEEDS_C) end
+  return times_of(c, xs, tol)
+end
+
 -- The walk: for the ascending distances ds (in [0, cum[n]]; or {n =, div
 -- =}: the n distances cum[n] i / div, resample's) on the path of segments
 -- with cumulative lengths cum[0..n], call emit(q, k, t, c, kind, d, s) with
@@ -901,15 +909,7 @@ local function walk(segs, cum, ds, tol, at_end, emit, kinds, kinds_arg)
         inner[#inner + 1] = x
       end
     end
-    local ts = {}
-    if #inner > 0 then
-      if kind == "cubic" then
-        if dim == 3 then argerror(1, "_walk", "a 3D cubic " .. NEEDS_C) end
-        ts = times_of(c, inner, tol)
-      else
-        ts = seg_times(kind, c, dim, seglen, inner, tol)
-      end
-    end
+    local ts = #inner > 0 and segment_times(kind, c, dim, seglen, inner, tol, "_walk") or {}
     for q = i, j do
       local x, t = s[q - i + 1], nil
       if x <= 0 then t = 0 elseif x >= seglen then t = 1 else t = ts[q - first + 1] end
@@ -958,12 +958,7 @@ function M._locate(segs, cum, s, tol, at_end, kinds, what)
   local x, seglen, t = s - shift, cum_at(lo) - shift, nil
   if x <= 0 then t = 0
   elseif x >= seglen then t = 1
-  elseif kind == "cubic" then
-    if dim == 3 then argerror(1, fname, "a 3D cubic " .. NEEDS_C) end
-    t = times_of(c, {x}, tol)[1]
-  else
-    t = seg_times(kind, c, dim, seglen, {x}, tol)[1]
-  end
+  else t = segment_times(kind, c, dim, seglen, {x}, tol, fname)[1] end
   if what == "point" then return unpack(seg_point(kind, c, dim, t)) end
   if what == "tangent" then return unpack(seg_tangent(kind, c, dim, t)) end
   return lo, t

@@ -298,11 +298,20 @@ static int at_end(double total, double from[3], double *t) {
   return ARCLEN_OK;
 }
 
-/* The total measured (where the caller has none) and the scaled T and tol
-** from it; 0 where it overflows. */
+/* A lazy search's end: the total measured (where the caller has none) and
+** the scaled T and tol from it.  1 where the search goes on; else 0 with
+** *rc: the length overflows, or s is at or past it (t = 1, at_end). */
 static int settle(const arclen_quad_form *F, double *total, double rtol,
-                  double *T, double *tol) {
-  if (!know_total(F, total)) return 0;
+                  double s, double *T, double *tol, double from[3],
+                  double *t, int *rc) {
+  if (!know_total(F, total)) {
+    *rc = ARCLEN_EOVERFLOW;
+    return 0;
+  }
+  if (!(s < *total)) {
+    *rc = at_end(*total, from, t);
+    return 0;
+  }
   *T = times_pow2(*total, -F->scale, F->down);
   *tol = times_pow2(rtol * *total, -F->scale, F->down);
   return 1;
@@ -320,7 +329,7 @@ static int answer(const arclen_quad_form *F, double t, double s, double bnd,
 
 int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
                      double rtol, double from[3], double *t, long *evals) {
-  int e2 = -F->scale, i, lazy, ok;
+  int e2 = -F->scale, i, lazy, ok, rc;
   double down = F->down, up = F->up;
   double g, T = NAN, tol = 0, lo, hi = 1, x, f, err, S, e = 0, bnd, len, r;
   double best, bestf, bestlen, besterr;
@@ -371,8 +380,7 @@ int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
   }
   if (!(x > lo && x < hi) && lazy) {          /* the fallbacks need T */
     lazy = 0;
-    if (!settle(F, total, rtol, &T, &tol)) return ARCLEN_EOVERFLOW;
-    if (!(s < *total)) return at_end(*total, from, t);
+    if (!settle(F, total, rtol, s, &T, &tol, from, t, &rc)) return rc;
   }
   if (!(x > lo && x < hi)) x = lo + (hi - lo) * (g - bestlen) / (T - bestlen);
   if (!(x > lo && x < hi)) x = lo + (hi - lo) / 2;
@@ -388,8 +396,7 @@ int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
         tol = rtol * below;
       } else {                     /* s may be L or past it: the clamp */
         lazy = 0;
-        if (!settle(F, total, rtol, &T, &tol)) return ARCLEN_EOVERFLOW;
-        if (!(s < *total)) return at_end(*total, from, t);
+        if (!settle(F, total, rtol, s, &T, &tol, from, t, &rc)) return rc;
       }
     }
     /* a measured length within tol answers (the closed form is the
@@ -403,8 +410,7 @@ int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
          && x + e > lo && x + e < hi;
     if (!ok && lazy) {       /* too strict a tol, perhaps: L's own, again */
       lazy = 0;
-      if (!settle(F, total, rtol, &T, &tol)) return ARCLEN_EOVERFLOW;
-      if (!(s < *total)) return at_end(*total, from, t);
+      if (!settle(F, total, rtol, s, &T, &tol, from, t, &rc)) return rc;
       ok = S > 0 && step_from(F, x, f, err, S, tol, &e, &bnd)
            && x + e > lo && x + e < hi;
     }
