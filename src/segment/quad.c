@@ -219,7 +219,7 @@ static ONE_BODY void setup_form(const double *p, int dim,
 
 void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f) {
   setup_form(p, dim, f);
-  f->S0 = f->Sc = -1;
+  f->S0 = f->Cs = -1;
   f->up = f->down = 1;
   if (!f->zero && f->scale > -1000 && f->scale < 1000) {
     f->up = pow2(f->scale);

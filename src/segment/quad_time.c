@@ -98,7 +98,8 @@ static double short_bound(const arclen_quad_form *F, double x, double f,
 ** sigma'''' = 6k^2 (5u^2 - B S^2)/S^7, at most 24 k^2 B/|v|^5 in size
 ** (u^2 <= B S^2), and |v| >= m on the step.  The roundings, against the
 ** exact parabola of the scaled legs a and c (bounds in units of U, to
-** first order, then times 3/2 where dS <= S/16):
+** first order, then times 3/2 where dS <= S/16; |c| is taken as Cs,
+** above it):
 **   S: speed_vector's components within 3 (|a_i| + |c_i|) of theirs (1 -
 **      x itself rounded), the norm 2 of itself: dS = 6 (|a| + |c|) + 3 S
 **      (near a cusp S is far below |a|: the error is not relative);
@@ -123,7 +124,7 @@ static int step_from(const arclen_quad_form *F, double x, double f,
   tail = -b2 * d * d;
   *e = d + tail;
   ae = fabs(*e);
-  dS = U * (6 * (F->S0 + F->Sc) + 3 * S);
+  dS = U * (6 * (F->S0 + F->Cs) + 3 * S);
   if (F->q * ae <= 0x1p-16 * S && dS <= S / 16) {
     *bound = short_bound(F, x, f, err, S, inv, s1 / 2 * *e * *e, sig * tail,
                          ae, dS);
@@ -147,7 +148,7 @@ static int step_from(const arclen_quad_form *F, double x, double f,
   *bound = fabs(t1 + t2 + t3 + t4) + err;
   if (!(*bound <= tol)) return 0;
   du = U * (4 * (F->S0 * F->q + 2 * x * F->B) + fabs(u));
-  dk = 6 * U * F->S0 * F->Sc;
+  dk = 6 * U * F->S0 * F->Cs;
   dk2 = (2 * k + dk) * dk;                    /* |k^2 - k_true^2| */
   rS = dS * inv;
   m = S - dS - F->q * (1 + 8 * U) * ae;  /* |v| on [x, x + e], from below */
@@ -187,7 +188,9 @@ void arclen_quad_time_setup(const double *p, int dim, arclen_quad_form *F) {
   arclen_quad_setup(p, dim, F);
   if (F->zero) return;
   F->S0 = sqrt(F->m0);
-  F->Sc = arclen_quad_form_speed(F, 1);          /* v(1) = c exactly */
+  /* |c| from above, for the roundings' bounds and the lazy search's test:
+  ** a square root fewer on the call (|c| itself only in length_below) */
+  F->Cs = fabs(F->c[0]) + fabs(F->c[1]) + (dim == 3 ? fabs(F->c[2]) : 0);
 }
 
 /* x = m 2^e with m in [1, 2), for a normal x > 0, from the bits. */
@@ -275,18 +278,18 @@ static int know_total(const arclen_quad_form *F, double *total) {
 
 /* A lower bound of the scaled length from the measured point x: s(x) = len
 ** (within 16 U) plus 2 (1 - x) min |v| over [x, 1], where |v| grows past
-** the vertex (u = v.b >= 0: S = |v(x)|), falls up to it (u(1) <= 0: Sc)
-** or is least there.  The least |v| of all is k/|b|, from below (k - dk)/q
-** as in step_from; S and Sc are taken less 32 U (S0 + Sc), which covers
-** their roundings (step_from's dS) and, where u's sign is in doubt (|u| <=
-** du), |v(x)| - k/|b| <= du/q <= 13 U (S0 + Sc).  All less 2^-30 of
-** itself, which covers len's rounding. */
+** the vertex (u = v.b >= 0: S = |v(x)|), falls up to it (u(1) <= 0: |c|
+** = |v(1)|) or is least there.  The least |v| of all is k/|b|, from below
+** (k - dk)/q as in step_from; S and |c| are taken less 32 U (S0 + Cs),
+** which covers their roundings (step_from's dS) and, where u's sign is in
+** doubt (|u| <= du), |v(x)| - k/|b| <= du/q <= 13 U (S0 + Cs).  All less
+** 2^-30 of itself, which covers len's rounding. */
 static double length_below(const arclen_quad_form *F, double x, double len,
                            double S) {
-  double m, slack = 32 * U * (F->S0 + F->Sc);
+  double m, slack = 32 * U * (F->S0 + F->Cs);
   if (F->u0 + x * F->B >= 0) m = S - slack;
-  else if (F->u0 + F->B <= 0) m = F->Sc - slack;
-  else m = (F->k - 6 * U * F->S0 * F->Sc) / F->q * (1 - 4 * U);
+  else if (F->u0 + F->B <= 0) m = arclen_quad_form_speed(F, 1) - slack;
+  else m = (F->k - 6 * U * F->S0 * F->Cs) / F->q * (1 - 4 * U);
   return (len + 2 * (1 - x) * (m > 0 ? m : 0)) * (1 - 0x1p-30);
 }
 
@@ -341,13 +344,14 @@ int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
   /* the scaled form's units: exact (powers of two; a goal that becomes
   ** subnormal loses digits below 2^-1074 of a length near 1) */
   g = times_pow2(s, e2, down);
-  /* A first search (from 0) for an s in (0, S0 + Sc), the control
-  ** polygon's length (>= L), needs no total: tol comes from a lower bound
-  ** of L after its first length (length_below), so the total's closed form
-  ** is off the search's chain; it is measured only where that bound is
-  ** too strict or s may reach L (the clamp below, t = 1 at L). */
+  /* A first search (from 0) for an s in (0, S0 + Cs), at least the
+  ** control polygon's length (>= L), needs no total: tol comes from a
+  ** lower bound of L after its first length (length_below), so the
+  ** total's closed form is off the search's chain; it is measured only
+  ** where that bound is too strict or s may reach L (the clamp below, t =
+  ** 1 at L). */
   lazy = !(*total > 0 && isfinite(*total)) && from[0] == 0 && from[1] == 0
-         && from[2] == 0 && s > 0 && g < F->S0 + F->Sc && e2 > -1000
+         && from[2] == 0 && s > 0 && g < F->S0 + F->Cs && e2 > -1000
          && e2 < 1000;
   if (!lazy) {
     if (!know_total(F, total)) return ARCLEN_EOVERFLOW;

@@ -26,12 +26,12 @@ int arclen_quad_length(const double *p, int dim, double t0, double t1,
 ** power of two into [1/2, 1) (halved first where a difference overflows),
 ** b = c - a, B = |b|^2, q = |b|, k = |a x c|, and v(0) = a's u0 = a.b, m0 =
 ** |a|^2; for the time (arclen_quad_setup; -1 until quad_time.c's set-up
-** takes them) S0 = |a|, Sc = |c| = |v(1)|, and up =
-** 2^scale, down = 2^-scale where both are doubles (|scale| < 1000).
+** takes them) S0 = |a| and Cs = |c_1| + |c_2| (+ |c_3|) >= |c| = |v(1)|;
+** up = 2^scale, down = 2^-scale where both are doubles (|scale| < 1000).
 ** Lengths of the scaled form times 2^scale are the segment's.  zero: all
 ** three points equal. */
 typedef struct arclen_quad_form {
-  double a[3], c[3], b[3], B, q, k, u0, m0, S0, Sc, up, down;
+  double a[3], c[3], b[3], B, q, k, u0, m0, S0, Cs, up, down;
   int dim, scale, zero;
 } arclen_quad_form;
 void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f);
