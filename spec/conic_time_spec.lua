@@ -1,0 +1,149 @@
+-- conic_time_spec.lua -- a conic's time at a length below the cover's
+-- tolerance (1e-13, src/segment/segment.h): at tol 1e-15 and 1e-14 the
+-- search takes tol from certified lower bounds of L and measures the total
+-- only where s may reach it (src/segment/invert.c), so every answer must
+-- still be within tol L, and t = 1 at and past L.
+-- References: spec/data/conic_times.tsv from tools/ref_conic_times.py
+-- (mpmath: L at 60 and 70 digits agreeing to 1e-40, T where the length
+-- from 0 is s and the speed V there, 25 digits): circular arcs, ellipses
+-- down to w = 1e-9, the parabola, hyperbolas up to w = 1e6, thin and
+-- near-degenerate triangles, 2D and 3D; s from 1e-12 L to (1 - 1e-12) L.
+local arclen = require "arclen"
+local H = require "helpers"
+
+local abs, max = math.abs, math.max
+local rows = H.tsv("conic_times.tsv")
+
+-- The exact length's own error besides tol (spec/segment_spec.lua's conic
+-- bound); the Lua engine promises 1e-12, its floor.
+local BOUND = H.engine == "c" and 4e-15 or 1e-12
+local TOLS = H.engine == "c" and {1e-15, 1e-14} or {1e-12}
+
+local function cells(row)
+  local out = {}
+  for s, T, V in row.times:gmatch("(%S+):(%S+):(%S+)") do
+    out[#out + 1] = {tonumber(s), tonumber(T), tonumber(V)}
+  end
+  return out
+end
+
+-- |t - T| V (the length between t and the reference T, the speed smooth
+-- on that scale) against tol L + the bound's L + two ulps of t at the
+-- speed (t is a double: where w = 1e6 turns its corner within 1e-6 of an
+-- end, an ulp of t is a length)
+local function room(tol, L, t, V)
+  local ulp = 2 ^ (math.floor(math.log(max(t, 1e-300), 2)) - 52)
+  return (tol + BOUND) * L + 2 * V * ulp
+end
+
+describe("a conic's time at tol 1e-15 and 1e-14 (spec/data/conic_times.tsv)", function()
+  it("has the family: circles, w from 1e-9 to 1e6, thin, 3D, s near 0 and L", function()
+    local wmin, wmax, circles, three, thin = 1, 1, 0, 0, 0
+    for _, row in ipairs(rows) do
+      local seg = H.numbers(row.seg)
+      wmin = math.min(wmin, seg[#seg])
+      wmax = max(wmax, seg[#seg])
+      if row.name:find("circle") then circles = circles + 1 end
+      if row.dim == "3" then three = three + 1 end
+      if row.name:find("thin") then thin = thin + 1 end
+      assert(#cells(row) == 9, row.name)
+    end
+    assert(#rows >= 30 and wmin <= 1e-9 and wmax >= 1e6 and circles >= 5 and three >= 5 and thin >= 2,
+           ("%d rows, w %g .. %g, %d circles, %d 3D"):format(#rows, wmin, wmax, circles, three))
+  end)
+
+  it("segment_time: |t - T| V <= tol L + the bound + the step of t, at every s", function()
+    local worst, n = H.worst(), 0
+    for _, row in ipairs(rows) do
+      local seg, L = H.numbers(row.seg), tonumber(row.L)
+      for _, tol in ipairs(TOLS) do
+        for _, c in ipairs(cells(row)) do
+          local s, T, V = c[1], c[2], c[3]
+          local t = arclen.segment_time("conic", seg, s, {tol = tol})
+          worst:add(abs(t - T) * V / room(tol, L, t, V),
+                    ("%s (%sD) at s %.17g, tol %g: t %.17g, T %.17g"):format(row.name, row.dim, s, tol, t, T))
+          n = n + 1
+        end
+      end
+    end
+    print(("\n  conic times: %d, worst miss / room %.2f (%s)"):format(n, worst.err, worst.id))
+    assert(worst.err <= 1, ("%s: %.3g of the room"):format(worst.id, worst.err))
+  end)
+
+  it("t = 1 at and past L; t = 0 at and before 0", function()
+    for _, row in ipairs(rows) do
+      local seg, L = H.numbers(row.seg), tonumber(row.L)
+      for _, tol in ipairs(TOLS) do
+        -- past L by more than tol: t = 1 is the only answer
+        for _, s in ipairs({L * (1 + 1e-13), 2 * L, 1e300}) do
+          assert.are.equal(1, arclen.segment_time("conic", seg, s, {tol = tol}), row.name .. " " .. s)
+        end
+        for _, s in ipairs({0, -1}) do
+          assert.are.equal(0, arclen.segment_time("conic", seg, s, {tol = tol}), row.name .. " " .. s)
+        end
+        -- L itself (the reference rounded): 1, or a t within tol of it
+        local t = arclen.segment_time("conic", seg, L, {tol = tol})
+        if t ~= 1 then
+          local got = arclen.segment_length("conic", seg, {t1 = t})
+          assert(abs(got - L) <= (tol + BOUND) * L, ("%s: t %.17g at L"):format(row.name, t))
+        end
+      end
+    end
+  end)
+
+  it("a sweep (the path's walk) of the same distances, with the length and 1e-9 off", function()
+    -- arclen_segment_times_of: the first search from 0, each next from the
+    -- last answer; the path's length of the segment is the caller's
+    local worst = H.worst()
+    for _, row in ipairs(rows) do
+      local seg, L = H.numbers(row.seg), tonumber(row.L)
+      local letter = "R"
+      local cs = cells(row)
+      local ds = {}
+      for q, c in ipairs(cs) do ds[q] = c[1] end
+      for _, tol in ipairs(TOLS) do
+        for _, off in ipairs({1, 1 + 1e-9, 1 - 1e-9}) do
+          local ks, ts = {}, {}
+          arclen._walk_times({seg}, {[0] = 0, L * off}, ds, tol, false, ks, ts, letter)
+          for q, c in ipairs(cs) do
+            local t, T, V = ts[q], c[2], c[3]
+            -- a length 1e-9 short clamps the last distances to t = 1
+            if not (off < 1 and c[1] >= L * off) then
+              worst:add(abs(t - T) * V / room(tol, L, t, V),
+                        ("%s (%sD) off %.9g at s %.17g, tol %g"):format(row.name, row.dim, off, c[1], tol))
+            end
+          end
+        end
+      end
+    end
+    print(("\n  conic sweeps: worst miss / room %.2f (%s)"):format(worst.err, worst.id))
+    assert(worst.err <= 1, ("%s: %.3g of the room"):format(worst.id, worst.err))
+  end)
+
+  H.c_only(it, "the exact lengths' count (info.pieces)")(
+    "at tol 1e-15 a time at L/2 takes one exact length, not the total's besides", function()
+      -- bench_segment's conics (w = 0.7, points in [0, 10]^2): tol from
+      -- the lower bound of L at the search's own length, the total off the
+      -- chain (invert.c); info.pieces counts every exact length, the
+      -- total's too where it is measured
+      local seed = 20261204
+      local function uniform()
+        seed = (seed * 48271) % 2147483647
+        return seed / 2147483647
+      end
+      local one, n = 0, 0
+      for _ = 1, 200 do
+        local seg = {}
+        for q = 1, 6 do seg[q] = 10 * uniform() end
+        seg[7] = 0.7
+        local L = arclen.segment_length("conic", seg)
+        local t, info = arclen.segment_time("conic", seg, L / 2, {tol = 1e-15, info = true})
+        local got = arclen.segment_length("conic", seg, {t1 = t})
+        assert(abs(got - L / 2) <= (1e-15 + BOUND) * L)
+        n = n + 1
+        if info.pieces <= 1 then one = one + 1 end
+      end
+      -- measured 2026-12-04: 200 of 200 (0 before: the total and one more)
+      assert(one >= 0.95 * n, ("%d of %d"):format(one, n))
+    end)
+end)
