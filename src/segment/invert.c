@@ -63,15 +63,20 @@ typedef struct model_piece { double a, b, v; int n; } model_piece;
 ** leave |q| <= tol: each piece's rule bound plus the rounding of its sum
 ** (n positive terms and the speed's few roundings each: 32 eps of it),
 ** taken in turn and stopped as soon as they exceed the room (the first
-** piece, the long one, is where a model usually fails).  *err: the total
-** when it does. */
+** piece, the long one, is where a model usually fails; below 1e-14 its
+** rounding alone often leaves no room, and the bound is not taken: a sum
+** of rounded nonnegative terms only grows).  *err: the total when it
+** does. */
 static int model_certifies(arclen_seg_boundfn bound, const void *ctx,
                            const model_piece *pc, int np, double e0,
                            double q, double s, double tol, double *err) {
-  double e = e0 + 2 * DBL_EPSILON * (fabs(s) + fabs(q));
+  double e = e0 + 2 * DBL_EPSILON * (fabs(s) + fabs(q)), r;
   int i;
-  for (i = 0; i < np && fabs(q) + e <= tol; i++)
-    e += bound(ctx, pc[i].a, pc[i].b, pc[i].n) + 32 * DBL_EPSILON * fabs(pc[i].v);
+  for (i = 0; i < np && fabs(q) + e <= tol; i++) {
+    r = 32 * DBL_EPSILON * fabs(pc[i].v);
+    if (!(fabs(q) + (e + r) <= tol)) { e += r; break; }
+    e += bound(ctx, pc[i].a, pc[i].b, pc[i].n) + r;
+  }
   *err = e;
   return fabs(q) + e <= tol;
 }
