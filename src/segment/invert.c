@@ -17,9 +17,15 @@
 ** the sums leave |f| <= tol: the short steps of a sweep over sorted
 ** distances then need no exact length at all, and pass their bound on.
 ** The answer's guarantee is always a certified |f| <= tol, never the
-** model's guess.  Certified values keep a bracket [lo, hi] (f(lo) < 0 < f(hi))
-** that every step stays inside, with bisection where Newton would leave it
-** or the speed is 0 (a cusp); a cap ends it besides.
+** model's guess.  A first search without the total (a single time below
+** the cover's tolerance, where the total's exact length would cost as
+** much as the search's own) takes tol as rtol times a certified lower
+** bound of L, the chord at first and then each certified length at x plus
+** the rest's chord (the kind's below), and measures the total only where
+** s is not below that bound (s may reach L: t = 1 there).  Certified
+** values keep a bracket [lo, hi] (f(lo) < 0 < f(hi)) that every step stays
+** inside, with bisection where Newton would leave it or the speed is 0 (a
+** cusp); a cap ends it besides.
 */
 #include <float.h>
 #include <math.h>
@@ -41,9 +47,8 @@
 ** range the model started with: 5 nodes integrate degree 9 */
 #define STEP_NODES 5
 
-/* int_a^b speed by the n-point Gauss-Legendre rule (signed). */
-static double model(arclen_seg_speedfn speed, const void *ctx, int n,
-                    double a, double b) {
+double arclen_seg_rule(arclen_seg_speedfn speed, const void *ctx, int n,
+                       double a, double b) {
   const arclen_gauss_rule *r = &arclen_gauss_rules[n - 1];
   double m = (a + b) / 2, h = (b - a) / 2, sum = 0;
   int i;
@@ -89,7 +94,7 @@ int arclen_seg_cover(arclen_seg_speedfn speed, arclen_seg_orderfn order,
   if (n > 0) {
     pc[*np].a = a;
     pc[*np].b = b;
-    pc[*np].v = model(speed, ctx, n, a, b);
+    pc[*np].v = arclen_seg_rule(speed, ctx, n, a, b);
     /* the bound, and the rule's sum's rounding as model_certifies takes it */
     pc[*np].e = e + 32 * DBL_EPSILON * fabs(pc[*np].v);
     (*np)++;
@@ -122,39 +127,113 @@ static int certified_integral(arclen_seg_speedfn speed,
   return 1;
 }
 
+/* What a search knows of the length's scale: the total (NAN until
+** measured, where the caller had none), tol and the length ref it is
+** rtol times (the total, or while lazy a certified lower bound of it),
+** and the exact lengths counted. */
+typedef struct search_scale {
+  arclen_seg_lenfn len;
+  arclen_seg_belowfn below;
+  const void *ctx;
+  double *total, rtol, tol, ref;
+  long *evals;
+  int lazy;
+} search_scale;
+
+/* The total's exact length where the search needs it (NAN: the caller
+** had none), counted, and tol = rtol times it where the caller left tol
+** to rtol (NAN) or the search was lazy; the search is lazy no more.
+** Returns the length function's code. */
+static int settle(search_scale *sc) {
+  if (isnan(*sc->total)) {
+    int rc = sc->len(sc->ctx, 1, sc->total);
+    if (sc->evals) (*sc->evals)++;
+    if (rc != ARCLEN_OK) return rc;
+  }
+  if (sc->lazy || isnan(sc->tol)) sc->tol = sc->rtol * *sc->total;
+  sc->ref = *sc->total;
+  sc->lazy = 0;
+  return ARCLEN_OK;
+}
+
+/* A lazy search's certified length at x, at least lenx (exact, or a
+** model's value less its bound): the lower bound of L it gives (the
+** kind's below) raises tol to rtol times it (rtol times any lower bound
+** of L is within rtol L); where s is not below it, s may reach L and the
+** total is measured (settle), *end set where s is at or past it (t = 1
+** is the answer).  Returns the length function's code. */
+static int still_below(search_scale *sc, double x, double lenx, double s,
+                       int *end) {
+  double lb;
+  int rc;
+  *end = 0;
+  if (!sc->lazy) return ARCLEN_OK;
+  lb = sc->below(sc->ctx, x, lenx);
+  if (lb > sc->ref) { sc->ref = lb; sc->tol = sc->rtol * lb; }
+  if (s < lb) return ARCLEN_OK;
+  rc = settle(sc);
+  *end = rc == ARCLEN_OK && !(s < *sc->total);
+  return rc;
+}
+
+/* s at or past the total: t = 1 and the total's length, whose bound is
+** none where it is the caller's. */
+static int at_end(const search_scale *sc, int measured, double from[3],
+                  double *t) {
+  *t = from[0] = 1;
+  from[1] = *sc->total;
+  from[2] = measured ? 0 : HUGE_VAL;
+  return ARCLEN_OK;
+}
+
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
-                      arclen_seg_boundfn bound,
-                      arclen_seg_orderfn order, const void *ctx,
-                      double total, double s, double tol, double guess,
-                      double from[3], double *t, long *evals) {
+                      arclen_seg_boundfn bound, arclen_seg_orderfn order,
+                      arclen_seg_belowfn below, const void *ctx,
+                      double *total, double s, double rtol, double tol,
+                      double guess, double from[3], double *t, long *evals) {
   double lo = from[0], hi = 1, x0, f0, e0, x, f, d, nx, q, qerr, c0, cf, ce;
   double best = from[0], bestf = fabs(from[1] - s), bestlen = from[1];
   double besterr = from[2];
-  int i, j, rc;
+  search_scale sc;
+  int i, j, rc, end, measured = 0;
   if (evals) *evals = 0;
+  sc.len = len; sc.below = below; sc.ctx = ctx; sc.total = total;
+  sc.rtol = rtol; sc.tol = tol; sc.evals = evals;
+  /* a first search (from 0) for s > 0 with its first guess inside needs
+  ** no total: tol is rtol times a certified lower bound of L (below's,
+  ** from the chord, then from each certified length), the total measured
+  ** only where s may reach L (the clamp, t = 1 at L) */
+  sc.lazy = isnan(*total) && from[0] == 0 && from[1] == 0 && from[2] == 0 &&
+            s > 0 && guess > 0 && guess < 1;
+  if (sc.lazy) {
+    sc.ref = below(ctx, 0, 0);
+    sc.tol = rtol * sc.ref;
+  } else {
+    measured = isnan(*total);
+    rc = settle(&sc);
+    if (rc != ARCLEN_OK) return rc;
+  }
   /* the certified start already answers (a distance within tol of the
   ** last one), or lies beyond s (unsorted input): start from 0 */
-  if (bestf + besterr <= tol) { *t = from[0]; return ARCLEN_OK; }
+  if (bestf + besterr <= sc.tol) { *t = from[0]; return ARCLEN_OK; }
   if (from[1] > s) { lo = 0; best = 0; bestf = s; bestlen = 0; besterr = 0; }
   if (!(s > 0)) { *t = from[0] = from[1] = from[2] = 0; return ARCLEN_OK; }
-  if (!(s < total)) {
-    *t = from[0] = 1; from[1] = total; from[2] = HUGE_VAL;   /* total: the caller's */
-    return ARCLEN_OK;
-  }
-  x = guess > lo && guess < 1 ? guess : lo + (1 - lo) * (s - bestlen) / (total - bestlen);
+  if (!sc.lazy && !(s < *total)) return at_end(&sc, measured, from, t);
+  x = guess > lo && guess < 1 ? guess : lo + (1 - lo) * (s - bestlen) / (*total - bestlen);
   if (!(x > lo && x < 1)) x = lo + (1 - lo) / 2;
   /* the first model from the nearer known point: the start, or the end
-  ** (f(1) = total - s, the caller's total: a model only, no certificate) */
-  if (x - lo <= 1 - x) { x0 = lo; f0 = bestlen - s; e0 = besterr; }
-  else { x0 = 1; f0 = total - s; e0 = HUGE_VAL; }
+  ** (f(1) = total - s, the caller's total: a model only, no certificate;
+  ** a lazy search has none) */
+  if (sc.lazy || x - lo <= 1 - x) { x0 = lo; f0 = bestlen - s; e0 = besterr; }
+  else { x0 = 1; f0 = *total - s; e0 = HUGE_VAL; }
   for (i = 0; i < MAX_STEPS; i++) {
     /* Newton on the model f0 + int_x0^x speed, inside the bracket */
     model_piece pc[MODEL_STEPS + 1];
     int np = 1;
     pc[0].a = x0; pc[0].b = x; pc[0].n = MODEL_NODES;
-    pc[0].v = model(speed, ctx, MODEL_NODES, x0, x);
+    pc[0].v = arclen_seg_rule(speed, ctx, MODEL_NODES, x0, x);
     q = f0 + pc[0].v;
-    for (j = 0; j < MODEL_STEPS && fabs(q) > tol / 4; j++) {
+    for (j = 0; j < MODEL_STEPS && fabs(q) > sc.tol / 4; j++) {
       d = speed(ctx, x);
       if (!(d > 0)) break;
       nx = x - q / d;
@@ -162,15 +241,20 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
       /* a long step (a poor guess) gets the first rule's order */
       pc[np].a = x; pc[np].b = nx;
       pc[np].n = fabs(nx - x) * 8 < fabs(x - x0) ? STEP_NODES : MODEL_NODES;
-      pc[np].v = model(speed, ctx, pc[np].n, x, nx);
+      pc[np].v = arclen_seg_rule(speed, ctx, pc[np].n, x, nx);
       q += pc[np++].v;
       x = nx;
     }
     /* the model certifies itself where its error bound (the rules',
     ** the start's, the sums' roundings) leaves |f| <= tol; the length
-    ** at x is then s + q within qerr, and the next search starts there */
-    if (e0 < tol &&
-        model_certifies(bound, ctx, pc, np, e0, q, s, tol, &qerr)) {
+    ** at x is then s + q within qerr, and the next search starts there
+    ** (a lazy search's where s is below L; a larger tol from the total
+    ** only widens the certificate) */
+    if (e0 < sc.tol &&
+        model_certifies(bound, ctx, pc, np, e0, q, s, sc.tol, &qerr)) {
+      rc = still_below(&sc, x, s + q - qerr, s, &end);
+      if (rc != ARCLEN_OK) return rc;
+      if (end) return at_end(&sc, 1, from, t);
       *t = from[0] = x;
       from[1] = s + q;
       from[2] = qerr;
@@ -183,15 +267,18 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
     ** where the model ran from the end, whose length is the caller's total
     ** (no certificate); when not within tol, the value starts the next
     ** model as an exact one would */
-    if (i == 0 && !(e0 < tol / 4)) { c0 = lo; cf = bestlen - s; ce = besterr; }
+    if (i == 0 && !(e0 < sc.tol / 4)) { c0 = lo; cf = bestlen - s; ce = besterr; }
     else { c0 = x0; cf = f0; ce = e0; }
-    if (ce < tol / 4 && x != c0 &&
-        tol >= ARCLEN_SEG_COVER_RTOL * total &&
+    if (ce < sc.tol / 4 && x != c0 &&
+        sc.tol >= ARCLEN_SEG_COVER_RTOL * sc.ref &&
         certified_integral(speed, order, ctx, fmin(c0, x), fmax(c0, x),
-                           tol / 4, &q, &qerr)) {
+                           sc.tol / 4, &q, &qerr)) {
       f = cf + (x > c0 ? q : -q);
       qerr += ce + 2 * DBL_EPSILON * (fabs(s) + fabs(f));
-      if (fabs(f) + qerr <= tol) {
+      rc = still_below(&sc, x, s + f - qerr, s, &end);
+      if (rc != ARCLEN_OK) return rc;
+      if (end) return at_end(&sc, 1, from, t);
+      if (fabs(f) + qerr <= sc.tol) {
         *t = from[0] = x;
         from[1] = s + f;
         from[2] = qerr;
@@ -214,9 +301,12 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
     rc = len(ctx, x, &f);
     if (evals) (*evals)++;
     if (rc != ARCLEN_OK) return rc;
+    rc = still_below(&sc, x, f, s, &end);
+    if (rc != ARCLEN_OK) return rc;
+    if (end) return at_end(&sc, 1, from, t);
     if (fabs(f - s) < bestf) { bestf = fabs(f - s); best = x; bestlen = f; besterr = 0; }
     f -= s;
-    if (fabs(f) <= tol) break;
+    if (fabs(f) <= sc.tol) break;
     if (f < 0) lo = x; else hi = x;
     x0 = x; f0 = f; e0 = 0;
     /* the next model's start: Newton's step on the exact value */

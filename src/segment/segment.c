@@ -319,6 +319,32 @@ static int near_circle(const seg_ctx *c) {
          fabs(2 * c->w * la - lk) <= 0x1p-20 * lk;
 }
 
+/* A lower bound of the conic's length from lenx <= len(0, x): lenx plus
+** the chord from C(x) to P2, which the arc over [x, 1] is at least (the
+** inscribed polygon's bound, as quad_time.c's length_below for a
+** quadratic).  The chord is P2 - C(x) = ((1-x)^2 k + 2 w x (1-x) c) / D
+** from the legs (no points subtracted; over w when w > 1, as speed_at):
+** positive coefficients, each component within 7 eps of its terms' sizes
+** with the legs' own roundings, so less 16 eps of their sum (mag), and
+** its norm and quotient within a few eps more; 0 where the squares leave
+** the normal range.  All less 2^-30 of itself, which covers lenx's own
+** rounding where it is an exact length (Carlson's, within a few ulps). */
+static double conic_below(const void *ctx, double x, double lenx) {
+  const seg_ctx *c = (const seg_ctx *)ctx;
+  double s = 1 - x, p, q, D, n2 = 0, mag = 0, chord = 0;
+  int i;
+  if (c->w <= 1) { p = s * s; q = 2 * c->w * x * s; D = s * s + q + x * x; }
+  else { p = s * s * c->inv_w; q = 2 * x * s; D = (s * s + x * x) * c->inv_w + q; }
+  for (i = 0; i < c->dim; i++) {
+    double v = p * c->k[i] + q * c->c[i];
+    n2 += v * v;
+    mag += p * fabs(c->k[i]) + q * fabs(c->c[i]);
+  }
+  if (n2 > 0x1p-960 && n2 < 0x1p960)
+    chord = (sqrt(n2) - 16 * DBL_EPSILON * mag) / D * (1 - 8 * DBL_EPSILON);
+  return (lenx + (chord > 0 ? chord : 0)) * (1 - 0x1p-30);
+}
+
 /* A conic's first t for the distance s: the cubic Hermite interpolant of
 ** its length from 0 and total and the speeds at the ends, inverted by two
 ** Newton steps from the angle's guess (first_guess), which alone errs by
@@ -358,28 +384,35 @@ static int setup_ctx(int kind, int dim, const double *seg, double *scaled,
 }
 
 /* The time at s on the conic of c (scaled by 2^-e) whose length is
-** total, from the known point from = (t, len(0, t), its error bound) at
-** or before it ({0, 0, 0}: afresh), which becomes the answer's.  A line
-** is t = s / L. */
-static int ctx_time(int kind, const seg_ctx *c, int e, double total,
+** *total (NAN: unknown, measured by the search where it needs it and
+** stored), from the known point from = (t, len(0, t), its error bound) at
+** or before it ({0, 0, 0}: afresh), which becomes the answer's.  A first
+** search without the total guesses from TOTAL_NODES' rule of it
+** (uncertified: the guess only) and takes its tol from conic_below's
+** lower bounds (invert.c), so that the total's exact length (Carlson's
+** integrals, as much as the search's own) is off its chain.  A line is t
+** = s / L. */
+#define TOTAL_NODES 6
+static int ctx_time(int kind, const seg_ctx *c, int e, double *total,
                     double s, double rtol, double from[3], double *t,
                     long *evals) {
-  double guess, at[3];
+  double guess, at[3], T = *total;
   int rc;
   if (kind == ARCLEN_SEG_LINE) {     /* t uniform: s(t) = t L */
-    *t = !(s > 0) ? 0 : !(s < total) ? 1 : s / total;
-    from[0] = *t; from[1] = *t * total; from[2] = 0;
+    *t = !(s > 0) ? 0 : !(s < T) ? 1 : s / T;
+    from[0] = *t; from[1] = *t * T; from[2] = 0;
     if (evals) *evals = 0;
     return ARCLEN_OK;
   }
   at[0] = from[0]; at[1] = from[1]; at[2] = from[2];
   if (e != 0) {
-    total = ldexp(total, -e);
+    T = ldexp(T, -e);
     s = ldexp(s, -e);
     at[1] = ldexp(at[1], -e); at[2] = ldexp(at[2], -e);
   }
   if (at[0] == 0) {
-    guess = conic_guess(c, total, s);
+    guess = conic_guess(c, isnan(T) ? arclen_seg_rule(speed_at, c, TOTAL_NODES, 0, 1)
+                                    : T, s);
   } else {                           /* Newton's step from the last answer */
     double d = speed_at(c, at[0]);
     guess = d > 0 ? at[0] + (s - at[1]) / d : -1;
@@ -387,8 +420,9 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double total,
   /* the model pays where an exact length costs Carlson's integrals (a
   ** conic, ~600 ns) */
   rc = arclen_seg_invert(len_to, speed_at, conic_rule_error,
-                         conic_rule_order, c, total, s, rtol * total, guess,
-                         at, t, evals);
+                         conic_rule_order, conic_below, c, &T, s, rtol, NAN,
+                         guess, at, t, evals);
+  if (isnan(*total) && !isnan(T)) *total = e ? ldexp(T, e) : T;
   from[0] = at[0]; from[1] = e ? ldexp(at[1], e) : at[1];
   from[2] = e ? ldexp(at[2], e) : at[2];
   return rc;
@@ -448,8 +482,8 @@ static int conic_times(const seg_ctx *c, int e, const double *s, long n,
       guess = d > 0 ? from[0] + (sj - from[1]) / d : -1;
     }
     *rc = arclen_seg_invert(len_to, speed_at, conic_rule_error,
-                            conic_rule_order, c, total, sj, tol, guess, from,
-                            t + j, &ev);
+                            conic_rule_order, conic_below, c, &total, sj, rtol,
+                            tol, guess, from, t + j, &ev);
     if (evals) *evals += ev;
     if (*rc != ARCLEN_OK) return 1;
   }
@@ -474,9 +508,11 @@ static int quad_times(const arclen_quad_form *f, double total,
 }
 
 /* The times of the ascending s[0 .. n-1] on a segment that is not a cubic,
-** whose length is total (NAN: measured here when needed), in one sweep:
-** each search starts where the last one ended (its time and certified
-** length); a conic's from its cover where it has one (conic_times). */
+** whose length is total (NAN: measured where needed -- a line's and a
+** circle's here, another conic's by its searches, the first of which
+** needs none), in one sweep: each search starts where the last one ended
+** (its time and certified length); a conic's from its cover where it has
+** one (conic_times). */
 static int plain_times(int kind, int dim, const double *seg, double total,
                        const double *s, long n, double rtol, double *t,
                        long *evals) {
@@ -492,13 +528,20 @@ static int plain_times(int kind, int dim, const double *seg, double total,
   e = kind == ARCLEN_SEG_LINE ? 0 : setup_ctx(kind, dim, seg, scaled, &c);
   if (kind == ARCLEN_SEG_CONIC && conic_times(&c, e, s, n, rtol, t, evals, &rc))
     return rc;
+  /* a conic's total where the search needs it (ctx_time), but now a
+  ** circle's (its closed form is cheap, and its guess, the angle's,
+  ** exact) and one scaled by 2^-e (points beyond 2^+-500: a length that
+  ** overflows is the caller's ARCLEN_EOVERFLOW, not a time) */
   if (!(total > 0 && isfinite(total))) {
-    rc = plain_length(kind, dim, seg, 0, 1, &total, NULL);
-    if (rc != ARCLEN_OK) return rc;
+    total = NAN;
+    if (kind == ARCLEN_SEG_LINE || e != 0 || near_circle(&c)) {
+      rc = plain_length(kind, dim, seg, 0, 1, &total, NULL);
+      if (rc != ARCLEN_OK) return rc;
+    }
   }
   if (evals) *evals = 0;
   for (i = 0; i < n; i++) {
-    rc = ctx_time(kind, &c, e, total, s[i], rtol, from, t + i, &ev);
+    rc = ctx_time(kind, &c, e, &total, s[i], rtol, from, t + i, &ev);
     if (rc != ARCLEN_OK) return rc;
     if (evals) *evals += ev;
   }

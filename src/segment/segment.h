@@ -83,7 +83,13 @@ int arclen_rquad_circular(const double q[6], double w, double *len);
 ** [a, b] is within target, and that bound, 0 where none, for a long range
 ** taken again by such rules; both required) or else by an exact length,
 ** kept inside a shrinking bracket, bisection when a step leaves it
-** (capped).  total is len(0, 1) as the caller has it; guess the first t
+** (capped).  *total is len(0, 1) as the caller has it, or NAN: unknown,
+** measured by len(ctx, 1) where the search needs it and stored there
+** (counted in *evals).  tol: the caller's, or NAN: rtol times *total; a
+** first search (from {0, 0, 0}) with no total and its guess inside (0,
+** 1) takes rtol times a certified lower bound of the length (below: one
+** at least lenx + the rest's chord from x, for lenx at most len(0, x))
+** and measures the total only where s may reach it.  guess: the first t
 ** tried (outside the bracket: by the length fraction).  from:
 ** a known point (t, len(0, t), the bound of that length's error) at or
 ** before the answer ({0, 0, 0} to start afresh), which a sweep over
@@ -96,6 +102,11 @@ typedef double (*arclen_seg_boundfn)(const void *ctx, double a, double b,
                                      int n);
 typedef int (*arclen_seg_orderfn)(const void *ctx, double a, double b,
                                   double target, int max, double *err);
+typedef double (*arclen_seg_belowfn)(const void *ctx, double x,
+                                     double lenx);
+/* int_a^b speed by the n-point Gauss-Legendre rule (signed; n <= 128). */
+double arclen_seg_rule(arclen_seg_speedfn speed, const void *ctx, int n,
+                       double a, double b);
 /* A piece [a, b] of a cover: its rule's value v and that value's error
 ** bound e (the kind's bound and the sum's rounding). */
 typedef struct arclen_seg_piece { double a, b, v, e; } arclen_seg_piece;
@@ -113,9 +124,9 @@ int arclen_seg_cover(arclen_seg_speedfn speed, arclen_seg_orderfn order,
                      const void *ctx, double a, double b, double share,
                      int depth, arclen_seg_piece *pc, int *np);
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
-                      arclen_seg_boundfn bound,
-                      arclen_seg_orderfn order, const void *ctx,
-                      double total, double s, double tol, double guess,
-                      double from[3], double *t, long *evals);
+                      arclen_seg_boundfn bound, arclen_seg_orderfn order,
+                      arclen_seg_belowfn below, const void *ctx,
+                      double *total, double s, double rtol, double tol,
+                      double guess, double from[3], double *t, long *evals);
 
 #endif
