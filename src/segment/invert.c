@@ -128,16 +128,17 @@ static int certified_integral(arclen_seg_speedfn speed,
 }
 
 /* What a search knows of the length's scale: the total (NAN until
-** measured, where the caller had none), tol and the length ref it is
-** rtol times (the total, or while lazy a certified lower bound of it),
-** and the exact lengths counted. */
+** measured, where the caller had none; exact where measured here, so
+** that f(1) = total - s is a certified value), tol and the length ref it
+** is rtol times (the total, or while lazy a certified lower bound of
+** it), and the exact lengths counted. */
 typedef struct search_scale {
   arclen_seg_lenfn len;
   arclen_seg_belowfn below;
   const void *ctx;
   double *total, rtol, tol, ref;
   long *evals;
-  int lazy;
+  int lazy, exact;
 } search_scale;
 
 /* The total's exact length where the search needs it (NAN: the caller
@@ -149,6 +150,7 @@ static int settle(search_scale *sc) {
     int rc = sc->len(sc->ctx, 1, sc->total);
     if (sc->evals) (*sc->evals)++;
     if (rc != ARCLEN_OK) return rc;
+    sc->exact = 1;
   }
   if (sc->lazy || isnan(sc->tol)) sc->tol = sc->rtol * *sc->total;
   sc->ref = *sc->total;
@@ -178,11 +180,10 @@ static int still_below(search_scale *sc, double x, double lenx, double s,
 
 /* s at or past the total: t = 1 and the total's length, whose bound is
 ** none where it is the caller's. */
-static int at_end(const search_scale *sc, int measured, double from[3],
-                  double *t) {
+static int at_end(const search_scale *sc, double from[3], double *t) {
   *t = from[0] = 1;
   from[1] = *sc->total;
-  from[2] = measured ? 0 : HUGE_VAL;
+  from[2] = sc->exact ? 0 : HUGE_VAL;
   return ARCLEN_OK;
 }
 
@@ -195,21 +196,21 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
   double best = from[0], bestf = fabs(from[1] - s), bestlen = from[1];
   double besterr = from[2];
   search_scale sc;
-  int i, j, rc, end, measured = 0;
+  int i, j, rc, end;
   if (evals) *evals = 0;
+  if (!(s > 0)) { *t = from[0] = from[1] = from[2] = 0; return ARCLEN_OK; }
   sc.len = len; sc.below = below; sc.ctx = ctx; sc.total = total;
-  sc.rtol = rtol; sc.tol = tol; sc.evals = evals;
+  sc.rtol = rtol; sc.tol = tol; sc.evals = evals; sc.exact = 0;
   /* a first search (from 0) for s > 0 with its first guess inside needs
   ** no total: tol is rtol times a certified lower bound of L (below's,
   ** from the chord, then from each certified length), the total measured
   ** only where s may reach L (the clamp, t = 1 at L) */
   sc.lazy = isnan(*total) && from[0] == 0 && from[1] == 0 && from[2] == 0 &&
-            s > 0 && guess > 0 && guess < 1;
+            guess > 0 && guess < 1;
   if (sc.lazy) {
     sc.ref = below(ctx, 0, 0);
     sc.tol = rtol * sc.ref;
   } else {
-    measured = isnan(*total);
     rc = settle(&sc);
     if (rc != ARCLEN_OK) return rc;
   }
@@ -217,15 +218,14 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
   ** last one), or lies beyond s (unsorted input): start from 0 */
   if (bestf + besterr <= sc.tol) { *t = from[0]; return ARCLEN_OK; }
   if (from[1] > s) { lo = 0; best = 0; bestf = s; bestlen = 0; besterr = 0; }
-  if (!(s > 0)) { *t = from[0] = from[1] = from[2] = 0; return ARCLEN_OK; }
-  if (!sc.lazy && !(s < *total)) return at_end(&sc, measured, from, t);
+  if (!sc.lazy && !(s < *total)) return at_end(&sc, from, t);
   x = guess > lo && guess < 1 ? guess : lo + (1 - lo) * (s - bestlen) / (*total - bestlen);
   if (!(x > lo && x < 1)) x = lo + (1 - lo) / 2;
   /* the first model from the nearer known point: the start, or the end
-  ** (f(1) = total - s, the caller's total: a model only, no certificate;
-  ** a lazy search has none) */
+  ** (f(1) = total - s: certified where the total was measured here, a
+  ** model only where it is the caller's; a lazy search has none) */
   if (sc.lazy || x - lo <= 1 - x) { x0 = lo; f0 = bestlen - s; e0 = besterr; }
-  else { x0 = 1; f0 = *total - s; e0 = HUGE_VAL; }
+  else { x0 = 1; f0 = *total - s; e0 = sc.exact ? 0 : HUGE_VAL; }
   for (i = 0; i < MAX_STEPS; i++) {
     /* Newton on the model f0 + int_x0^x speed, inside the bracket */
     model_piece pc[MODEL_STEPS + 1];
@@ -254,7 +254,7 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
         model_certifies(bound, ctx, pc, np, e0, q, s, sc.tol, &qerr)) {
       rc = still_below(&sc, x, s + q - qerr, s, &end);
       if (rc != ARCLEN_OK) return rc;
-      if (end) return at_end(&sc, 1, from, t);
+      if (end) return at_end(&sc, from, t);
       *t = from[0] = x;
       from[1] = s + q;
       from[2] = qerr;
@@ -277,7 +277,7 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
       qerr += ce + 2 * DBL_EPSILON * (fabs(s) + fabs(f));
       rc = still_below(&sc, x, s + f - qerr, s, &end);
       if (rc != ARCLEN_OK) return rc;
-      if (end) return at_end(&sc, 1, from, t);
+      if (end) return at_end(&sc, from, t);
       if (fabs(f) + qerr <= sc.tol) {
         *t = from[0] = x;
         from[1] = s + f;
@@ -303,15 +303,28 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
     if (rc != ARCLEN_OK) return rc;
     rc = still_below(&sc, x, f, s, &end);
     if (rc != ARCLEN_OK) return rc;
-    if (end) return at_end(&sc, 1, from, t);
+    if (end) return at_end(&sc, from, t);
     if (fabs(f - s) < bestf) { bestf = fabs(f - s); best = x; bestlen = f; besterr = 0; }
     f -= s;
     if (fabs(f) <= sc.tol) break;
     if (f < 0) lo = x; else hi = x;
     x0 = x; f0 = f; e0 = 0;
-    /* the next model's start: Newton's step on the exact value */
+    /* the next model's start: Newton's step on the exact value, or on the
+    ** end's where it is certified (the total measured here) and nearer
+    ** in length.  Near L, Newton from below overshoots t = 1 where the
+    ** speed grows, and halving towards it cost an exact length a bit: a
+    ** lazy search measures the total there and steps from the end */
     d = speed(ctx, x);
-    nx = d > 0 ? x - f / d : lo + (hi - lo) / 2;
+    if (sc.lazy && hi == 1 && d > 0 && !(x - f / d < 1)) {
+      rc = settle(&sc);
+      if (rc != ARCLEN_OK) return rc;
+      if (!(s < *total)) return at_end(&sc, from, t);
+    }
+    if (sc.exact && hi == 1 && *total - s < fabs(f)) {
+      x0 = 1; f0 = *total - s;
+      d = speed(ctx, x0);
+    }
+    nx = d > 0 ? x0 - f0 / d : lo + (hi - lo) / 2;
     if (!(nx > lo && nx < hi)) nx = lo + (hi - lo) / 2;
     if (nx == x || !(nx > lo && nx < hi)) break;   /* lo, hi adjacent */
     x = nx;
