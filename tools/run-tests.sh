@@ -108,7 +108,8 @@ suite 5.4 lua5.4
 LUA_ENGINE_SPECS="spec/engine_spec.lua spec/engines_diff_spec.lua spec/length_spec.lua
   spec/times_spec.lua spec/subrange_spec.lua spec/path_spec.lua spec/badinput_spec.lua
   spec/batch_spec.lua spec/hostile_spec.lua spec/mpost_spec.lua spec/refdata_spec.lua
-  spec/path_kinds_spec.lua spec/segment_spec.lua spec/conic_thin_spec.lua"
+  spec/path_kinds_spec.lua spec/segment_spec.lua spec/conic_thin_spec.lua
+  spec/conic_time_spec.lua"
 engine_suite() {   # engine_suite LUA BIN: those specs with ARCLEN_ENGINE=lua
   echo "== path-level specs on the Lua engine (ARCLEN_ENGINE=lua, $2)"
   ( ARCLEN_ENGINE=lua; export ARCLEN_ENGINE
