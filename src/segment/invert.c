@@ -22,7 +22,9 @@
 ** much as the search's own) takes tol as rtol times a certified lower
 ** bound of L, the chord at first and then each certified length at x plus
 ** the rest's chord (the kind's below), and measures the total only where
-** s is not below that bound (s may reach L: t = 1 there).  Certified
+** s is not below that bound (s may reach L: t = 1 there) or Newton from
+** below would pass t = 1; a total measured here is an exact length, so
+** f(1) = total - s is a certified value to step from.  Certified
 ** values keep a bracket [lo, hi] (f(lo) < 0 < f(hi)) that every step stays
 ** inside, with bisection where Newton would leave it or the speed is 0 (a
 ** cusp); a cap ends it besides.
@@ -47,6 +49,8 @@
 ** range the model started with: 5 nodes integrate degree 9 */
 #define STEP_NODES 5
 
+/* int_a^b speed by the n-point Gauss-Legendre rule (signed): the models'
+** pieces, the cover's, and segment.c's guess of a conic's total. */
 double arclen_seg_rule(arclen_seg_speedfn speed, const void *ctx, int n,
                        double a, double b) {
   const arclen_gauss_rule *r = &arclen_gauss_rules[n - 1];
