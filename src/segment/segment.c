@@ -201,6 +201,7 @@ typedef struct rule_disc { double c, rho, rnd; } rule_disc;
 static int conic_disc(const seg_ctx *c, double a, double b, rule_disc *out) {
   double m = (a + b) / 2, h = fabs(b - a) / 2, w = c->w, v = w > 1 ? 1 / w : 1;
   double p0 = 0, p1 = 0, p2 = 0, d0, d1, d2, x, r, rd, pmax, dmin, rho, M;
+  double delta = DBL_EPSILON * (fabs(m) + h);   /* the nodes' rounding */
   int i;
   for (i = 0; i < c->dim; i++) {
     /* N's Taylor coefficients at m (divided by w when w > 1) from its
@@ -224,7 +225,11 @@ static int conic_disc(const seg_ctx *c, double a, double b, rule_disc *out) {
   r = 2 * THETA * p0 / (p1 + sqrt(p1 * p1 + 4 * THETA * p0 * p2));
   rd = 2 * THETA * d0 / (d1 + sqrt(d1 * d1 + 4 * THETA * d0 * d2));
   if (rd < r) r = rd;
-  if (!(r > h * 1.0001)) return 0;
+  /* the rounded nodes and ends lie within h + delta of m: the disc holds
+  ** them with room for Cauchy's slope estimate (w = 1e30: a piece [1 -
+  ** 3.3e-16, 1] has m 5.5e-17 off, past r - h, and its rule missed the
+  ** last leg, 2.2 of a length 5.4, under a bound of 6e-12) */
+  if (!(r > h * 1.0001 + 2 * delta)) return 0;
   if (r > 1e6 * h) r = 1e6 * h;     /* rho^-2n is 0 long before */
   pmax = p0 + r * (p1 + r * p2);
   dmin = d0 - r * (d1 + r * d2);    /* >= (1 - THETA) d0 */
@@ -234,11 +239,11 @@ static int conic_disc(const seg_ctx *c, double a, double b, rule_disc *out) {
   out->rho = rho;
   out->c = 64.0 / 15 * h * M / ((1 - 1 / rho) * (1 + 1 / rho));
   /* besides the truncation, the nodes' rounding: each m +- h x_i is off
-  ** by up to eps (|m| + h), where the speed's slope is at most M / (r -
-  ** h) (Cauchy's estimate in the disc); the weights sum to 2 (w = 468
-  ** near t = 1: 5e-14 relative of a 10-node rule over 1.8e-4, the
-  ** truncation 1e-19) */
-  out->rnd = 2 * h * M / (r - h) * DBL_EPSILON * (fabs(m) + h);
+  ** by up to delta = eps (|m| + h), where the speed's slope is at most M
+  ** / (r - h - delta) (Cauchy's estimate in the disc); the weights sum to
+  ** 2 (w = 468 near t = 1: 5e-14 relative of a 10-node rule over 1.8e-4,
+  ** the truncation 1e-19) */
+  out->rnd = 2 * h * M / (r - h - delta) * delta;
   return 1;
 }
 
