@@ -26,8 +26,12 @@
 ** below would pass t = 1; a total measured here is an exact length, so
 ** f(1) = total - s is a certified value to step from.  Certified
 ** values keep a bracket [lo, hi] (f(lo) < 0 < f(hi)) that every step stays
-** inside, with bisection where Newton would leave it or the speed is 0 (a
-** cusp); a cap ends it besides.
+** inside, with bisection where Newton would leave it, where the speed is
+** 0 (a cusp) or where a step is longer than half the one before (rtsafe's
+** rule: steps from a fast side towards a slow one crawl); a cap ends it
+** besides.  Where no double t holds s within tol (a conic of w beyond
+** ~2^52, whose last leg lies in t > 1 - 1/w), the answer is the t nearest
+** in length of those measured and the end.
 */
 #include <float.h>
 #include <math.h>
@@ -200,6 +204,7 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
   double best = from[0], bestf = fabs(from[1] - s), bestlen = from[1];
   double besterr = from[2];
   search_scale sc;
+  double last = HUGE_VAL;      /* the step before (rtsafe's rule) */
   int i, j, rc, end;
   if (evals) *evals = 0;
   if (!(s > 0)) { *t = from[0] = from[1] = from[2] = 0; return ARCLEN_OK; }
@@ -296,8 +301,10 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
         x0 = x; f0 = f; e0 = qerr;
         d = speed(ctx, x);
         nx = d > 0 ? x - f / d : lo + (hi - lo) / 2;
-        if (!(nx > lo && nx < hi)) nx = lo + (hi - lo) / 2;
+        if (!(nx > lo && nx < hi) || fabs(nx - x) > last / 2)
+          nx = lo + (hi - lo) / 2;
         if (nx == x || !(nx > lo && nx < hi)) break;
+        last = fabs(nx - x);
         x = nx;
         continue;
       }
@@ -329,9 +336,16 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
       d = speed(ctx, x0);
     }
     nx = d > 0 ? x0 - f0 / d : lo + (hi - lo) / 2;
-    if (!(nx > lo && nx < hi)) nx = lo + (hi - lo) / 2;
+    if (!(nx > lo && nx < hi) || fabs(nx - x) > last / 2)
+      nx = lo + (hi - lo) / 2;
     if (nx == x || !(nx > lo && nx < hi)) break;   /* lo, hi adjacent */
+    last = fabs(nx - x);
     x = nx;
+  }
+  if (bestf + besterr > sc.tol) {       /* not met: the end, if nearer */
+    rc = settle(&sc);
+    if (rc != ARCLEN_OK) return rc;
+    if (fabs(*total - s) < bestf) return at_end(&sc, from, t);
   }
   *t = from[0] = best;
   from[1] = bestlen;

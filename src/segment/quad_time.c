@@ -18,7 +18,8 @@
 ** second-order polynomial and a shorter bound (short_bound).
 ** Else x + e is measured and the step repeats, inside a bracket of
 ** measured points, bisecting where a step leaves it (a cusp: |v| = 0 at
-** the vertex when k = 0), capped.  A sweep over ascending distances (the
+** the vertex when k = 0) or is longer than half the step before (rtsafe's
+** rule: steps from a fast side towards a slow one crawl), capped.  A sweep over ascending distances (the
 ** path walks) steps from the last answer first, carrying its bound.
 */
 #include <float.h>
@@ -335,7 +336,7 @@ int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
   int e2 = -F->scale, i, lazy, ok, rc;
   double down = F->down, up = F->up;
   double g, T = NAN, tol = 0, lo, hi = 1, x, f, err, S, e = 0, bnd, len, r;
-  double best, bestf, bestlen, besterr;
+  double best, bestf, bestlen, besterr, last = HUGE_VAL;
   *evals = 0;
   if (F->zero) {                     /* a point: every length is 0 */
     *t = from[0] = from[1] = from[2] = 0;
@@ -420,8 +421,9 @@ int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
     }
     if (ok) return answer(F, x + e, s, bnd, from, t);
     e = S > 0 ? x + e : -1;                 /* not certified: measure it */
-    if (!(e > lo && e < hi)) e = lo + (hi - lo) / 2;
+    if (!(e > lo && e < hi) || fabs(e - x) > last / 2) e = lo + (hi - lo) / 2;
     if (e == x || !(e > lo && e < hi)) break;      /* lo, hi adjacent */
+    last = fabs(e - x);
     x = e;
   }
   *t = from[0] = best;
