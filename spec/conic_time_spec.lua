@@ -157,3 +157,58 @@ describe("a conic's time at tol 1e-15 and 1e-14 (spec/data/conic_times.tsv)", fu
     end)
   end
 end)
+
+-- Weights far past 1 put the two legs of the control polygon into t's
+-- corners: the first leg into t < ~1/w, where doubles are dense, the last
+-- into 1 - t < ~1/w, where no double lies between 1 - 2^-53 and 1.  The
+-- references are the legs themselves: for w >= 1e30 and t < 1e-20 the
+-- point is P0 + u (P1 - P0) to 1e-50, u = 2wt(1-t) / D, so T = u / (2 w (1
+-- - u)) at u = s / |P1 - P0|, and the speed there |P1 - P0| 2 w (1 - u)^2.
+describe("a conic's time where w puts a leg into a corner of t", function()
+  local P0, P1, P2 = {0, 0}, {3, 1}, {1, 2}
+  local a, b = math.sqrt(10), math.sqrt(5)      -- |P1 - P0|, |P2 - P1|
+  local function seg(w) return {P0[1], P0[2], P1[1], P1[2], P2[1], P2[2], w} end
+
+  it("the first leg (t < 1/w) within tol, w = 1e30, 1e100, 1e300", function()
+    for _, w in ipairs({1e30, 1e100, 1e300}) do
+      if H.engine ~= "c" and w >= 2 ^ 510 then   -- its angle form squares w
+        local ok, err = pcall(arclen.segment_length, "conic", seg(w))
+        assert(not ok and err:find("weight .*must be below 2%^510 on the Lua engine"), err)
+      else
+        local L = arclen.segment_length("conic", seg(w))
+        assert(abs(L - (a + b)) <= BOUND * L, ("w %g: L %.17g"):format(w, L))
+        for _, tol in ipairs(H.engine == "c" and {1e-9, 1e-15} or {1e-9}) do
+          for k = 1, 19 do
+            local u = k / 20
+            local s, T, V = u * a, u / (2 * w * (1 - u)), a * 2 * w * (1 - u) ^ 2
+            local t = arclen.segment_time("conic", seg(w), s, {tol = tol})
+            assert(abs(t - T) * V <= room(tol, L, t, V),
+                   ("w %g, tol %g, s %.17g: t %.17g, T %.17g"):format(w, tol, s, t, T))
+          end
+        end
+      end
+    end
+  end)
+
+  -- the C core's search (src/segment/invert.c); the Lua engine searches
+  -- in the conic's angle and rounds its answer to t, 1 on this leg
+  -- (CHANGELOG, known limitations)
+  if H.engine == "c" then
+  it("the last leg (1 - t < 1/w): the nearer of the t below 1 and t = 1", function()
+    -- every double t < 1 is at length a (to 1e-13 for w = 1e30); t = 1 at a + b
+    for _, w in ipairs({1e30, 1e100, 1e300}) do
+      for k = 1, 9 do
+        local s = a + b * (k / 10)
+        local t = arclen.segment_time("conic", seg(w), s, {tol = 1e-9})
+        if k < 5 then
+          assert(t < 1, ("w %g, s %.17g: t %.17g"):format(w, s, t))
+          local got = arclen.segment_length("conic", seg(w), {t1 = t})
+          assert(abs(got - a) <= 1e-12 * a, ("w %g, s %.17g: t %.17g at %.17g"):format(w, s, t, got))
+        elseif k > 5 then
+          assert.are.equal(1, t, ("w %g, s %.17g"):format(w, s))
+        end
+      end
+    end
+  end)
+  end
+end)

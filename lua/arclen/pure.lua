@@ -24,6 +24,12 @@ local NEEDS_C = "needs the C core (arclen.core), which is not loaded: in plain L
 
 -- "bad argument #n to 'fname' (msg)", as luaL_argerror raises it from a C
 -- function: without a position.
+-- The largest conic weight the Lua engine's set-up takes: its angle form
+-- squares w (pure_segment.lua, conic_setup: (1 - w)(1 + w) and |U x V|^2
+-- at a scale of 1/w), which leaves the double range at 2^512; the C core
+-- scales by 1/w and takes every finite w.
+local PURE_WMAX = 2 ^ 510
+
 local function argerror(n, fname, msg)
   error(format("bad argument #%d to '%s' (%s)", n, fname, msg), 0)
 end
@@ -524,6 +530,9 @@ local function check_segment(kind, seg, arg, fname)
   if kind == "conic" and not (c[n] > 0) then
     argerror(arg, fname, format("conic weight (number %d) must be positive", n))
   end
+  if kind == "conic" and not (c[n] < PURE_WMAX) then
+    argerror(arg, fname, format("conic weight (number %d) must be below 2^510 on the Lua engine", n))
+  end
   return c, n == n2 and 2 or 3
 end
 
@@ -779,6 +788,9 @@ local function records(packed, kinds, d, arg, fname, kinds_arg)
     end
     if kind == "conic" and not (c[cnt] > 0) then
       argerror(arg, fname, format("segment %d: conic weight must be positive", k))
+    end
+    if kind == "conic" and not (c[cnt] < PURE_WMAX) then
+      argerror(arg, fname, format("segment %d: conic weight must be below 2^510 on the Lua engine", k))
     end
     return c, kind
   end

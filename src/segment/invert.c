@@ -26,10 +26,8 @@
 ** below would pass t = 1; a total measured here is an exact length, so
 ** f(1) = total - s is a certified value to step from.  Certified
 ** values keep a bracket [lo, hi] (f(lo) < 0 < f(hi)) that every step stays
-** inside, with bisection where Newton would leave it, where the speed is
-** 0 (a cusp) or where a step is longer than half the one before (rtsafe's
-** rule: steps from a fast side towards a slow one crawl); a cap ends it
-** besides.  Where no double t holds s within tol (a conic of w beyond
+** inside (next_point: Newton's step, else one from the bracket's lower
+** end, else bisection); a cap ends it besides.  Where no double t holds s within tol (a conic of w beyond
 ** ~2^52, whose last leg lies in t > 1 - 1/w), the answer is the t nearest
 ** in length of those measured and the end.
 */
@@ -195,6 +193,29 @@ static int at_end(const search_scale *sc, double from[3], double *t) {
   return ARCLEN_OK;
 }
 
+/* The next point after x: nx (Newton's step) where it stays inside (lo,
+** hi) and is at most half the step before (*last; rtsafe's rule: steps
+** from a fast side towards a slow one crawl); else Newton's step from lo
+** (f(lo) = flo), but not twice running, where it stays inside: the speed
+** can fall by orders across the bracket (w = 1e100 puts a conic's first
+** leg in t < 1e-99, which halving from 1 does not reach within the cap);
+** else the middle, so that the bracket halves every second step at
+** least. */
+static double next_point(arclen_seg_speedfn speed, const void *ctx,
+                         double nx, double x, double lo, double flo,
+                         double hi, double *last, int *from_lo) {
+  if (nx > lo && nx < hi && fabs(nx - x) <= *last / 2) {
+    *from_lo = 0;
+  } else {
+    double d = *from_lo ? 0 : speed(ctx, lo);
+    nx = d > 0 ? lo - flo / d : -1;
+    *from_lo = nx > lo && nx < hi;
+    if (!*from_lo) nx = lo + (hi - lo) / 2;
+  }
+  *last = fabs(nx - x);
+  return nx;
+}
+
 int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
                       arclen_seg_boundfn bound, arclen_seg_orderfn order,
                       arclen_seg_belowfn below, const void *ctx,
@@ -204,8 +225,8 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
   double best = from[0], bestf = fabs(from[1] - s), bestlen = from[1];
   double besterr = from[2];
   search_scale sc;
-  double last = HUGE_VAL;      /* the step before (rtsafe's rule) */
-  int i, j, rc, end;
+  double last = HUGE_VAL, flo = from[1] - s;   /* the step before, f(lo) */
+  int i, j, rc, end, from_lo = 0;
   if (evals) *evals = 0;
   if (!(s > 0)) { *t = from[0] = from[1] = from[2] = 0; return ARCLEN_OK; }
   sc.len = len; sc.below = below; sc.ctx = ctx; sc.total = total;
@@ -226,7 +247,7 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
   /* the certified start already answers (a distance within tol of the
   ** last one), or lies beyond s (unsorted input): start from 0 */
   if (bestf + besterr <= sc.tol) { *t = from[0]; return ARCLEN_OK; }
-  if (from[1] > s) { lo = 0; best = 0; bestf = s; bestlen = 0; besterr = 0; }
+  if (from[1] > s) { lo = 0; flo = -s; best = 0; bestf = s; bestlen = 0; besterr = 0; }
   if (!sc.lazy && !(s < *total)) return at_end(&sc, from, t);
   x = guess > lo && guess < 1 ? guess : lo + (1 - lo) * (s - bestlen) / (*total - bestlen);
   if (!(x > lo && x < 1)) x = lo + (1 - lo) / 2;
@@ -294,17 +315,15 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
         return ARCLEN_OK;
       }
       if (fabs(f) > qerr) {            /* its sign certain: the bracket moves */
-        if (f < 0) lo = x; else hi = x;
+        if (f < 0) { lo = x; flo = f; } else hi = x;
         if (fabs(f) < bestf) {
           bestf = fabs(f); best = x; bestlen = s + f; besterr = qerr;
         }
         x0 = x; f0 = f; e0 = qerr;
         d = speed(ctx, x);
-        nx = d > 0 ? x - f / d : lo + (hi - lo) / 2;
-        if (!(nx > lo && nx < hi) || fabs(nx - x) > last / 2)
-          nx = lo + (hi - lo) / 2;
+        nx = next_point(speed, ctx, d > 0 ? x - f / d : -1, x, lo, flo, hi,
+                        &last, &from_lo);
         if (nx == x || !(nx > lo && nx < hi)) break;
-        last = fabs(nx - x);
         x = nx;
         continue;
       }
@@ -318,7 +337,7 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
     if (fabs(f - s) < bestf) { bestf = fabs(f - s); best = x; bestlen = f; besterr = 0; }
     f -= s;
     if (fabs(f) <= sc.tol) break;
-    if (f < 0) lo = x; else hi = x;
+    if (f < 0) { lo = x; flo = f; } else hi = x;
     x0 = x; f0 = f; e0 = 0;
     /* the next model's start: Newton's step on the exact value, or on the
     ** end's where it is certified (the total measured here) and nearer
@@ -335,11 +354,9 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
       x0 = 1; f0 = *total - s;
       d = speed(ctx, x0);
     }
-    nx = d > 0 ? x0 - f0 / d : lo + (hi - lo) / 2;
-    if (!(nx > lo && nx < hi) || fabs(nx - x) > last / 2)
-      nx = lo + (hi - lo) / 2;
+    nx = next_point(speed, ctx, d > 0 ? x0 - f0 / d : -1, x, lo, flo, hi,
+                    &last, &from_lo);
     if (nx == x || !(nx > lo && nx < hi)) break;   /* lo, hi adjacent */
-    last = fabs(nx - x);
     x = nx;
   }
   if (bestf + besterr > sc.tol) {       /* not met: the end, if nearer */
