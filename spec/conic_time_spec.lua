@@ -129,11 +129,7 @@ describe("a conic's time at tol 1e-15 and 1e-14 (spec/data/conic_times.tsv)", fu
       -- total's too where it is measured.  Near L the total is needed
       -- (s may reach it, or Newton from below overshoots t = 1): at most
       -- two then, as before the change (one and the total)
-      local seed = 20261204
-      local function uniform()
-        seed = (seed * 48271) % 2147483647
-        return seed / 2147483647
-      end
+      local uniform = H.uniform(20261204)
       local one, n, most = 0, 0, 0
       for _ = 1, 200 do
         local seg = {}

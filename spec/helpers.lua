@@ -97,6 +97,17 @@ function helpers.relerr(got, want)
 end
 
 -- Track the worst case of a family, so a failure names the curve.
+-- helpers.uniform(seed) -> a function giving numbers in (0, 1) from
+-- Park and Miller's minimal standard (x <- 48271 x mod 2^31 - 1): the same
+-- sequence on every Lua, 5.1 to 5.4 and LuaJIT (the products stay below
+-- 2^53).
+function helpers.uniform(seed)
+  return function()
+    seed = (seed * 48271) % 2147483647
+    return seed / 2147483647
+  end
+end
+
 function helpers.worst()
   local w = {err = -1, id = nil}
   function w:add(err, id)

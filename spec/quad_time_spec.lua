@@ -14,11 +14,7 @@ local EPS = 2 ^ -52
 local abs, max = math.abs, math.max
 
 -- a fixed generator: the same quadratics on every host
-local seed = 12345
-local function rand()
-  seed = (seed * 48271) % 2147483647
-  return seed / 2147483647
-end
+local rand = H.uniform(12345)
 
 local HOSTILE = {
   {"cusp: P2 = P0, turns back at t = 1/2", {0, 0, 1, 0, 0, 0}},

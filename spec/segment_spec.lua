@@ -224,11 +224,7 @@ describe("segments of four kinds (issue 31)", function()
       -- the searches start from the cover's certified pieces (segment.c
       -- conic_times, invert.c arclen_seg_cover), no exact length unless a
       -- model fails; checked against the exact (Carlson) length of [0, t]
-      local seed = 20261203
-      local function uniform()
-        seed = (seed * 48271) % 2147483647
-        return seed / 2147483647
-      end
+      local uniform = H.uniform(20261203)
       local fresh, calls = 0, 0
       for _ = 1, 150 do
         local seg = {}
