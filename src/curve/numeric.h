@@ -1,7 +1,7 @@
 /*
 ** numeric.h -- small exact-arithmetic pieces every area may use: pi, the
-** error-free sum of two doubles and Neumaier's compensated sum.  Not part
-** of the public API.
+** error-free sum of two doubles and Neumaier's compensated sum, and the
+** step rule of the bracketed searches.  Not part of the public API.
 */
 #ifndef ARCLEN_NUMERIC_H
 #define ARCLEN_NUMERIC_H
@@ -126,6 +126,16 @@ static inline double arclen_hermite_invert(double total, double fa, double fb,
     u = next;
   }
   return u;
+}
+
+/* Whether a bracketed search takes its step from x to nx: nx inside (lo,
+** hi) and at most half the step before, last (Numerical Recipes' rtsafe
+** rule: steps from the fast side of a steep fall in the speed towards the
+** slow one crawl); else it halves the bracket, which then halves at least
+** every second step.  A NaN nx is refused. */
+static inline int arclen_step_ok(double nx, double x, double lo, double hi,
+                                 double last) {
+  return nx > lo && nx < hi && fabs(nx - x) <= last / 2;
 }
 
 #endif

@@ -429,10 +429,8 @@ static void eval_at(integrator *in, piece_search *p, double t,
 ** leaving it is replaced by bisection.  The k-th integral may err by share
 ** 2^-k, so the s values known err by less than 2 share more than the
 ** bracket's did.  A step longer than half the step before is replaced by
-** bisection too (Numerical Recipes' rtsafe rule): where the speed falls
-** steeply, Newton's and the reversion's steps from the side of the slow
-** speed crawl (a cusp-like 3D curve took 100 steps of ~1e-4 and stopped a
-** quarter of L short, fuzz_time).  The bracket is left holding the last
+** bisection too (arclen_step_ok: a cusp-like 3D curve took 100 steps of
+** ~1e-4 and stopped a quarter of L short, fuzz_time).  The bracket is left holding the last
 ** points evaluated, for the next distance.  refined: t is the refined
 ** guess. */
 static double newton_search(integrator *in, piece_search *p, double t,
@@ -487,7 +485,8 @@ static double newton_search(integrator *in, piece_search *p, double t,
         next = t + e3 > lo && t + e3 < hi ? t + e3 : t + d;
       }
     }
-    if (fabs(next - t) > last_step / 2) next = lo + (hi - lo) / 2;
+    if (!arclen_step_ok(next, t, lo, hi, last_step))
+      next = lo + (hi - lo) / 2;
     if (next == t || hi - lo <= 4e-16 * fmax(fabs(hi), 1e-300)) return t;
     last_step = fabs(next - t);
     t = next;

@@ -25,16 +25,18 @@
 ** s is not below that bound (s may reach L: t = 1 there) or Newton from
 ** below would pass t = 1; a total measured here is an exact length, so
 ** f(1) = total - s is a certified value to step from.  Certified
-** values keep a bracket [lo, hi] (f(lo) < 0 < f(hi)) that every step stays
-** inside (next_point: Newton's step, else one from the bracket's lower
-** end, else bisection); a cap ends it besides.  Where no double t holds s within tol (a conic of w beyond
-** ~2^52, whose last leg lies in t > 1 - 1/w), the answer is the t nearest
-** in length of those measured and the end.
+** values keep a bracket [lo, hi] (f(lo) < 0 < f(hi)) that every step
+** stays inside (next_point: Newton's step, else one from the bracket's
+** lower end, else bisection); a cap ends it besides.  Where no double t
+** holds s within tol (a conic of w beyond ~2^52, whose last leg lies in t
+** > 1 - 1/w), the answer is the t nearest in length of those measured and
+** the end.
 */
 #include <float.h>
 #include <math.h>
 
 #include "arclen.h"
+#include "curve/numeric.h"
 #include "gauss/gauss_tables.h"
 #include "segment/segment.h"
 
@@ -193,18 +195,17 @@ static int at_end(const search_scale *sc, double from[3], double *t) {
   return ARCLEN_OK;
 }
 
-/* The next point after x: nx (Newton's step) where it stays inside (lo,
-** hi) and is at most half the step before (*last; rtsafe's rule: steps
-** from a fast side towards a slow one crawl); else Newton's step from lo
-** (f(lo) = flo), but not twice running, where it stays inside: the speed
-** can fall by orders across the bracket (w = 1e100 puts a conic's first
-** leg in t < 1e-99, which halving from 1 does not reach within the cap);
-** else the middle, so that the bracket halves every second step at
-** least. */
+/* The next point after x: nx (Newton's step) where arclen_step_ok takes
+** it (*last: the step before, then the step taken); else Newton's step
+** from lo (f(lo) = flo), but not twice running, where it stays inside:
+** the speed can fall by orders across the bracket (w = 1e100 puts a
+** conic's first leg in t < 1e-99, which halving from 1 does not reach
+** within the cap); else the middle, so that the bracket halves every
+** second step at least. */
 static double next_point(arclen_seg_speedfn speed, const void *ctx,
                          double nx, double x, double lo, double flo,
                          double hi, double *last, int *from_lo) {
-  if (nx > lo && nx < hi && fabs(nx - x) <= *last / 2) {
+  if (arclen_step_ok(nx, x, lo, hi, *last)) {
     *from_lo = 0;
   } else {
     double d = *from_lo ? 0 : speed(ctx, lo);

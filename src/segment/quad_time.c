@@ -18,9 +18,9 @@
 ** second-order polynomial and a shorter bound (short_bound).
 ** Else x + e is measured and the step repeats, inside a bracket of
 ** measured points, bisecting where a step leaves it (a cusp: |v| = 0 at
-** the vertex when k = 0) or is longer than half the step before (rtsafe's
-** rule: steps from a fast side towards a slow one crawl), capped.  A sweep over ascending distances (the
-** path walks) steps from the last answer first, carrying its bound.
+** the vertex when k = 0) or is longer than half the step before
+** (arclen_step_ok), capped.  A sweep over ascending distances (the path
+** walks) steps from the last answer first, carrying its bound.
 */
 #include <float.h>
 #include <math.h>
@@ -421,7 +421,7 @@ int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
     }
     if (ok) return answer(F, x + e, s, bnd, from, t);
     e = S > 0 ? x + e : -1;                 /* not certified: measure it */
-    if (!(e > lo && e < hi) || fabs(e - x) > last / 2) e = lo + (hi - lo) / 2;
+    if (!arclen_step_ok(e, x, lo, hi, last)) e = lo + (hi - lo) / 2;
     if (e == x || !(e > lo && e < hi)) break;      /* lo, hi adjacent */
     last = fabs(e - x);
     x = e;
