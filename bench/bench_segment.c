@@ -10,7 +10,10 @@
 ** the ratio to the cubic, each kind's time over its length, and the
 ** median speed evaluations (info.evals: the
 ** cubic's integrand, the quadratic's Gauss nodes where nearly straight; 0
-** for a closed form).  A last row measures each quadratic raised to the
+** for a closed form).  Calls on one segment are independent, so the core
+** overlaps one with the next as far as its window allows; a second pair of
+** columns times them in a chain (each call's points wait on the last
+** answer), where what counts is each call's own latency.  A last row measures each quadratic raised to the
 ** cubic (P0, P0 + 2/3 (P1 - P0), P2 + 2/3 (P1 - P2), P2) by the default
 ** method: what a path paid for it before the kinds.  Run: make bench (or
 ** make -C bench bin/bench_segment).
@@ -48,13 +51,36 @@ static double measure(int kind, int i, int want_time, double rtol) {
   return v;
 }
 
+/* REPS calls on segment i in a chain: each call's points are the
+** segment's plus the last answer times 1e-300, which leaves every point
+** as it is (far below half an ulp of it) but makes the call wait on the
+** last one's answer.  Median ns per call. */
+static double chained(int kind, int i, int want_time, double rtol) {
+  arclen_opts o;
+  double p[ARCLEN_SEG_MAXN], v, last = 0, t0;
+  int r, k, n = arclen_segment_count(kind, 2);
+  arclen_opts_init(&o);
+  o.rtol = rtol;
+  t0 = bench_now();
+  for (r = 0; r < REPS; r++) {
+    for (k = 0; k < n; k++) p[k] = segs[kind][i][k] + last * 1e-300;
+    if (want_time)
+      arclen_segment_time(kind, 2, p, halves[kind][i], NULL, &o, &v, NULL);
+    else
+      arclen_segment_length(kind, 2, p, NULL, &o, &v, NULL);
+    last = v;
+  }
+  sink = last;
+  return (bench_now() - t0) / REPS * 1e9;
+}
+
 /* One table at rtol: each kind's median length and time (L/2), their
 ** ratios to the cubic's, the median evaluations and time / length. */
 static void table(double rtol) {
-  static double times[2][ARCLEN_SEG_NKINDS][N], evals[2][ARCLEN_SEG_NKINDS][N];
+  static double times[4][ARCLEN_SEG_NKINDS][N], evals[2][ARCLEN_SEG_NKINDS][N];
   static const int order[ARCLEN_SEG_NKINDS] = {
     ARCLEN_SEG_CUBIC, ARCLEN_SEG_QUAD, ARCLEN_SEG_LINE, ARCLEN_SEG_CONIC};
-  double med[2][ARCLEN_SEG_NKINDS];
+  double med[4][ARCLEN_SEG_NKINDS];
   int i, k, b, r, wt;
   for (i = 0; i < N; i++)
     for (k = 0; k < ARCLEN_SEG_NKINDS; k++) {       /* outside the clock */
@@ -69,29 +95,36 @@ static void table(double rtol) {
       arclen_segment_time(k, 2, segs[k][i], L / 2, NULL, &o, &t, &info);
       evals[1][k][i] = (double)info.evals;
     }
-  for (wt = 0; wt < 2; wt++)
+  /* wt: 0 length, 1 time, each call on its own; 2, 3 the same chained */
+  for (wt = 0; wt < 4; wt++)
     for (b = 0; b < N; b += BLOCK)
       for (k = 0; k < ARCLEN_SEG_NKINDS; k++)
         for (i = b; i < b + BLOCK && i < N; i++) {
           double t0 = bench_now();
+          if (wt >= 2) {
+            times[wt][order[k]][i] = chained(order[k], i, wt - 2, rtol);
+            continue;
+          }
           for (r = 0; r < REPS; r++) sink = measure(order[k], i, wt, rtol);
           times[wt][order[k]][i] = (bench_now() - t0) / REPS * 1e9;
         }
-  for (wt = 0; wt < 2; wt++)
+  for (wt = 0; wt < 4; wt++)
     for (k = 0; k < ARCLEN_SEG_NKINDS; k++)
       med[wt][k] = bench_median(times[wt][k], N);
   printf("3000 random segments in [0,10]^2, rtol %g, median ns per call "
          "(%d calls each)\n", rtol, REPS);
-  printf("%-8s %10s %9s %7s %12s %9s %7s %12s\n", "kind", "length ns", "/cubic",
-         "evals", "time(L/2) ns", "/cubic", "evals", "time/length");
+  printf("%-8s %10s %9s %7s %12s %9s %7s %12s %10s %10s %8s\n", "kind",
+         "length ns", "/cubic", "evals", "time(L/2) ns", "/cubic", "evals",
+         "time/length", "chain len", "chain time", "ratio");
   for (k = 0; k < ARCLEN_SEG_NKINDS; k++) {
     int kind = order[k];
-    printf("%-8s %10.1f %9.2f %7.0f %12.1f %9.2f %7.0f %12.2f\n",
-           arclen_segment_kind_name(kind), med[0][kind],
+    printf("%-8s %10.1f %9.2f %7.0f %12.1f %9.2f %7.0f %12.2f %10.1f %10.1f "
+           "%8.2f\n", arclen_segment_kind_name(kind), med[0][kind],
            med[0][kind] / med[0][ARCLEN_SEG_CUBIC],
            bench_median(evals[0][kind], N), med[1][kind],
            med[1][kind] / med[1][ARCLEN_SEG_CUBIC],
-           bench_median(evals[1][kind], N), med[1][kind] / med[0][kind]);
+           bench_median(evals[1][kind], N), med[1][kind] / med[0][kind],
+           med[2][kind], med[3][kind], med[3][kind] / med[2][kind]);
   }
   if (rtol == 1e-12) {
     lens12[0] = med[0][ARCLEN_SEG_CUBIC];
@@ -130,7 +163,8 @@ int main(void) {
          bench_median(rt, N), bench_median(rt, N) / lens12[0]);
   table(1e-15);
   printf("time / length: the goal is <= 2 for every kind at both tolerances "
-         "(issue 31 item 8)\n");
+         "(issue 31 item 8);\nchain len, chain time, ratio: the same calls in a "
+         "chain, each waiting on the last answer\n");
   printf("cubic / line: %.1fx   cubic / quad: %.1fx   raised / quad: %.1fx "
          "(goal: >= 5x, at 1e-12)\n",
          lens12[0] / lens12[1], lens12[0] / lens12[2],
