@@ -4,7 +4,8 @@
 -- transforms, degenerate arcs, errors that give the position in the
 -- string, and arcs = "cubics" (today's cubics, bit for bit against
 -- spec/data/svg_cubics.tsv, recorded by tools/ref_svg_cubics.lua from the
--- reader before it kept the kinds).  Lengths against spec/data/paths.tsv
+-- reader before it kept the kinds, and again when arcs' control points came
+-- from their ends).  Lengths against spec/data/paths.tsv
 -- (mpmath, tools/ref_paths.py, which reads the path data independently).
 local arclen = require("arclen")
 local H = require("helpers")
@@ -473,6 +474,42 @@ describe("svg path data: lengths against mpmath (spec/data/paths.tsv)", function
         by_path and "" or " (measured record by record)", tol, w.err, w.id))
     end)
   end
+end)
+
+describe("svg path data: flat arcs of large ellipses (spec/data/svg_flat_arcs.tsv)", function()
+  -- radii up to 1e12 against a chord of ~10, and turns at the tip of thin
+  -- ellipses (tools/ref_flat_arcs.py, mpmath's incomplete E).  The conic's
+  -- control point comes from the arc's ends, its half angle from the sweep:
+  -- from the centre, ~R away, they were 5.6e-11 of the length off.  Bound:
+  -- tol L plus the conic's own rounding (its numbers within a few ulps,
+  -- each moving these lengths by at most 4e-16 of them), 8 eps L.
+  local rows = H.tsv("svg_flat_arcs.tsv")
+  it("has the reference arcs", function() assert.is_true(#rows >= 60) end)
+  for _, tol in ipairs({1e-15, 1e-12}) do
+    it(("are within tol * L of the ellipse arc (tol %g)"):format(tol), function()
+      local w = H.worst()
+      for _, row in ipairs(rows) do
+        local want = tonumber(row.L)
+        local got = path.svg(row.d, {tol = tol}):length()
+        local err = math.abs(got - want)
+        assert.is_true(err <= (tol + 8 * EPS) * want,
+                       ("%s: error %g of L"):format(row.d, err / want))
+        w:add(err / want, row.d)
+      end
+      print(("  flat arcs (tol %g): worst relative error %.3g"):format(tol, w.err))
+    end)
+  end
+
+  it("read back from p:svg() of a nearly parabolic conic, the same length", function()
+    -- w = 1 - 1.8e-11: p:svg() writes an A of radii ~1e11 (read back, it
+    -- was 8e-7 of the length off)
+    local c = {"conic", -2.7229164320616595, -4.0564736603090878, 2.8471911851536436,
+               -7.2577511227027287, -1.0231192647587128, 4.4345172003072308, 0.99999999998242162}
+    local p = path({c})
+    local q = path.svg(p:svg())
+    local L = p:length({tol = 1e-15})
+    assert.is_true(math.abs(q:length({tol = 1e-15}) - L) <= (1e-15 + 8 * EPS) * L)
+  end)
 end)
 
 describe("the basic shapes' records (arclen.svgdoc)", function()

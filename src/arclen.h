@@ -353,7 +353,8 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
                           double phi_deg, int large, int sweep, double x2,
                           double y2, double c[7]);
 /* The same arc as at most four conics in c[28] (7 numbers each), its ends
-** snapped to (x1, y1) and (x2, y2): ARCLEN_SVGARC_NONE, _LINE (*n = 0),
+** (x1, y1) and (x2, y2) themselves and each control point from its
+** piece's ends, not from the centre: ARCLEN_SVGARC_NONE, _LINE (*n = 0),
 ** _ARC (*n conics) or a negative error code. */
 int arclen_svg_arc_conics(double x1, double y1, double rx, double ry,
                           double phi_deg, int large, int sweep, double x2,

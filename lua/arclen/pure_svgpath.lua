@@ -63,33 +63,50 @@ local function arc_center(x1, y1, rx, ry, phi_deg, large, sweep, x2, y2)
   local u, v = x1p / rx, y1p / ry
   local h = hypot(u, v)
   if h == 0 then return "line" end
-  local lam, coef = h * h, nil
+  local lam, coef, rest = h * h, nil, nil
   if lam > 1 then                                               -- F.6.6.3
     rx, ry = rx * h, ry * h
     if not (finite(rx) and finite(ry)) then return nil, "overflow" end
     u, v, h = u / h, v / h, 1
-    coef = 0
+    coef, rest = 0, 0
   else
-    coef = sqrt(1 - lam)
+    rest = 1 - lam
+    coef = sqrt(rest)
     if large == sweep then coef = -coef end
   end
   local cxp, cyp = coef * (rx * (v / h)), coef * -(ry * (u / h))
   local cx = 2 * ((cp * (cxp / 2) - sp * (cyp / 2)) + (x1 / 2 + x2 / 2) / 2)
   local cy = 2 * ((sp * (cxp / 2) + cp * (cyp / 2)) + (y1 / 2 + y2 / 2) / 2)
   if not (finite(cx) and finite(cy)) then return nil, "overflow" end
+  -- the ends U = A + coef n, V = -A + coef n (A = (u, v), n its unit
+  -- normal): U x V = 2 coef h and U . V = 1 - 2 h^2, which do not cancel
   local ux, uy = u - coef * (v / h), v + coef * (u / h)
-  local vx, vy = -u - coef * (v / h), -v + coef * (u / h)
   local t1 = atan2(uy, ux)
-  local dt = atan2(ux * vy - uy * vx, ux * vx + uy * vy)
+  local dt = atan2(2 * coef * h, rest - h * h)
   if not sweep and dt > 0 then dt = dt - 2 * PI
   elseif sweep and dt < 0 then dt = dt + 2 * PI end
   return {cx, cy, rx, ry, phi, t1, dt}
 end
 
+-- The control point of a piece of angle 2h about the unit-frame angle m
+-- from its ends: the chord's midpoint plus M (cos m, sin m) sin h tan h
+-- (M the ellipse's linear part), not the centre's image of (cos m, sin m) /
+-- cos h: a flat arc of a large ellipse has its centre ~R away, and its
+-- rounding would move the control point far more than the arc's sag.
+local function control_point(e, m, h, p0x, p0y, p2x, p2y)
+  local cp, sp, sh = cos(e[5]), sin(e[5]), sin(h)
+  local f = sh * (sh / cos(h))
+  local X, Y = e[3] * (cos(m) * f), e[4] * (sin(m) * f)
+  local x = (p0x / 2 + p2x / 2) + (X * cp - Y * sp)
+  local y = (p0y / 2 + p2y / 2) + (X * sp + Y * cp)
+  if finite(x) and finite(y) then return x, y end
+  return nil
+end
+
 -- The arc's conics {x0, y0, x1, y1, x2, y2, w} (at most 4, of at most 90
 -- degrees: w = cos h for a piece of angle 2h, Floater's eq. 1), the first
--- starting and the last ending at the arc's own end points; or "none",
--- "line", or nil, "overflow".
+-- starting and the last ending at the arc's own end points, each control
+-- point from its piece's ends; or "none", "line", or nil, "overflow".
 local function arc_conics(x1, y1, rx, ry, phi_deg, large, sweep, x2, y2)
   local e, why = arc_center(x1, y1, rx, ry, phi_deg, large, sweep, x2, y2)
   if type(e) ~= "table" then return e, why end
@@ -102,16 +119,15 @@ local function arc_conics(x1, y1, rx, ry, phi_deg, large, sweep, x2, y2)
   for k = 0, n - 1 do
     local a = theta + dtheta * k / n
     local b = k + 1 == n and theta + dtheta or theta + dtheta * (k + 1) / n
-    local h = (b - a) / 2
-    local m, w = a + h, cos(h)
-    local p0x, p0y = ellipse_map(e, cos(a), sin(a))
-    local p1x, p1y = ellipse_map(e, cos(m) / w, sin(m) / w)
-    local p2x, p2y = ellipse_map(e, cos(b), sin(b))
-    if not (p0x and p1x and p2x) then return nil, "overflow" end
-    out[k + 1] = {p0x, p0y, p1x, p1y, p2x, p2y, w}
+    local h = dtheta / (2 * n)     -- not (b - a) / 2: that keeps eps pi of it
+    local p0x, p0y, p2x, p2y
+    if k == 0 then p0x, p0y = x1, y1 else p0x, p0y = ellipse_map(e, cos(a), sin(a)) end
+    if k + 1 == n then p2x, p2y = x2, y2 else p2x, p2y = ellipse_map(e, cos(b), sin(b)) end
+    if not (p0x and p2x) then return nil, "overflow" end
+    local p1x, p1y = control_point(e, a + h, h, p0x, p0y, p2x, p2y)
+    if not p1x then return nil, "overflow" end
+    out[k + 1] = {p0x, p0y, p1x, p1y, p2x, p2y, cos(h)}
   end
-  out[1][1], out[1][2] = x1, y1
-  out[n][5], out[n][6] = x2, y2
   return out
 end
 

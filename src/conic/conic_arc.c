@@ -36,22 +36,30 @@ static int ellipse_map(const double e[5], double X, double Y, double *x,
   return isfinite(*x) && isfinite(*y) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
 }
 
-/* The arc of the ellipse centre (cx, cy), semi-axes rx, ry, rotated by phi
-** (radians), from parametric angle theta to theta + dtheta (radians,
-** |dtheta| <= 2 pi), in n equal pieces of at most 90 degrees.  Each piece
-** of angle 2h is the image of a circular arc: w = cos h, and p1 the image
-** of the tangents' intersection (cos m, sin m) / cos h.  Writes n conics
-** of 7 numbers (p0, p1, p2, w) into out[28]; returns n (0 for dtheta = 0)
-** or an error code (EOVERFLOW: a control point beyond DBL_MAX). */
-int arclen_ellipse_conics(double cx, double cy, double rx, double ry,
-                          double phi, double theta, double dtheta,
-                          double out[28]) {
-  double e[5];
+/* The control point of a piece of angle 2h about the unit-frame angle m
+** whose ends p0 and p2 are given: the image of the tangents' intersection
+** (cos m, sin m) / cos h is the chord's midpoint (cos m, sin m) cos h plus
+** (cos m, sin m) sin h tan h, so p1 = (p0 + p2)/2 + M (cos m, sin m) sin h
+** tan h with M the ellipse's linear part.  Written from the ends, not from
+** the centre: a flat arc of a large ellipse has its centre ~R away, whose
+** rounding (R eps) would move p1 far more than the arc's own sag; here
+** the offset is of the sag's size and rounds with it. */
+static int control_point(const double e[5], double m, double h,
+                         const double *o, double *x, double *y) {
+  double cp = cos(e[4]), sp = sin(e[4]), sh = sin(h), f = sh * (sh / cos(h));
+  double X = e[2] * (cos(m) * f), Y = e[3] * (sin(m) * f);
+  *x = (o[0] / 2 + o[4] / 2) + (X * cp - Y * sp);
+  *y = (o[1] / 2 + o[5] / 2) + (X * sp + Y * cp);
+  return isfinite(*x) && isfinite(*y) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
+}
+
+/* The pieces of arclen_ellipse_conics, the first starting at ends[0..1]
+** and the last ending at ends[2..3] where ends is given (SVG's own end
+** points), else at the ellipse's points; each control point from its
+** piece's ends (control_point). */
+static int ellipse_pieces(const double e[5], double theta, double dtheta,
+                          const double *ends, double out[28]) {
   int n, k;
-  if (!isfinite(cx) || !isfinite(cy) || !isfinite(rx) || !isfinite(ry) ||
-      !isfinite(phi) || !isfinite(theta) || !isfinite(dtheta))
-    return ARCLEN_EINVAL;
-  if (!(rx > 0) || !(ry > 0)) return ARCLEN_EDOMAIN;
   /* a few ulps of slack so that a full turn computed as 2 pi + rounding
   ** is still four quarters */
   if (fabs(dtheta) > 2 * ARCLEN_PI * (1 + 8 * DBL_EPSILON)) return ARCLEN_ERANGE;
@@ -59,21 +67,44 @@ int arclen_ellipse_conics(double cx, double cy, double rx, double ry,
   n = (int)ceil(fabs(dtheta) / (ARCLEN_PI / 2) * (1 - 8 * DBL_EPSILON));
   if (n < 1) n = 1;
   if (n > 4) n = 4;
-  e[0] = cx; e[1] = cy; e[2] = rx; e[3] = ry; e[4] = phi;
   for (k = 0; k < n; k++) {
     /* neighbours compute their shared end from the same angle, so the
     ** pieces join exactly */
     double a = theta + dtheta * k / n;
     double b = k + 1 == n ? theta + dtheta : theta + dtheta * (k + 1) / n;
-    double h = (b - a) / 2, m = a + h;
-    double w = cos(h), *o = out + 7 * k;
-    if (ellipse_map(e, cos(a), sin(a), &o[0], &o[1]) != ARCLEN_OK ||
-        ellipse_map(e, cos(m) / w, sin(m) / w, &o[2], &o[3]) != ARCLEN_OK ||
-        ellipse_map(e, cos(b), sin(b), &o[4], &o[5]) != ARCLEN_OK)
+    /* the half angle from dtheta, not (b - a)/2: b - a near theta ~ pi
+    ** keeps only eps pi of it, 4e-13 of a piece of 2e-3 */
+    double h = dtheta / (2 * n), *o = out + 7 * k;
+    if (ends && k == 0) { o[0] = ends[0]; o[1] = ends[1]; }
+    else if (ellipse_map(e, cos(a), sin(a), &o[0], &o[1]) != ARCLEN_OK)
       return ARCLEN_EOVERFLOW;   /* a point beyond DBL_MAX */
-    o[6] = w;
+    if (ends && k + 1 == n) { o[4] = ends[2]; o[5] = ends[3]; }
+    else if (ellipse_map(e, cos(b), sin(b), &o[4], &o[5]) != ARCLEN_OK)
+      return ARCLEN_EOVERFLOW;
+    if (control_point(e, a + h, h, o, &o[2], &o[3]) != ARCLEN_OK)
+      return ARCLEN_EOVERFLOW;
+    o[6] = cos(h);
   }
   return n;
+}
+
+/* The arc of the ellipse centre (cx, cy), semi-axes rx, ry, rotated by phi
+** (radians), from parametric angle theta to theta + dtheta (radians,
+** |dtheta| <= 2 pi), in n equal pieces of at most 90 degrees.  Each piece
+** of angle 2h is the image of a circular arc: w = cos h, and p1 the image
+** of the tangents' intersection (control_point).  Writes n conics of 7
+** numbers (p0, p1, p2, w) into out[28]; returns n (0 for dtheta = 0) or an
+** error code (EOVERFLOW: a control point beyond DBL_MAX). */
+int arclen_ellipse_conics(double cx, double cy, double rx, double ry,
+                          double phi, double theta, double dtheta,
+                          double out[28]) {
+  double e[5];
+  if (!isfinite(cx) || !isfinite(cy) || !isfinite(rx) || !isfinite(ry) ||
+      !isfinite(phi) || !isfinite(theta) || !isfinite(dtheta))
+    return ARCLEN_EINVAL;
+  if (!(rx > 0) || !(ry > 0)) return ARCLEN_EDOMAIN;
+  e[0] = cx; e[1] = cy; e[2] = rx; e[3] = ry; e[4] = phi;
+  return ellipse_pieces(e, theta, dtheta, NULL, out);
 }
 
 /* The angle from u to v, in (-pi, pi]. */
@@ -91,8 +122,8 @@ static double vec_angle(double ux, double uy, double vx, double vy) {
 int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
                           double phi_deg, int large, int sweep, double x2,
                           double y2, double c[7]) {
-  double phi, cp, sp, dx, dy, x1p, y1p, lam, coef, cxp, cyp, ux, uy, vx, vy;
-  double u, v, h;
+  double phi, cp, sp, dx, dy, x1p, y1p, lam, coef, cxp, cyp, ux, uy;
+  double u, v, h, rest;
   double t1, dt;
   if (!isfinite(x1) || !isfinite(y1) || !isfinite(x2) || !isfinite(y2) ||
       !isfinite(rx) || !isfinite(ry) || !isfinite(phi_deg))
@@ -117,12 +148,13 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
     /* a radius ~1e-320 scaled up to reach the endpoints: beyond DBL_MAX */
     if (!isfinite(rx) || !isfinite(ry)) return ARCLEN_EOVERFLOW;
     u /= h; v /= h; h = 1;   /* the endpoints on the scaled ellipse */
-    coef = 0;
+    coef = rest = 0;
   } else {
     /* F.6.5.2's radicand, divided through by rx^2 ry^2: (1 - Lambda)/Lambda;
     ** its root times (rx y1'/ry, -ry x1'/rx) is sqrt(1 - Lambda) (rx v/h,
     ** -ry u/h) */
-    coef = sqrt(1 - lam);
+    rest = 1 - lam;
+    coef = sqrt(rest);
     if (large == sweep) coef = -coef;
   }
   cxp = coef * (rx * (v / h));
@@ -131,11 +163,15 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
   c[0] = 2 * ((cp * (cxp / 2) - sp * (cyp / 2)) + (x1 / 2 + x2 / 2) / 2);
   c[1] = 2 * ((sp * (cxp / 2) + cp * (cyp / 2)) + (y1 / 2 + y2 / 2) / 2);
   if (!isfinite(c[0]) || !isfinite(c[1])) return ARCLEN_EOVERFLOW;
-  /* F.6.5.5-6 with cx'/rx = coef v/h, cy'/ry = -coef u/h (no overflow) */
+  /* F.6.5.5-6 with cx'/rx = coef v/h, cy'/ry = -coef u/h (no overflow):
+  ** the unit-frame ends are U = A + coef n and V = -A + coef n, A = (u, v)
+  ** of length h, n the unit normal (-v, u)/h, so that U x V = 2 coef h and
+  ** U . V = coef^2 - h^2 = 1 - 2 h^2.  Those, not the components' products,
+  ** which cancel to a relative error of eps/h for a short arc (a flat arc,
+  ** or a turn at the tip of a thin ellipse: 1e-13 of the length there). */
   ux = u - coef * (v / h); uy = v + coef * (u / h);
-  vx = -u - coef * (v / h); vy = -v + coef * (u / h);
   t1 = vec_angle(1, 0, ux, uy);
-  dt = vec_angle(ux, uy, vx, vy);
+  dt = atan2(2 * coef * h, rest - h * h);
   if (!sweep && dt > 0) dt -= 2 * ARCLEN_PI;
   else if (sweep && dt < 0) dt += 2 * ARCLEN_PI;
   c[2] = rx; c[3] = ry; c[4] = phi; c[5] = t1; c[6] = dt;
@@ -151,15 +187,14 @@ int arclen_svg_arc_center(double x1, double y1, double rx, double ry,
 int arclen_svg_arc_conics(double x1, double y1, double rx, double ry,
                           double phi_deg, int large, int sweep, double x2,
                           double y2, double c[28], int *n) {
-  double e[7];
+  double e[7], ends[4];
   int kind = arclen_svg_arc_center(x1, y1, rx, ry, phi_deg, large, sweep, x2,
                                    y2, e), k;
   *n = 0;
   if (kind != ARCLEN_SVGARC_ARC) return kind;
-  k = arclen_ellipse_conics(e[0], e[1], e[2], e[3], e[4], e[5], e[6], c);
+  ends[0] = x1; ends[1] = y1; ends[2] = x2; ends[3] = y2;
+  k = ellipse_pieces(e, e[5], e[6], ends, c);
   if (k <= 0) return k == 0 ? ARCLEN_EINVAL : k;
-  c[0] = x1; c[1] = y1;
-  c[7 * (k - 1) + 4] = x2; c[7 * (k - 1) + 5] = y2;
   *n = k;
   return ARCLEN_SVGARC_ARC;
 }

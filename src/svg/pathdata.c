@@ -369,8 +369,9 @@ static int exact_gap(double a, double b, double r) {
 
 /* The conics of an elliptical arc (SVG 1.1 F.6) from (x0, y0) to (x1,
 ** y1), a = rx ry rotation large sweep, pos the command's byte: at most
-** four of at most 90 degrees each, exact but for the rounding of the
-** centre form (arclen_svg_arc_conics).  An arc with no rotation and no
+** four of at most 90 degrees each, exact but for rounding: each control
+** point from its piece's ends, each weight from the sweep, so that an arc
+** of a far centre keeps its digits (arclen_svg_arc_conics).  An arc with no rotation and no
 ** large-arc flag whose ends are exactly rx and ry apart is a quarter of
 ** the axis-aligned ellipse (F.6.5: Lambda = 1/2, the centre a corner of
 ** the ends' box), and so is every such arc under ARCLEN_PD_ARCS_QUARTERS
