@@ -99,19 +99,26 @@ describe("arclen.svg: bad documents, each a clear error naming the file and plac
     assert.matches("^bad%.svg:1:" .. COL .. ": <path>: singular transform, not drawn$", doc.warnings[1])
   end)
 
-  it("an arc of path data beyond the doubles: as cubics its size, not a tolerance; as a conic exact", function()
+  it("an arc of path data near the doubles' end: measured as cubics and as a conic", function()
+    -- a quarter of the circle of radius 1e308: pi/2 1e308 (mpmath); as
+    -- cubics within tol L + 2 pi arc_tol r (it was an error: half the
+    -- chord's square overflowed)
     local text = H .. '<path d="M0 0 A1e308 1e308 0 0 1 1e308 1e308"/></svg>'
-    assert.matches("^bad%.svg:1:" .. COL .. ": <path>: d: elliptical arc: the arc's size is out of range",
-      err_of(text, nil, {arcs = "cubics"}))
-    local e, doc = err_of(text)
+    local want = 1.57079632679489661923132169164e308
+    local e, doc = err_of(text, nil, {arcs = "cubics"})
     assert.is_nil(e)
-    -- a quarter of the circle of radius 1e308: pi/2 1e308 (mpmath)
-    assert.is_true(math.abs(doc.total - 1.57079632679489661923132169164e308) <= 1e-12 * 1.6e308, doc.total)
+    assert.is_true(math.abs(doc.total - want) <= 1e-12 * want + 2 * math.pi * 1e-12 * 1e308, doc.total)
+    e, doc = err_of(text)
+    assert.is_nil(e)
+    assert.is_true(math.abs(doc.total - want) <= 1e-12 * want, doc.total)
+    -- a half circle of that radius has no length in doubles: the place
+    assert.matches("^bad%.svg:1:" .. COL .. ": <path>: the path's length overflows",
+      err_of(H .. '<path d="M-1e308 0 A1e308 1e308 0 0 1 1e308 0"/></svg>', nil, {arcs = "cubics"}))
   end)
 
   it("no internal words in the errors of the measuring (tol, coordinate n, bad argument)", function()
     for _, t in ipairs{'<path d="M0 0 L1e308 0 L-1e308 0"/>', '<circle r="1e308"/>',
-                       '<path d="M0 0 A1e308 1e308 0 0 1 1e308 1e308"/>'} do
+                       '<path d="M-1e308 0 A1e308 1e308 0 0 1 1e308 0"/>'} do
       local e = err_of(H .. t .. "</svg>", nil, {arcs = "cubics"})
       assert.is_string(e)
       assert.is_nil(e:find("tol must", 1, true), e)

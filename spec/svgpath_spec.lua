@@ -336,6 +336,28 @@ describe("svg path data: arcs = \"cubics\" gives today's cubics", function()
     end
   end)
 
+  it("keeps its tolerance at every scale of the arc and of the transform", function()
+    -- a semicircle of radius r (L = pi r) within tol L + 2 pi arc_tol r;
+    -- scale(1e-170) squared to 0 in the singular values (level 0, 1.4e-4
+    -- off), radii from 1.3e154 overflowed the chord's square (an error)
+    local tol = 1e-12
+    local cases = {
+      {"M1e170 0 A1e170 1e170 0 0 1 -1e170 0", {1e-170, 0, 0, 1e-170, 0, 0}, 1},
+      {"M1e-150 0 A1e-150 1e-150 0 0 1 -1e-150 0", {1e150, 0, 0, 1e150, 0, 0}, 1},
+      {"M1e154 0 A1e154 1e154 0 0 1 -1e154 0", nil, 1e154},
+      {"M1e300 0 A1e300 1e300 0 0 1 -1e300 0", nil, 1e300},
+      {"M1e307 0 A1e307 1e307 0 0 1 -1e307 0", {0.5, 0, 0, 0.5, 0, 0}, 5e306},
+    }
+    for _, c in ipairs(cases) do
+      local L = path.svg(c[1], {tol = tol, arcs = "cubics", transform = c[2]}):length()
+      local want = math.pi * c[3]
+      assert.is_true(math.abs(L - want) <= (tol + 2 * tol) * want, c[1])
+    end
+    -- a flat arc of a large circle: it failed as outside a function's domain
+    local L = path.svg("M0 0 A1e9 1e9 0 0 1 10 0", {tol = tol, arcs = "cubics"}):length()
+    assert.is_true(math.abs(L - 10) <= 1e-14 * 10, ("%.17g"):format(L))
+  end)
+
   local rows = H.tsv("svg_cubics.tsv")
   local worst = 0                    -- in ulps of the row's size (contracted builds)
   local function check_row(row, R)

@@ -6,7 +6,8 @@
 -- 2026-12-04, when an arc's control points came to be written from their
 -- pieces' ends and their half angles from the sweep (src/conic/conic_arc.c):
 -- 135 of the 382 rows moved, each number by at most 1.9 ulps of its path's
--- size; no other change.
+-- size.  The 14 "arc-huge" rows, an error until then (half the chord's
+-- square overflowed), are cubics since.
 --
 --   lua5.4 tools/ref_svg_cubics.lua > spec/data/svg_cubics.tsv
 -- with LUA_PATH='lua/?.lua;lua/?/init.lua;;' LUA_CPATH='build/5.4/?.so;;'.

@@ -328,28 +328,28 @@ static int quadratic(reader *r, double x0, double y0, double qx, double qy,
 
 /* ---- arcs ------------------------------------------------------------------ */
 
-/* The singular values of [[p r] [q s]], largest first. */
+/* The singular values of [[p r] [q s]], largest first (by hypot: a
+** scale(1e-170) squares to 0, and was taken for no scale at all). */
 static void singular(double p, double q, double r, double s, double *big,
                      double *small) {
   double e = (p + s) / 2, f = (p - s) / 2;
   double g = (q - r) / 2, h = (q + r) / 2;
-  double u = sqrt(e * e + g * g), v = sqrt(f * f + h * h);
+  double u = hypot(e, g), v = hypot(f, h);
   *big = u + v;
   *small = fabs(u - v);
 }
 
 /* The arc's size after T and T's largest singular value: the image of the
 ** ellipse is the ellipse of the 2x2 matrix A R(phi) diag(rx, ry), whose
-** semi-axes are that matrix's singular values; the chord maps by A. */
+** semi-axes are that matrix's singular values; the chord maps by A (hx,
+** hy: half of it, which cannot overflow). */
 static void image_scale(const double *T, double rx, double ry, double phi,
-                        double dx, double dy, double *size, double *smax) {
+                        double hx, double hy, double *size, double *smax) {
   double t = phi * RADIANS_PER_DEGREE, c = cos(t), s = sin(t);
-  double A = T[0], B = T[1], C = T[2], D = T[3], s1, cx, cy, half, unused;
+  double A = T[0], B = T[1], C = T[2], D = T[3], s1, half, unused;
   singular(rx * (A * c + C * s), rx * (B * c + D * s),
            ry * (-A * s + C * c), ry * (-B * s + D * c), &s1, &unused);
-  cx = A * dx + C * dy;
-  cy = B * dx + D * dy;
-  half = 0.5 * sqrt(cx * cx + cy * cy);
+  half = hypot(A * hx + C * hy, B * hx + D * hy);
   *size = s1 < half ? half : s1;
   singular(A, B, C, D, smax, &unused);
 }
@@ -428,7 +428,9 @@ static int arc_conics(reader *r, double x0, double y0, const double *a,
 static int arc(reader *r, double x0, double y0, const double *a, double x1,
                double y1, size_t pos) {
   double rx = fabs(a[0]), ry = fabs(a[1]), c[28], tol = 0, bound;
-  double hx = x1 - x0, hy = y1 - y0, half = 0.5 * sqrt(hx * hx + hy * hy);
+  /* half the chord by halves and hypot: its square overflows from 1.3e154
+  ** and the difference from 9e307 */
+  double half = hypot(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);
   double scale = rx;
   int have_tol, kind, n, k, level = 0;
   if (r->pd->arcs != ARCLEN_PD_ARCS_CUBICS)
@@ -437,7 +439,8 @@ static int arc(reader *r, double x0, double y0, const double *a, double x1,
   if (scale < half) scale = half;
   if (r->T != NULL && scale > 0) {
     double size, smax;
-    image_scale(r->T, rx, ry, a[2], x1 - x0, y1 - y0, &size, &smax);
+    image_scale(r->T, rx, ry, a[2], x1 / 2 - x0 / 2, y1 / 2 - y0 / 2, &size,
+                &smax);
     scale = smax > 0 ? size / smax : 0;
   }
   have_tol = scale > 0 && rx > 0 && ry > 0;
