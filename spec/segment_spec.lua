@@ -536,3 +536,41 @@ describe("segments of four kinds (issue 31)", function()
     end)
   end)
 end)
+
+describe("a conic's derivative and tangent at large weights", function()
+  -- (0,0) (1,1) (2,0) at t = 1/2: the numerator 2 (w/4 (1,1) + (2,0)/4 +
+  -- w/4 (1,-1)) = (w + 1, 0) over D^2 = (w + 1)^2 / 4: (4/(w + 1), 0).  D^2
+  -- overflowed from w ~ 1e154: 0, and p:tangent gave (0, -1)
+  local H = require("helpers")
+  local weights = {3, 1e100, 1e150}
+  if H.engine == "c" then    -- the Lua engine takes w below 2^510
+    for _, w in ipairs({1e160, 1e200, 1e300, 1.7e308}) do weights[#weights + 1] = w end
+  end
+  it("is 4/(w + 1) along x at t = 1/2", function()
+    for _, w in ipairs(weights) do
+      local dx, dy = arclen.segment_derivative("conic", {0, 0, 1, 1, 2, 0, w}, 0.5)
+      local want = 4 / (w + 1)
+      assert.is_true(math.abs(dx - want) <= 4 * 2 ^ -52 * want, ("w %g: %g"):format(w, dx))
+      assert.are.equal(0, dy)
+    end
+  end)
+  it("gives the path's tangents between the legs' directions, never 0 or NaN", function()
+    -- the curve turns from (1, 1)/sqrt 2 to (1, -1)/sqrt 2 within ~1/w of
+    -- t = 1/2, so a distance's t there (tol) may fall anywhere in the turn
+    local r = math.sqrt(0.5)
+    for _, w in ipairs(weights) do
+      local p = arclen.path({{"conic", 0, 0, 1, 1, 2, 0, w}})
+      local L = p:length()
+      for _, s in ipairs({0, 0.25 * L, 0.5 * L, 0.75 * L, L}) do
+        local tx, ty = p:tangent(s)
+        local what = ("w %g, s %g: %g %g"):format(w, s / L, tx, ty)
+        assert.is_true(math.abs(tx * tx + ty * ty - 1) <= 1e-15, what)
+        assert.is_true(tx >= r - 1e-15 and math.abs(ty) <= r + 1e-15, what)
+      end
+      local tx, ty = p:tangent(0)
+      assert.is_true(math.abs(tx - r) <= 1e-15 and math.abs(ty - r) <= 1e-15)
+      tx, ty = p:tangent(L)
+      assert.is_true(math.abs(tx - r) <= 1e-15 and math.abs(ty + r) <= 1e-15)
+    end
+  end)
+end)

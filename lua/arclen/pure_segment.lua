@@ -611,12 +611,14 @@ function M.derivative(kind, c, d, t)
     local s = 1 - t
     for j = 1, d do out[j] = 2 * (s * (c[d + j] - c[j]) + t * (c[2 * d + j] - c[d + j])) end
   else
+    -- as 2 (W (s^2 a + t^2 c) + t s k / D) / D, W = w / D: D^2 overflows
+    -- from w ~ 1e154, D never (the C core's form)
     local w, s = c[3 * d + 1], 1 - t
     local den = s * s + 2 * w * t * s + t * t
+    local W = w / den
     for j = 1, d do
       local p0, p1, p2 = c[j], c[d + j], c[2 * d + j]
-      out[j] = 2 * (w * s * s * (p1 - p0) + t * s * (p2 - p0) + w * t * t * (p2 - p1))
-               / (den * den)
+      out[j] = 2 * (W * (s * s * (p1 - p0) + t * t * (p2 - p1)) + t * s * (p2 - p0) / den) / den
     end
   end
   return out

@@ -100,12 +100,16 @@ void arclen_rquad_point(const double *p, int dim, double t, double *out) {
 ** cancel). */
 void arclen_rquad_derivative(const double *p, int dim, double t,
                              double *out) {
-  double w = p[3 * dim], s = 1 - t, D = s * s + 2 * w * t * s + t * t;
+  /* 2 (w s^2 a + t s k + w t^2 c)/D^2 as 2 (W (s^2 a + t^2 c) + t s k/D)/D
+  ** with W = w/D: D^2 overflows from w ~ 1e154 (the derivative was 0), D
+  ** itself never (2 w t s as 2 (w t s): 2 w does from w ~ 9e307) */
+  double w = p[3 * dim], s = 1 - t, D = s * s + 2 * (w * t * s) + t * t;
+  double W = w / D;
   int k;
   for (k = 0; k < dim; k++)
-    out[k] = 2 * (w * s * s * (p[dim + k] - p[k])
-                  + t * s * (p[2 * dim + k] - p[k])
-                  + w * t * t * (p[2 * dim + k] - p[dim + k])) / (D * D);
+    out[k] = 2 * (W * (s * s * (p[dim + k] - p[k])
+                       + t * t * (p[2 * dim + k] - p[dim + k]))
+                  + t * s * (p[2 * dim + k] - p[k]) / D) / D;
 }
 
 /* X(t) for the 1D conic (0, x1, x2; w). */

@@ -689,12 +689,46 @@ static double normalize(double *v, int dim) {
   return n;
 }
 
+/* A conic's unit tangent at t: the direction of the derivative's
+** numerator n(t) = w (1-t)^2 a + t (1-t) k + w t^2 c (a = P1 - P0, c = P2
+** - P1, k = P2 - P0; D(t)^2 > 0 only scales it), over w where w > 1 so
+** that no term overflows (D^2 did from w ~ 1e154: the tangent was 0, then
+** a direction the curve never has).  Where n vanishes, its derivative's
+** direction (negated at t = 1), then its second derivative's. */
+static void conic_direction(const double *seg, int dim, double t, double *v) {
+  double w = seg[3 * dim], s = 1 - t, f = w > 1 ? w : 1;
+  double wf = w / f, kf = 1 / f;                  /* w/f and 1/f: one is 1 */
+  int k;
+  for (k = 0; k < dim; k++) {
+    double a = seg[dim + k] - seg[k], c = seg[2 * dim + k] - seg[dim + k];
+    double kk = seg[2 * dim + k] - seg[k];
+    v[k] = wf * (s * s * a + t * t * c) + kf * (t * s) * kk;
+  }
+  if (normalize(v, dim) > 0) return;
+  for (k = 0; k < dim; k++) {
+    double a = seg[dim + k] - seg[k], c = seg[2 * dim + k] - seg[dim + k];
+    double kk = seg[2 * dim + k] - seg[k];
+    v[k] = 2 * wf * (t * c - s * a) + kf * (1 - 2 * t) * kk;
+    if (t == 1) v[k] = -v[k];
+  }
+  if (normalize(v, dim) > 0) return;
+  for (k = 0; k < dim; k++) {
+    double a = seg[dim + k] - seg[k], c = seg[2 * dim + k] - seg[dim + k];
+    v[k] = wf * (a + c) - kf * (seg[2 * dim + k] - seg[k]);
+  }
+  normalize(v, dim);
+}
+
 void arclen_segment_unit_tangent(int kind, int dim, const double *seg0,
                                  double t, double *v) {
   double seg[ARCLEN_SEG_MAXN];
   int k;
   if (kind == ARCLEN_SEG_CUBIC) { arclen_unit_tangent(seg0, dim, t, v); return; }
   scaled_copy(kind, dim, seg0, seg);     /* a direction: the scale is free */
+  if (kind == ARCLEN_SEG_CONIC) {
+    conic_direction(seg, dim, t, v);
+    return;
+  }
   arclen_segment_derivative(kind, dim, seg, t, v);
   if (normalize(v, dim) > 0 || kind == ARCLEN_SEG_LINE) return;
   if (kind == ARCLEN_SEG_QUAD) {
@@ -706,24 +740,6 @@ void arclen_segment_unit_tangent(int kind, int dim, const double *seg0,
     }
     normalize(v, dim);
     return;
-  }
-  {
-    /* the conic's numerator n(t) = w (1-t)^2 a + t (1-t) k + w t^2 c
-    ** vanishes: its derivative's direction (negated at t = 1), then its
-    ** second derivative's */
-    double w = seg[3 * dim], s = 1 - t;
-    for (k = 0; k < dim; k++) {
-      double a = seg[dim + k] - seg[k], c = seg[2 * dim + k] - seg[dim + k];
-      double kk = seg[2 * dim + k] - seg[k];
-      v[k] = -2 * w * s * a + (1 - 2 * t) * kk + 2 * w * t * c;
-      if (t == 1) v[k] = -v[k];
-    }
-    if (normalize(v, dim) > 0) return;
-    for (k = 0; k < dim; k++) {
-      double a = seg[dim + k] - seg[k], c = seg[2 * dim + k] - seg[dim + k];
-      v[k] = w * a - (seg[2 * dim + k] - seg[k]) + w * c;
-    }
-    normalize(v, dim);
   }
 }
 
