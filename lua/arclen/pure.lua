@@ -30,6 +30,8 @@ local NEEDS_C = "needs the C core (arclen.core), which is not loaded: in plain L
 -- scales by 1/w and takes every finite w.
 local PURE_WMAX = 2 ^ 510
 
+local OVERFLOW = "arithmetic overflow"   -- the C core's ARCLEN_EOVERFLOW
+
 local function argerror(n, fname, msg)
   error(format("bad argument #%d to '%s' (%s)", n, fname, msg), 0)
 end
@@ -664,6 +666,8 @@ function M.segment_length(kind, seg, opts)
     return len
   end
   local len, evals = seg_length(kind, c, d, rtol, t0, t1)
+  -- as the C core: a length beyond the doubles is no number
+  if not isfinite(len) then return nil, OVERFLOW end
   if want then return len, seg_info(evals) end
   return len
 end
@@ -680,8 +684,11 @@ function M.segment_time(kind, seg, s, opts)
   local rtol, t0, t1, want = segment_opts(opts, 4, fname)
   if t0 ~= 0 or t1 ~= 1 then argerror(4, fname, "t0 and t1 do not apply to time") end
   local L = seg_length(kind, c, d, rtol)
-  local t = 0
-  if s >= L then t = 1
+  -- as the C core: a line's or quadratic's time needs its length; a
+  -- conic's is searched on it scaled down (pure_segment.lua, M.times)
+  if kind ~= "cubic" and kind ~= "conic" and not isfinite(L) then return nil, OVERFLOW end
+  local t = 0.0
+  if s >= L then t = 1.0
   elseif s > 0 then t = seg_times(kind, c, d, L, {s}, rtol)[1] end
   if want then return t, seg_info(0) end
   return t

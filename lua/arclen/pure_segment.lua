@@ -660,6 +660,22 @@ local function conic_scaled(c, d)
   return out, f
 end
 
+-- A line or quadratic whose legs may overflow (points from 2^1000),
+-- scaled by a power of two as conic_scaled does (the C core halves them):
+-- its lengths are the returned segment's divided by the factor.
+local function big_scaled(kind, c, d)
+  local n, m = (kind == "line" and 2 or 3) * d, 0
+  for j = 1, n do
+    local v = abs(c[j])
+    if v > m then m = v end
+  end
+  if not (m >= 2 ^ 1000) then return c, 1 end
+  local f = 2 ^ -floor(log(m) / LN2)
+  local out = {}
+  for j = 1, n do out[j] = c[j] * f end
+  return out, f
+end
+
 -- The piece [t0, t1] (t0 < t1) of the conic c as a conic of its own legs
 -- a', c', k', formed directly from the legs a = P1 - P0, c = P2 - P1, k =
 -- P2 - P0 (conic_seg.c's piece_legs, which derives them): with the
@@ -722,9 +738,10 @@ end
 -- The length; the second result counts the speed evaluations.
 function M.length(kind, c, d, rtol)
   if rtol > CONIC_RTOL then rtol = CONIC_RTOL end
-  if kind == "line" then return line_length(c, d), 1 end
-  if kind == "quad" then return quad_length(quad_setup(c, d), 0, 1), 1 end
   local f
+  if kind == "line" or kind == "quad" then c, f = big_scaled(kind, c, d) end
+  if kind == "line" then return line_length(c, d) / f, 1 end
+  if kind == "quad" then return quad_length(quad_setup(c, d), 0, 1) / f, 1 end
   c, f = conic_scaled(c, d)
   local k = conic_setup(c, d)
   if k.quad then return quad_length(k.quad, 0, 1) / f, 1 end
@@ -736,9 +753,10 @@ end
 -- evaluations.
 function M.length_range(kind, c, d, rtol, t0, t1)
   if rtol > CONIC_RTOL then rtol = CONIC_RTOL end
-  if kind == "line" then return (t1 - t0) * line_length(c, d), 1 end
-  if kind == "quad" then return quad_length(quad_setup(c, d), t0, t1), 1 end
   local f
+  if kind == "line" or kind == "quad" then c, f = big_scaled(kind, c, d) end
+  if kind == "line" then return (t1 - t0) * line_length(c, d) / f, 1 end
+  if kind == "quad" then return quad_length(quad_setup(c, d), t0, t1) / f, 1 end
   c, f = conic_scaled(c, d)
   if c[3 * d + 1] == 1 then return quad_length(quad_setup(c, d), t0, t1) / f, 1 end
   local k = conic_setup(piece_legs(c, d, t0, t1), d)
@@ -760,13 +778,14 @@ function M.times(kind, c, d, L, s, rtol)
     return ts, #s
   end
   local len, speed, lo0, hi0, to_t
-  if kind == "conic" then                 -- in the scaled conic's units
+  do                                      -- in the scaled segment's units
     local f
-    c, f = conic_scaled(c, d)
+    if kind == "conic" then c, f = conic_scaled(c, d) else c, f = big_scaled(kind, c, d) end
     if f ~= 1 then
       local scaled = {}
       for q = 1, #s do scaled[q] = s[q] * f end
-      s, L = scaled, L * f
+      -- a length beyond the doubles (L = inf) is finite there
+      s, L = scaled, L < huge and L * f or M.length(kind, c, d, rtol)
     end
   end
   local goal_tol = 0.5 * rtol * L
