@@ -24,7 +24,7 @@ local arclen = require("arclen.engine")
 local svgpath = require("arclen.svgpath")
 local mplibpath = require("arclen.mplib")
 
-local floor, abs, sqrt, huge = math.floor, math.abs, math.sqrt, math.huge
+local floor, abs, sqrt, log, huge = math.floor, math.abs, math.sqrt, math.log, math.huge
 local numtext = require("arclen.numtext")
 local format = numtext.format     -- '.' as the decimal point in any locale
 
@@ -156,6 +156,7 @@ end
 local KIND_OF = {L = "line", Q = "quad", C = "cubic", R = "conic"}
 local LETTER = {line = "L", quad = "Q", cubic = "C", conic = "R"}
 local NPTS = {line = 2, quad = 3, cubic = 4, conic = 3}
+local WMAX = arclen.conic_wmax   -- the engine's largest conic weight (nil: any finite)
 local function count_of(kind, d) return NPTS[kind] * d + (kind == "conic" and 1 or 0) end
 
 -- The kind name of segment k.
@@ -323,6 +324,11 @@ local function read_segment(c, k, fname)
   end
   if kind == "conic" and not (flat[#flat] > 0) then
     argerror(1, fname, format("%s: the weight w must be > 0", what))
+  end
+  -- the Lua engine's limit (pure.lua), here rather than at the first query
+  if kind == "conic" and WMAX and not (flat[#flat] < WMAX) then
+    argerror(1, fname, format("%s: the weight w must be below 2^%d on the Lua engine", what,
+      floor(log(WMAX) / log(2) + 0.5)))
   end
   return kind, flat, #flat == n3 and 3 or 2, what
 end

@@ -29,6 +29,7 @@ local NEEDS_C = "needs the C core (arclen.core), which is not loaded: in plain L
 -- at a scale of 1/w), which leaves the double range at 2^512; the C core
 -- scales by 1/w and takes every finite w.
 local PURE_WMAX = 2 ^ 510
+M.conic_wmax = PURE_WMAX    -- arclen.path refuses such a conic when it is built
 
 local OVERFLOW = "arithmetic overflow"   -- the C core's ARCLEN_EOVERFLOW
 
