@@ -549,7 +549,7 @@ end
 local function usable(self, fname)
   local cum = self.cum
   -- measured by the default method: known, with a time, not MetaPost's
-  if cum and self.method == "gauss" then return cum[self.n] end
+  if cum and self.method == "gauss" and cum[self.n] < huge then return cum[self.n] end
   method_known(self.method)
   if self.n > 0 and not HAS_TIME[self.method] then
     error(format("bad argument #1 to '%s' (method '%s' has no time (inverse): "
@@ -561,6 +561,11 @@ local function usable(self, fname)
   end
   local L, err = total_length(self)
   if L == nil then error(format("'%s': %s", fname, err), 3) end
+  -- p:length() may be inf, but a distance along it has no double to be
+  -- (the walks would fail inside, under their own names)
+  if L == huge then
+    error(format("'%s': arithmetic overflow (the path's length is beyond the doubles)", fname), 3)
+  end
   return L
 end
 
