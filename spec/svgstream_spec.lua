@@ -250,6 +250,26 @@ describe("svg.each: the same elements as svg.read, as they complete #svgdoc", fu
     assert.matches("progress must be a function", select(2, pcall(svg.each, "x.svg", print, {progress = 1})))
   end)
 
+  it("a source function that returns no string: an error naming it and what it returned", function()
+    -- (a number was read as text, or failed inside the reader)
+    for _, case in ipairs({{42, "number"}, {{}, "table"}, {false, "boolean"}}) do
+      for _, first in ipairs({true, false}) do     -- the first chunk, or a later one
+        local calls = 0
+        local function src()
+          calls = calls + 1
+          if calls == 1 and not first then return H end
+          if calls <= 2 then return case[1] end
+        end
+        local seen = 0
+        local ok, e = pcall(svg.each, src, function() seen = seen + 1 end)
+        assert.is_false(ok)
+        assert.are.equal(("bad argument #1 to 'arclen.svg.each' (the source function returned a %s: "
+          .. "it must return strings, then nil at the end)"):format(case[2]), e)
+        assert.are.equal(0, seen)
+      end
+    end
+  end)
+
   it("progress: called after each chunk with the bytes, the file's size and the elements so far", function()
     local name = "spec/data/svg/real/vim-gvim.svg"
     local size = #helpers.read(name)

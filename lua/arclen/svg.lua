@@ -389,6 +389,18 @@ function M.each(src, fn, opts)
   if kind == "name" then return stream_file(o, src, fn) end
   local name = o.name or "<stream>"
   local next_chunk = kind == "file" and function() return src:read(CHUNK) end or src
+  if kind == "function" then
+    -- a chunk that is no string would be read as text (a number) or fail
+    -- deep in the reader under its names
+    next_chunk = function()
+      local chunk = src()
+      if chunk ~= nil and type(chunk) ~= "string" then
+        error(format("bad argument #1 to '%s' (the source function returned a %s: "
+          .. "it must return strings, then nil at the end)", fname, type(chunk)), 0)
+      end
+      return chunk
+    end
+  end
   return located_call(name, function()
     return stream(o, name, next_chunk, true, nil, fn, nil)
   end)
