@@ -218,6 +218,23 @@ describe("arclen CLI: results", function()
     assert.matches('^%[{"s":0,"time":0,"tx":1,"ty":0,"x":0,"y":0},', out)
   end)
 
+  it("--arcs applies to path data as to documents", function()
+    local d = "M0,0A1,1,0,0,1,2,0"
+    local out, err, status = run({"length", d})
+    assert.are.equal(0, status, err)
+    assert.are.equal(arclen.path.svg(d):length(), num(out))
+    out, err, status = run({"length", "--arcs", "cubics", d})
+    if arclen.engine == "c" then
+      assert.are.equal(0, status, err)
+      local cubics = arclen.path.svg(d, {arcs = "cubics"})
+      assert.are.equal(cubics:length(), num(out))
+      assert.are_not.equal(arclen.path.svg(d):length(), cubics:length())
+    else                             -- the Lua engine reads arcs as conics only
+      assert.are.equal(1, status)
+      assert.matches('^arclen: elliptical arc: as cubics %(arcs = "cubics"%), arcs need the C core', err)
+    end
+  end)
+
   it("fit: the length-versus-t fit's summary", function()
     local out, err, status = run({"fit", "--tol", "1e-6", "0", "0", "10", "0", "10", "10", "0", "0"})
     assert.are.equal(0, status, err)
@@ -282,6 +299,38 @@ describe("arclen CLI: errors (stderr, exit 2 for usage, 1 for failures)", functi
     {{"resample", "1", "M0 0 L1 1"}, 2, "n must be an integer in %[2,"},
     {{"fit", "0", "0", "1"}, 2, "a cubic needs 8"},
     {{"length", "M0 0 L1 1", "M2 2"}, 2, "expected one path"},
+    -- --arcs is checked whatever WHAT is
+    {{"length", "--arcs", "bogus", "M0,0A1,1,0,0,1,2,0"}, 2,
+      "^arclen: %-%-arcs: 'bogus' is neither conics nor cubics\n"},
+    {{"time", "--arcs", "bogus", "1", "0", "0", "1", "0", "2", "0", "3", "0"}, 2, "%-%-arcs: 'bogus'"},
+    -- a coordinate nan or inf as 1e400: the coordinate named
+    {{"length", "0", "0", "1", "1", "2", "nan", "3", "3"}, 2,
+      "^arclen: cubic 1: coordinate 6 must be a finite number\n"},
+    {{"length", "0", "0", "1", "1", "2", "-Inf", "3", "3"}, 2,
+      "^arclen: cubic 1: coordinate 6 must be a finite number\n"},
+    {{"length", "0", "0", "1", "1", "2", "1e400", "3", "3"}, 2,
+      "^arclen: cubic 1: coordinate 6 must be a finite number\n"},
+    {{"fit", "0", "0", "1", "1", "2", "x", "3", "3"}, 2, "^arclen: fit: 'x' is not a number\n"},
+    -- a distance that is no finite number: a usage error, however written
+    {{"time", "1e400", "M0 0 L1 0"}, 2,
+      "^arclen: time: the distance S must be a finite number, got '1e400'\n"},
+    {{"time", "inf", "M0 0 L1 0"}, 2, "^arclen: time: the distance S must be a finite number, got 'inf'\n"},
+    {{"point", "-1e400", "M0 0 L1 0"}, 2, "^arclen: point: the distance S must be a finite number"},
+    {{"point", "NaN", "M0 0 L1 0"}, 2, "^arclen: point: the distance S must be a finite number"},
+    -- --tol out of its range: a usage error naming --tol, whatever WHAT is
+    {{"length", "--tol", "1e-16", "M0 0 L1 0"}, 2,
+      "^arclen: %-%-tol must be in %[1e%-15, 0%.1%], got '1e%-16'\nTry"},
+    {{"length", "--tol", "0.5", "M0 0 L1 0"}, 2, "^arclen: %-%-tol must be in %[1e%-15, 0%.1%], got '0%.5'"},
+    {{"length", "--tol", "nan", "M0 0 L1 0"}, 2, "^arclen: %-%-tol must be in %[1e%-15, 0%.1%], got 'nan'"},
+    {{"length", "--tol", "1e-16", "0", "0", "1", "0", "2", "0", "3", "0"}, 2, "^arclen: %-%-tol must be in"},
+    {{"resample", "--step", "inf", "M0 0 L1 0"}, 2, "step must be a positive finite number"},
+    -- a length beyond the doubles: a failure, not a number inf
+    {{"length", "M-1e308 0 L1e308 0"}, 1,
+      "^arclen: length: the path's length overflows %(beyond the doubles%)\n$"},
+    {{"time", "1", "M-1e308 0 L1e308 0"}, 1,
+      "^arclen: 'time': arithmetic overflow %(the path's length is beyond the doubles%)\n$"},
+    {{"resample", "3", "M-1e308 0 L1e308 0"}, 1,
+      "^arclen: 'resample': arithmetic overflow %(the path's length is beyond the doubles%)\n$"},
   }
   for _, case in ipairs(cases) do
     -- #svgdoc: needs the document reader (tools/check-rock.sh runs the

@@ -64,8 +64,9 @@ options:
                   an error in path data: by default the rest is measured)
   --quiet         no progress line (length and stat show one on a terminal
                   when a document takes more than a second)
-  --arcs A        SVG documents: conics (default: segments as drawn, arcs exact)
-                  or cubics (cubics only, arcs within the tolerance)
+  --arcs A        SVG documents and path data: conics (default: segments as
+                  drawn, arcs exact) or cubics (cubics only, arcs within the
+                  tolerance)
   --json          print results as JSON
   -h, --help      this text
 
@@ -130,15 +131,43 @@ local function parse(argv)
   return opts, args
 end
 
--- --method and --tol as an options table (the library checks their range).
+-- A number argument: numtext's, and also nan, inf, infinity (either
+-- sign, any case), which it does not read: as 1e400 (inf), they are
+-- numbers that the checks of finite then refuse, each with its message.
+local NONFINITE = {nan = 0 / 0, inf = math.huge, infinity = math.huge}
+local function number_arg(a)
+  local v = tonumber(a)
+  if v ~= nil or type(a) ~= "string" then return v end
+  local sign, word = a:lower():match("^%s*([+-]?)(%a+)%s*$")
+  v = word and NONFINITE[word]
+  if v and sign == "-" then v = -v end
+  return v
+end
+
+local function isfinite(x) return x == x and x ~= math.huge and x ~= -math.huge end
+
+-- --method and --tol as an options table (the library checks the method;
+-- --tol out of its range is a usage error here, whatever WHAT is).
 local function method_opts(opts)
   local o = {}
   if opts.method then o.method = opts.method end
   if opts.tol then
-    o.tol = tonumber(opts.tol)
+    o.tol = number_arg(opts.tol)
     if o.tol == nil then fail("--tol: '" .. opts.tol .. "' is not a number", 2) end
+    local engine = require("arclen.engine")
+    if not (o.tol >= engine.tol_min and o.tol <= engine.tol_max) then
+      fail(format("--tol must be in [%g, %g], got '%s'", engine.tol_min, engine.tol_max,
+        opts.tol), 2)
+    end
   end
   return o
+end
+
+-- --arcs: conics or cubics, checked whatever the command and WHAT.
+local function check_arcs(opts)
+  if opts.arcs and opts.arcs ~= "conics" and opts.arcs ~= "cubics" then
+    fail(format("--arcs: '%s' is neither conics nor cubics", opts.arcs), 2)
+  end
 end
 
 -- The message of a Lua error without the "bad argument #n to 'f'" frame.
@@ -238,9 +267,7 @@ local function svg_opts(opts)
   end
   if opts.strict then o.strict = true end
   if opts.arcs then
-    if opts.arcs ~= "conics" and opts.arcs ~= "cubics" then
-      fail(format("--arcs: '%s' is neither conics nor cubics", opts.arcs), 2)
-    end
+    check_arcs(opts)
     o.arcs = opts.arcs
   end
   return o
@@ -372,7 +399,7 @@ local function targets(args, from, opts, what)
   local o = method_opts(opts)
   local nums, allnum = {}, true
   for i, a in ipairs(rest) do
-    nums[i] = tonumber(a)
+    nums[i] = number_arg(a)          -- nan, inf: a cubic's coordinates, refused as 1e400
     if nums[i] == nil then allnum = false end
   end
   if allnum then
@@ -397,6 +424,7 @@ local function targets(args, from, opts, what)
     f:close()
     text, source = "<", a       -- read by the document reader itself
   end
+  o.arcs = opts.arcs            -- path data's arcs, as a document's
   if text == nil then
     return {{label = "path", path = call(1, arclen.path.svg, a, o)}}
   end
@@ -420,8 +448,11 @@ local function one(list, what)
 end
 
 local function distance(args, i, what)
-  local s = tonumber(args[i] or "")
+  local s = number_arg(args[i] or "")
   if s == nil then fail(format("%s: the distance S must be a number, got '%s'", what, tostring(args[i])), 2) end
+  if not isfinite(s) then
+    fail(format("%s: the distance S must be a finite number, got '%s'", what, args[i]), 2)
+  end
   return s
 end
 
@@ -550,6 +581,7 @@ function commands.length(opts, args)
     local o = method_opts(opts)
     o.info = true
     local L, info = call(2, arclen.length, nums, o)
+    if L == math.huge then fail("length: the cubic's length overflows (beyond the doubles)") end
     if opts.json then
       print(json({length = L, evals = info.evals, err = info.err}))
     else
@@ -561,6 +593,8 @@ function commands.length(opts, args)
   for i, t in ipairs(list) do
     local L, err = t.path:length()
     if L == nil then fail(t.label .. ": " .. tostring(err)) end
+    -- inf is no length to print (a document's element fails so too)
+    if L == math.huge then fail("length: the path's length overflows (beyond the doubles)") end
     total = total + L
     rows[i] = {id = t.label, length = L, segments = t.path:segments()}
   end
@@ -667,16 +701,18 @@ end
 function commands.resample(opts, args)
   local spec, from
   if opts.step then
-    spec = {step = tonumber(opts.step)}
+    spec = {step = number_arg(opts.step)}
     if spec.step == nil then fail("--step: '" .. opts.step .. "' is not a number", 2) end
     from = 2
   else
-    spec = tonumber(args[2] or "")
+    spec = number_arg(args[2] or "")
     if spec == nil then fail("resample: the count N must be a number (or give --step H)", 2) end
     from = 3
   end
   local p = one(targets(args, from, opts, "resample"), "resample")
-  local pts = call(2, p.resample, p, spec)
+  -- N or H refused: a usage error; a path that cannot answer: a failure
+  local ok, pts = pcall(p.resample, p, spec)
+  if not ok then fail(message(pts), tostring(pts):find("bad argument", 1, true) and 2 or 1) end
   if opts.json then
     local out = {}
     for i, q in ipairs(pts) do
@@ -692,15 +728,16 @@ function commands.fit(opts, args)
   local arclen = require("arclen")
   local nums = {}
   for i = 2, #args do
-    nums[#nums + 1] = tonumber(args[i])
-    if nums[#nums] == nil then fail(format("fit: '%s' is not a number", args[i]), 2) end
+    local v = number_arg(args[i])
+    if v == nil then fail(format("fit: '%s' is not a number", args[i]), 2) end
+    nums[#nums + 1] = v
   end
   if #nums ~= 8 and #nums ~= 12 then
     fail(format("fit: a cubic needs 8 (2D) or 12 (3D) numbers, got %d", #nums), 2)
   end
   local o = method_opts(opts)
   if opts.n then
-    o.n = tonumber(opts.n)
+    o.n = number_arg(opts.n)
     if o.n == nil then fail("--n: '" .. opts.n .. "' is not a number", 2) end
   end
   local f = call(2, arclen.fit, nums, o)
@@ -731,6 +768,7 @@ end
 function cli.main(argv)
   local opts, args = parse(argv)
   if opts.help then return commands.help() end
+  check_arcs(opts)
   local name = args[1]
   if name == nil then
     io.stderr:write(USAGE)
