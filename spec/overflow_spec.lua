@@ -113,8 +113,8 @@ describe("segments whose length overflows", function()
 
   -- A conic's time at s is that of the conic scaled by 2^-1024 at s 2^-1024
   -- (a power of two: every rounding the same, in both engines), which
-  -- holds |length(0..t) - s| <= tol L; for tol 1e-15 the C core's cover
-  -- does not apply and it measures the length first.
+  -- holds |length(0..t) - s| <= tol L, at every tol (the C core searches
+  -- in the scaled conic's units, with or without its cover).
   local conics = {
     {-1e308, 0, 0, 1e308, 1e308, 0, 0.5},
     {-1e308, 0, 0, 0, 1e308, 0, 0.5},                                -- collinear

@@ -138,20 +138,6 @@ static int l_segment_time(lua_State *L) {
         "method '%s' has no time (inverse)", lo.method->name));
   code = arclen_segment_time(kind, dim, seg, s, lo.method, &lo.o, &t,
                              lo.info ? &info : NULL);
-  /* A conic whose length overflows still has a time at s, and the core
-  ** finds it only where its cover needs no total (tol >= 1e-13, not near
-  ** a circle): ask again with the points and s scaled by 2^-e (exact, the
-  ** time does not change), as the Lua engine does. */
-  if (code == ARCLEN_EOVERFLOW && kind == ARCLEN_SEG_CONIC) {
-    int i, e, n = 3 * dim;
-    double m = 0;
-    for (i = 0; i < n; i++)
-      if (fabs(seg[i]) > m) m = fabs(seg[i]);
-    frexp(m, &e);
-    for (i = 0; i < n; i++) seg[i] = ldexp(seg[i], -e);
-    code = arclen_segment_time(kind, dim, seg, ldexp(s, -e), lo.method,
-                               &lo.o, &t, lo.info ? &info : NULL);
-  }
   return arclenL_pushresult(L, code, t, 4, &lo, &info);
 }
 

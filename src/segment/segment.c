@@ -389,8 +389,8 @@ static int setup_ctx(int kind, int dim, const double *seg, double *scaled,
 }
 
 /* The time at s on the conic of c (scaled by 2^-e) whose length is
-** *total (NAN: unknown, measured by the search where it needs it and
-** stored), from the known point from = (t, len(0, t), its error bound) at
+** *total in c's units (NAN: unknown, measured by the search where it needs
+** it and stored), from the known point from = (t, len(0, t), its error bound) at
 ** or before it ({0, 0, 0}: afresh), which becomes the answer's.  A first
 ** search without the total guesses from TOTAL_NODES' rule of it
 ** (uncertified: the guess only) and takes its tol from conic_below's
@@ -411,7 +411,6 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double *total,
   }
   at[0] = from[0]; at[1] = from[1]; at[2] = from[2];
   if (e != 0) {
-    T = ldexp(T, -e);
     s = ldexp(s, -e);
     at[1] = ldexp(at[1], -e); at[2] = ldexp(at[2], -e);
   }
@@ -427,7 +426,7 @@ static int ctx_time(int kind, const seg_ctx *c, int e, double *total,
   rc = arclen_seg_invert(len_to, speed_at, conic_rule_error,
                          conic_rule_order, conic_below, c, &T, s, rtol, NAN,
                          guess, at, t, evals);
-  if (isnan(*total) && !isnan(T)) *total = e ? ldexp(T, e) : T;
+  if (isnan(*total) && !isnan(T)) *total = T;
   from[0] = at[0]; from[1] = e ? ldexp(at[1], e) : at[1];
   from[2] = e ? ldexp(at[2], e) : at[2];
   return rc;
@@ -535,12 +534,17 @@ static int plain_times(int kind, int dim, const double *seg, double total,
     return rc;
   /* a conic's total where the search needs it (ctx_time), but now a
   ** circle's (its closed form is cheap, and its guess, the angle's,
-  ** exact) and one scaled by 2^-e (points beyond 2^+-500: a length that
-  ** overflows is the caller's ARCLEN_EOVERFLOW, not a time) */
-  if (!(total > 0 && isfinite(total))) {
+  ** exact); in the units of c, which are 2^-e of the conic's where its
+  ** points lie beyond 2^+-500: a conic whose length overflows still has
+  ** its times, those of the conic scaled down, bit for bit (a line's
+  ** length overflows: ARCLEN_EOVERFLOW) */
+  if (total > 0 && isfinite(total)) {
+    if (e != 0) total = ldexp(total, -e);
+  } else {
     total = NAN;
-    if (kind == ARCLEN_SEG_LINE || e != 0 || near_circle(&c)) {
-      rc = plain_length(kind, dim, seg, 0, 1, &total, NULL);
+    if (kind == ARCLEN_SEG_LINE || near_circle(&c)) {
+      rc = plain_length(kind, dim, kind == ARCLEN_SEG_LINE ? seg : c.seg, 0,
+                        1, &total, NULL);
       if (rc != ARCLEN_OK) return rc;
     }
   }
