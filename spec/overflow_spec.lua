@@ -93,6 +93,10 @@ describe("segments whose length overflows", function()
   it("a part of one is measured when it is a double", function()
     assert.are.equal(5e307, arclen.segment_length("line", {-1e308, 0, 1e308, 0}, {t0 = 0.25, t1 = 0.5}))
     assert.are.equal(-5e307, arclen.segment_length("line", {-1e308, 0, 1e308, 0}, {t0 = 0.5, t1 = 0.25}))
+    -- half of P1 - P0 is (1.7e308, 1.7e308), whose norm is beyond the
+    -- doubles: a quarter of the diagonal 3.4e308 sqrt 2 is 1.2e308
+    local d = arclen.segment_length("line", {-1.7e308, -1.7e308, 1.7e308, 1.7e308}, {t0 = 0.25, t1 = 0.5})
+    assert.is_true(math.abs(d - 0.85e308 * math.sqrt(2)) <= 2 * 2 ^ -52 * d, d)
     -- 2e308 / 4: the middle quarter of a straight quadratic, t uniform
     local q = arclen.segment_length("quad", {-1e308, 0, 0, 0, 1e308, 0}, {t0 = 0.25, t1 = 0.5})
     assert.is_true(math.abs(q - 5e307) <= 1e-14 * 5e307, q)

@@ -27,10 +27,14 @@ static int difference(const double *p, int dim, double *d) {
 
 int arclen_line_length(const double *p, int dim, double t0, double t1,
                        double *len) {
-  double d[3];
-  int half = difference(p, dim, d);
-  double L = (t1 - t0) * arclen_seg_norm(d, dim);
-  if (half) L *= 2;
+  double d[3], L;
+  int k, half = difference(p, dim, d);
+  /* half of P1 - P0 may still have a norm beyond DBL_MAX (1.2e308 apart
+  ** in x and y): a quarter has not, and the product by (t1 - t0) may be a
+  ** double again */
+  for (k = 0; half && k < dim; k++) d[k] /= 2;
+  L = (t1 - t0) * arclen_seg_norm(d, dim);
+  if (half) L *= 4;
   *len = L;
   return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
 }
