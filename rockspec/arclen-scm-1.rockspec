@@ -73,6 +73,7 @@ build = {
       defines = { "_POSIX_C_SOURCE=200809L" },
       incdirs = { "src" },
     },
+    ["arclen.caller"] = "lua/arclen/caller.lua",
     ["arclen.cli"] = "lua/arclen/cli.lua",
     ["arclen.engine"] = "lua/arclen/engine.lua",
     ["arclen"] = "lua/arclen/init.lua",

@@ -93,3 +93,30 @@ describe("extreme but valid input stays finite", function()
     end
   end)
 end)
+
+describe("argument errors name the caller's file and line", function()
+  -- as luaL_argerror's: the user's call, not a line of lua/arclen/*.lua
+  -- (arclen.caller); each call below is not a tail call, so its frame stays
+  local function err(f)
+    local ok, e = pcall(f)
+    assert.is_false(ok)
+    return e
+  end
+  local here = "^[^:]*badinput_spec%.lua:%d+: "
+  it("from the path constructor, a method and the SVG reader", function()
+    local p = arclen.path({{"line", 0, 0, 1, 1}})
+    assert.matches(here .. "bad argument #1 to 'arclen.path'",
+      err(function() local q = arclen.path({{"conic", 0, 0, 1, 1, 2, 0, -1}}); return q end))
+    assert.matches(here .. "bad argument #1 to 'point'",
+      err(function() local x = p:point("x"); return x end))
+    assert.matches(here .. "bad argument #1 to 'resample'",
+      err(function() local r = p:resample(1.5); return r end))
+    assert.matches(here .. "bad argument #1 to 'arclen.path.svg'",
+      err(function() local q = arclen.path.svg("M0 0 X"); return q end))
+    local ok_svg, svg = pcall(require, "arclen.svg")
+    if ok_svg then
+      assert.matches(here .. "bad argument #2 to 'arclen.svg.parse' %(unknown option 'bogus'%)",
+        err(function() local d = svg.parse("<svg/>", {bogus = 1}); return d end))
+    end
+  end)
+end)

@@ -26,6 +26,7 @@ local mplibpath = require("arclen.mplib")
 
 local floor, abs, sqrt, log, huge = math.floor, math.abs, math.sqrt, math.log, math.huge
 local numtext = require("arclen.numtext")
+local caller = require("arclen.caller")
 local format = numtext.format     -- '.' as the decimal point in any locale
 
 local Path = {}
@@ -36,7 +37,7 @@ local MAX_POINTS = 1000000    -- resample and dash produce at most this many
 -- ---- errors in the style of luaL_argerror ---------------------------------
 
 local function argerror(n, fname, msg)
-  error(format("bad argument #%d to '%s' (%s)", n, fname, msg), 3)
+  error(format("bad argument #%d to '%s' (%s)", n, fname, msg), caller(3))
 end
 
 local function isfinite(x)
@@ -54,7 +55,7 @@ end
 local function check_self(self, fname)
   if getmetatable(self) ~= Path then
     error(format("calling '%s' on bad self (a path expected, got %s)", fname,
-                 type(self)), 3)
+                 type(self)), caller(3))
   end
 end
 
@@ -451,7 +452,7 @@ local function parse_with(fname, parse, ...)
   if ok then return res end
   if type(res) == "table" then
     local where = res.pos and format(" at position %d", res.pos) or ""
-    error(format("bad argument #1 to '%s' (%s%s)", fname, res.msg, where), 3)
+    error(format("bad argument #1 to '%s' (%s%s)", fname, res.msg, where), caller(3))
   end
   error(res, 0)
 end
@@ -553,18 +554,18 @@ local function usable(self, fname)
   method_known(self.method)
   if self.n > 0 and not HAS_TIME[self.method] then
     error(format("bad argument #1 to '%s' (method '%s' has no time (inverse): "
-      .. "distances need gauss or metapost)", fname, self.method), 3)
+      .. "distances need gauss or metapost)", fname, self.method), caller(3))
   end
   if self.n > 0 and is_metapost(self) and self.nsub > 1 then
     error(format("'%s': method 'metapost' measures paths without gaps "
-      .. "(this one has %d subpaths)", fname, self.nsub), 3)
+      .. "(this one has %d subpaths)", fname, self.nsub), caller(3))
   end
   local L, err = total_length(self)
-  if L == nil then error(format("'%s': %s", fname, err), 3) end
+  if L == nil then error(format("'%s': %s", fname, err), caller(3)) end
   -- p:length() may be inf, but a distance along it has no double to be
   -- (the walks would fail inside, under their own names)
   if L == huge then
-    error(format("'%s': arithmetic overflow (the path's length is beyond the doubles)", fname), 3)
+    error(format("'%s': arithmetic overflow (the path's length is beyond the doubles)", fname), caller(3))
   end
   return L
 end
@@ -1126,7 +1127,7 @@ function Path:dash(pattern, offset)
     if not mp then a, b = self.cum[self.first[j] - 1], self.cum[self.first[j + 1] - 1] end
     local span = b - a
     if span / P * #pat > 2 * MAX_POINTS then
-      error(format("'dash': more than %d dashes (pattern too fine)", MAX_POINTS), 2)
+      error(format("'dash': more than %d dashes (pattern too fine)", MAX_POINTS), caller(2))
     end
     -- where the pattern stands at the subpath's start: entry i, phase into it
     local phase = offset - floor(offset / P) * P
@@ -1233,7 +1234,7 @@ end
 -- cubics within tol (Hausdorff distance tol times its longer leg).
 function Path:svg()
   check_self(self, "svg")
-  if self.dim ~= 2 then error("'svg': SVG path data is 2D; this path is 3D", 2) end
+  if self.dim ~= 2 then error("'svg': SVG path data is 2D; this path is 3D", caller(2)) end
   local out = {}
   if self.n == 0 then return "M" .. num(self.x0) .. " " .. num(self.y0) end
   local isgap = {}

@@ -45,6 +45,7 @@ end
 local M = {}
 
 local numtext = require("arclen.numtext")
+local caller = require("arclen.caller")
 local format, shortest = numtext.format, numtext.shortest   -- '.' in any locale
 local find, sub, floor, huge = string.find, string.sub, math.floor, math.huge
 local abs, sqrt = math.abs, math.sqrt
@@ -71,9 +72,11 @@ local function fail(line, col, msg)
   error({line = line, col = col, msg = msg}, 0)
 end
 
--- level: the user's call (3: argerror's caller is the API function).
+-- level: where the user's call is without the debug library (3:
+-- argerror's caller is the API function); with it, the first frame
+-- outside arclen's Lua (arclen.caller).
 local function argerror(n, fname, msg, level)
-  error(format("bad argument #%d to '%s' (%s)", n, fname, msg), level or 3)
+  error(format("bad argument #%d to '%s' (%s)", n, fname, msg), caller(level or 3))
 end
 
 local function isfinite(x)
