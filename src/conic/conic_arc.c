@@ -103,6 +103,12 @@ int arclen_ellipse_conics(double cx, double cy, double rx, double ry,
       !isfinite(phi) || !isfinite(theta) || !isfinite(dtheta))
     return ARCLEN_EINVAL;
   if (!(rx > 0) || !(ry > 0)) return ARCLEN_EDOMAIN;
+  /* theta into [-pi, pi] (modulo the double 2 pi, which moves a start
+  ** |theta|/2 pi turns away by 2.4e-16 radians a turn): far out, theta +
+  ** dtheta k/n keeps only ulp(theta) of the sweep, and the pieces' ends
+  ** would not be their half angles apart (found by fuzz/fuzz_conic:
+  ** theta = -1e304 put both ends at one point) */
+  if (fabs(theta) > ARCLEN_PI) theta = remainder(theta, 2 * ARCLEN_PI);
   e[0] = cx; e[1] = cy; e[2] = rx; e[3] = ry; e[4] = phi;
   return ellipse_pieces(e, theta, dtheta, NULL, out);
 }
