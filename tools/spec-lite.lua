@@ -31,8 +31,11 @@ local checks = {
   same = function(e, a, msg)
     if not same(e, a) then fail(msg, "expected the same as " .. show(e) .. ", got " .. show(a)) end
   end,
-  matches = function(pat, s, msg)
-    if type(s) ~= "string" or not s:find(pat) then
+  -- luassert's (pattern, s, init, plain), or (pattern, s, message)
+  matches = function(pat, s, msg, plain)
+    local init = 1
+    if type(msg) == "number" then init, msg = msg, nil end
+    if type(s) ~= "string" or not s:find(pat, init, plain) then
       fail(msg, "expected a match of " .. show(pat) .. ", got " .. show(s))
     end
   end,
@@ -49,6 +52,9 @@ local checks = {
   end,
   is_string = function(v, msg)
     if type(v) ~= "string" then fail(msg, "expected a string, got " .. show(v)) end
+  end,
+  is_number = function(v, msg)
+    if type(v) ~= "number" then fail(msg, "expected a number, got " .. show(v)) end
   end,
   -- the message compared without a "file:line: " prefix, as luassert does
   has_error = function(f, want)
