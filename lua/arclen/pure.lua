@@ -22,8 +22,6 @@ local M = {engine = "lua", _VERSION = "arclen 1.0.0", tol_min = 1e-15, tol_max =
 local NEEDS_C = "needs the C core (arclen.core), which is not loaded: in plain Lua "
   .. "build it (make, or luarocks make); in LuaTeX run lualatex --shell-escape"
 
--- "bad argument #n to 'fname' (msg)", as luaL_argerror raises it from a C
--- function: without a position.
 -- The largest conic weight the Lua engine's set-up takes: its angle form
 -- squares w (pure_segment.lua, conic_setup: (1 - w)(1 + w) and |U x V|^2
 -- at a scale of 1/w), which leaves the double range at 2^512; the C core
@@ -33,6 +31,8 @@ M.conic_wmax = PURE_WMAX    -- arclen.path refuses such a conic when it is built
 
 local OVERFLOW = "arithmetic overflow"   -- the C core's ARCLEN_EOVERFLOW
 
+-- "bad argument #n to 'fname' (msg)", as luaL_argerror raises it from a C
+-- function: without a position.
 local function argerror(n, fname, msg)
   error(format("bad argument #%d to '%s' (%s)", n, fname, msg), 0)
 end

@@ -642,38 +642,34 @@ function M.fallback_direction(kind, c, d, t)
   return v
 end
 
--- A conic far from 1 in size, scaled by a power of two (exact: the
--- lengths scale with it) so that the squares of its speed neither
--- underflow nor overflow; returns the conic to measure and the factor
--- its lengths carry.  Ordinary sizes are left as they are.
-local function conic_scaled(c, d)
+-- The segment c scaled by a power of two (exact: the lengths scale with
+-- it) where the largest of its first n numbers (its coordinates) lies
+-- outside (lo, hi), the rest (a conic's weight) kept; returns the segment
+-- to measure and the factor its lengths carry.  Ordinary sizes are left as
+-- they are.
+local function pow2_scaled(c, n, lo, hi)
   local m = 0
-  for j = 1, 3 * d do
-    local v = abs(c[j])
-    if v > m then m = v end
-  end
-  if m == 0 or (m > 2 ^ -200 and m < 2 ^ 200) then return c, 1 end
-  local f = 2 ^ -floor(log(m) / LN2)
-  local out = {}
-  for j = 1, 3 * d do out[j] = c[j] * f end
-  out[3 * d + 1] = c[3 * d + 1]
-  return out, f
-end
-
--- A line or quadratic whose legs may overflow (points from 2^1000),
--- scaled by a power of two as conic_scaled does (the C core halves them):
--- its lengths are the returned segment's divided by the factor.
-local function big_scaled(kind, c, d)
-  local n, m = (kind == "line" and 2 or 3) * d, 0
   for j = 1, n do
     local v = abs(c[j])
     if v > m then m = v end
   end
-  if not (m >= 2 ^ 1000) then return c, 1 end
+  if m == 0 or (m > lo and m < hi) then return c, 1 end
   local f = 2 ^ -floor(log(m) / LN2)
   local out = {}
-  for j = 1, n do out[j] = c[j] * f end
+  for j = 1, #c do out[j] = j <= n and c[j] * f or c[j] end
   return out, f
+end
+
+-- A conic far from 1 in size, so that the squares of its speed neither
+-- underflow nor overflow.
+local function conic_scaled(c, d)
+  return pow2_scaled(c, 3 * d, 2 ^ -200, 2 ^ 200)
+end
+
+-- A line or quadratic whose legs may overflow (points from 2^1000; the C
+-- core halves them).
+local function big_scaled(kind, c, d)
+  return pow2_scaled(c, (kind == "line" and 2 or 3) * d, 0, 2 ^ 1000)
 end
 
 -- The piece [t0, t1] (t0 < t1) of the conic c as a conic of its own legs

@@ -430,9 +430,9 @@ static void eval_at(integrator *in, piece_search *p, double t,
 ** 2^-k, so the s values known err by less than 2 share more than the
 ** bracket's did.  A step longer than half the step before is replaced by
 ** bisection too (arclen_step_ok: a cusp-like 3D curve took 100 steps of
-** ~1e-4 and stopped a quarter of L short, fuzz_time).  The bracket is left holding the last
-** points evaluated, for the next distance.  refined: t is the refined
-** guess. */
+** ~1e-4 and stopped a quarter of L short, fuzz_time).  The bracket is
+** left holding the last points evaluated, for the next distance.
+** refined: t is the refined guess. */
 static double newton_search(integrator *in, piece_search *p, double t,
                             double goal, double tol, double share,
                             int refined) {

@@ -248,7 +248,10 @@ int arclen_seg_invert(arclen_seg_lenfn len, arclen_seg_speedfn speed,
   /* the certified start already answers (a distance within tol of the
   ** last one), or lies beyond s (unsorted input): start from 0 */
   if (bestf + besterr <= sc.tol) { *t = from[0]; return ARCLEN_OK; }
-  if (from[1] > s) { lo = 0; flo = -s; best = 0; bestf = s; bestlen = 0; besterr = 0; }
+  if (from[1] > s) {
+    lo = 0; flo = -s;
+    best = 0; bestf = s; bestlen = 0; besterr = 0;
+  }
   if (!sc.lazy && !(s < *total)) return at_end(&sc, from, t);
   x = guess > lo && guess < 1 ? guess : lo + (1 - lo) * (s - bestlen) / (*total - bestlen);
   if (!(x > lo && x < 1)) x = lo + (1 - lo) / 2;

@@ -389,9 +389,10 @@ static int setup_ctx(int kind, int dim, const double *seg, double *scaled,
 }
 
 /* The time at s on the conic of c (scaled by 2^-e) whose length is
-** *total in c's units (NAN: unknown, measured by the search where it needs
-** it and stored), from the known point from = (t, len(0, t), its error bound) at
-** or before it ({0, 0, 0}: afresh), which becomes the answer's.  A first
+** *total in c's units (NAN: unknown, measured by the search where it
+** needs it and stored), from the known point from = (t, len(0, t), its
+** error bound) at or before it ({0, 0, 0}: afresh), which becomes the
+** answer's.  A first
 ** search without the total guesses from TOTAL_NODES' rule of it
 ** (uncertified: the guess only) and takes its tol from conic_below's
 ** lower bounds (invert.c), so that the total's exact length (Carlson's
@@ -702,24 +703,21 @@ static double normalize(double *v, int dim) {
 static void conic_direction(const double *seg, int dim, double t, double *v) {
   double w = seg[3 * dim], s = 1 - t, f = w > 1 ? w : 1;
   double wf = w / f, kf = 1 / f;                  /* w/f and 1/f: one is 1 */
+  double a[3], c[3], kk[3];
   int k;
   for (k = 0; k < dim; k++) {
-    double a = seg[dim + k] - seg[k], c = seg[2 * dim + k] - seg[dim + k];
-    double kk = seg[2 * dim + k] - seg[k];
-    v[k] = wf * (s * s * a + t * t * c) + kf * (t * s) * kk;
+    a[k] = seg[dim + k] - seg[k];
+    c[k] = seg[2 * dim + k] - seg[dim + k];
+    kk[k] = seg[2 * dim + k] - seg[k];
+    v[k] = wf * (s * s * a[k] + t * t * c[k]) + kf * (t * s) * kk[k];
   }
   if (normalize(v, dim) > 0) return;
   for (k = 0; k < dim; k++) {
-    double a = seg[dim + k] - seg[k], c = seg[2 * dim + k] - seg[dim + k];
-    double kk = seg[2 * dim + k] - seg[k];
-    v[k] = 2 * wf * (t * c - s * a) + kf * (1 - 2 * t) * kk;
+    v[k] = 2 * wf * (t * c[k] - s * a[k]) + kf * (1 - 2 * t) * kk[k];
     if (t == 1) v[k] = -v[k];
   }
   if (normalize(v, dim) > 0) return;
-  for (k = 0; k < dim; k++) {
-    double a = seg[dim + k] - seg[k], c = seg[2 * dim + k] - seg[dim + k];
-    v[k] = wf * (a + c) - kf * (seg[2 * dim + k] - seg[k]);
-  }
+  for (k = 0; k < dim; k++) v[k] = wf * (a[k] + c[k]) - kf * kk[k];
   normalize(v, dim);
 }
 

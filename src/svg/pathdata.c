@@ -371,8 +371,9 @@ static int exact_gap(double a, double b, double r) {
 ** y1), a = rx ry rotation large sweep, pos the command's byte: at most
 ** four of at most 90 degrees each, exact but for rounding: each control
 ** point from its piece's ends, each weight from the sweep, so that an arc
-** of a far centre keeps its digits (arclen_svg_arc_conics).  An arc with no rotation and no
-** large-arc flag whose ends are exactly rx and ry apart is a quarter of
+** of a far centre keeps its digits (arclen_svg_arc_conics).  An arc with
+** no rotation and no large-arc flag whose ends are exactly rx and ry
+** apart is a quarter of
 ** the axis-aligned ellipse (F.6.5: Lambda = 1/2, the centre a corner of
 ** the ends' box), and so is every such arc under ARCLEN_PD_ARCS_QUARTERS
 ** (the basic shapes, whose ends are rounded): its centre and control
@@ -430,7 +431,7 @@ static int arc(reader *r, double x0, double y0, const double *a, double x1,
   double rx = fabs(a[0]), ry = fabs(a[1]), c[28], tol = 0, bound;
   /* half the chord by halves and hypot: its square overflows from 1.3e154
   ** and the difference from 9e307 */
-  double half = hypot(x1 / 2 - x0 / 2, y1 / 2 - y0 / 2);
+  double hx = x1 / 2 - x0 / 2, hy = y1 / 2 - y0 / 2, half = hypot(hx, hy);
   double scale = rx;
   int have_tol, kind, n, k, level = 0;
   if (r->pd->arcs != ARCLEN_PD_ARCS_CUBICS)
@@ -439,8 +440,7 @@ static int arc(reader *r, double x0, double y0, const double *a, double x1,
   if (scale < half) scale = half;
   if (r->T != NULL && scale > 0) {
     double size, smax;
-    image_scale(r->T, rx, ry, a[2], x1 / 2 - x0 / 2, y1 / 2 - y0 / 2, &size,
-                &smax);
+    image_scale(r->T, rx, ry, a[2], hx, hy, &size, &smax);
     scale = smax > 0 ? size / smax : 0;
   }
   have_tol = scale > 0 && rx > 0 && ry > 0;
