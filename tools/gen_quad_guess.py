@@ -1,99 +1,110 @@
 #!/usr/bin/python3
 """Write src/segment/quad_guess_table.c: the polynomials of quad_time.c's
-first guess of a quadratic's time (src/segment/quad_guess_table.h).
+inverse of a quadratic's length (src/segment/quad_guess_table.h).
 
 The parabola's length from the vertex, in the unit of its own variable U =
 v.b / |a x c|, is G(U)/2 with G(U) = U sqrt(1 + U^2) + asinh U (odd,
-increasing, G'(U) = 2 sqrt(1 + U^2)).  The guess needs G's inverse for y in
-[2^JMIN, 2^JMAX): on each octave [2^j, 2^(j+1)) a polynomial of degree DEG
-in r = m - 3/2, m = y 2^-j in [1, 2) (the mantissa, from the bits).  G^-1
-is analytic but for branch points at y = +-i pi/2 (G' = 0 at U = +-i), so
-the octave's Chebyshev interpolant converges geometrically (at worst like
-the square root's, 5.8^-n, on the high octaves).  The error that matters is
-against sqrt(1 + U^2) (the speed there, in the same unit: a time off by
-that fraction of |v|/|b| costs the certified step that power of five).
-And log on [1, 2) the same way, r = m - 3/2, degree LOG_DEG, for the
-approximate logarithms of the guess (x = m 2^e: e log 2 + p(r)).
+increasing, G'(U) = 2 sqrt(1 + U^2)).  quad_time.c needs G's inverse for y
+in [2^JMIN, 2^JMAX) to a few units of 2^-53 of U, since where the rest of
+its bound allows it answers from that inverse without measuring a length:
+each octave [2^j, 2^(j+1)) is cut into NSUB pieces by the mantissa m = y
+2^-j in [1, 2), and each piece has a polynomial of degree DEG in r = (m -
+centre) 2 NSUB in [-1, 1] (exact in doubles).  G^-1 is analytic but for
+branch points at y = +-i pi/2 (G' = 0 at U = +-i) and its square-root-like
+growth from y = 0, so a piece's Chebyshev interpolant converges like
+(the distance to the nearest of those over the half width)^-n.
 
 Each polynomial is the Chebyshev interpolant (mpmath's chebyfit) with its
-coefficients rounded to doubles, then checked in double arithmetic
-(Horner's, as quad_time.c evaluates it) against 30-digit values at 257
-points a piece; the worst errors go into the file's comment and must stay
-below LIMIT.  Run: /usr/bin/python3 tools/gen_quad_guess.py >
-src/segment/quad_guess_table.c   (about a minute)
+coefficients rounded to doubles.  The bound of G^-1's error, relative to U,
+is checked at 129 points a piece (EPS_TAB, quad_guess_table.h's
+ARCLEN_QG_EPS, in units of 2^-53):
+  - the rounded polynomial against 30-digit values, evaluated exactly;
+  - plus quad_time.c's evaluation (Estrin's order, with or without fused
+    products) rounded: c0 passes three sums, 3 u |c0|; a higher term at
+    most eight roundings (r's powers, its products and sums), 8 u |c_i r^i|.
+The double evaluation as C does it without contraction is checked too, a
+second opinion.  Run: /usr/bin/python3 tools/gen_quad_guess.py >
+src/segment/quad_guess_table.c   (half a minute)
 """
 import mpmath as mp
 
 mp.mp.dps = 30
-JMIN, JMAX, DEG = -6, 16, 5      # quad_guess_table.h: ARCLEN_QG_JMIN, ...
-LOG_DEG = 6                      # quad_guess_table.h: ARCLEN_QG_LOG_DEG
-LIMIT = 1e-5
+JMIN, JMAX, NSUB, DEG = -6, 16, 16, 7   # quad_guess_table.h: ARCLEN_QG_*
+EPS_TAB = 6                            # quad_guess_table.h: ARCLEN_QG_EPS
+U = mp.mpf(2) ** -53
 
 
-def G(U):
-    return U * mp.sqrt(1 + U * U) + mp.asinh(U)
+def G(x):
+    return x * mp.sqrt(1 + x * x) + mp.asinh(x)
 
 
 def ginv(y):
     y = mp.mpf(y)
     start = y / 2 if y < 2 else mp.sqrt(y - mp.mpf(1) / 2 - mp.log(4 * y) / 2)
-    return mp.findroot(lambda U: G(U) - y, start)
+    return mp.findroot(lambda x: G(x) - y, start)
 
 
 def fit(f, deg):
-    """The degree-deg interpolant of f on r in [-1/2, 1/2], coefficients
-    c0 .. c_deg (of r^0 .. r^deg) rounded to doubles."""
-    poly = mp.chebyfit(f, [-0.5, 0.5], deg + 1)     # highest power first
+    """The degree-deg interpolant of f on r in [-1, 1], coefficients c0 ..
+    c_deg (of r^0 .. r^deg) rounded to doubles."""
+    poly = mp.chebyfit(f, [-1, 1], deg + 1)           # highest power first
     return [float(c) for c in reversed(poly)]
 
 
-def horner(c, r):
-    """The polynomial in doubles, as C evaluates it without contraction."""
-    v = c[-1]
-    for x in reversed(c[:-1]):
-        v = v * r + x
-    return v
+def estrin(c, r):
+    """Degree 7 in doubles, in quad_time.c's order (no contraction)."""
+    r2 = r * r
+    r4 = r2 * r2
+    return (((c[0] + c[1] * r) + r2 * (c[2] + c[3] * r))
+            + r4 * ((c[4] + c[5] * r) + r2 * (c[6] + c[7] * r)))
 
 
-def check_octave(j, c):
-    worst = 0.0
-    for i in range(257):
-        m = 1 + i / 256.0 if i < 256 else 2 - 2.0 ** -52
-        r = m - 1.5
-        U = ginv(mp.ldexp(m, j))
-        err = abs(horner(c, r) - U) / mp.sqrt(1 + U * U)
-        worst = max(worst, float(err))
-    return worst
-
-
-def check_log(c):
-    worst = 0.0
-    for i in range(257):
-        m = 1 + i / 256.0 if i < 256 else 2 - 2.0 ** -52
-        worst = max(worst, float(abs(horner(c, m - 1.5) - mp.log(m))))
-    return worst
+def check_piece(j, centre, c):
+    """The bound (units of U, relative to U) and the double evaluation's
+    worst error at 129 points of the piece."""
+    bound = worst = mp.mpf(0)
+    for i in range(129):
+        r = -1 + i / 64.0
+        m = centre + r / (2 * NSUB)
+        if m >= 2:
+            m = 2 - 2.0 ** -52
+            r = (m - centre) * 2 * NSUB
+        x = ginv(mp.ldexp(m, j))
+        exact = sum(mp.mpf(ci) * mp.mpf(r) ** n for n, ci in enumerate(c))
+        rounding = 3 * abs(c[0]) + 8 * sum(abs(ci) * abs(r) ** n
+                                          for n, ci in enumerate(c) if n)
+        bound = max(bound, (abs(exact - x) + U * rounding) / (U * x))
+        worst = max(worst, abs(estrin(c, r) - x) / (U * x))
+    return bound, worst
 
 
 def main():
-    rows, worst = [], 0.0
+    assert DEG == 7
+    rows, bound, worst = [], 0, 0
     for j in range(JMIN, JMAX):
-        c = fit(lambda r, j=j: ginv(mp.ldexp(1.5 + r, j)), DEG)
-        worst = max(worst, check_octave(j, c))
-        rows.append(c)
-    lc = fit(lambda r: mp.log(1.5 + r), LOG_DEG)
-    lworst = check_log(lc)
-    assert worst < LIMIT and lworst < LIMIT, (worst, lworst)
+        row = []
+        for i in range(NSUB):
+            centre = 1 + (i + 0.5) / NSUB
+            c = fit(lambda r, j=j, cc=centre:
+                    ginv(mp.ldexp(cc + r / (2 * NSUB), j)), DEG)
+            b, w = check_piece(j, centre, c)
+            bound, worst = max(bound, b), max(worst, w)
+            row.append(c)
+        rows.append(row)
+    assert bound <= EPS_TAB, bound
     out = ['/* Generated by tools/gen_quad_guess.py -- do not edit.',
-           '** Worst errors at 257 points an octave: G^-1 %.2e of sqrt(1 + U^2),'
-           % worst,
-           '** log %.2e absolute. */' % lworst,
+           '** G^-1 at 129 points a piece: bound %.2f, double evaluation %.2f'
+           % (bound, worst),
+           '** units of 2^-53 of U (ARCLEN_QG_EPS %d). */' % EPS_TAB,
            '#include "segment/quad_guess_table.h"', '',
-           'const double arclen_qg_log[ARCLEN_QG_LOG_DEG + 1] = {',
-           '  %s' % ', '.join(repr(v) for v in lc), '};', '',
-           'const double arclen_qg_ginv[ARCLEN_QG_JMAX - ARCLEN_QG_JMIN]'
-           '[ARCLEN_QG_DEG + 1] = {']
-    for j, c in zip(range(JMIN, JMAX), rows):
-        out.append('  {%s}, /* 2^%d */' % (', '.join(repr(v) for v in c), j))
+           'ARCLEN_QG_ALIGNED const double',
+           '  arclen_qg_ginv[ARCLEN_QG_JMAX - ARCLEN_QG_JMIN][ARCLEN_QG_NSUB]',
+           '                [ARCLEN_QG_DEG + 1] = {']
+    for j, row in zip(range(JMIN, JMAX), rows):
+        out.append('  { /* 2^%d */' % j)
+        for c in row:
+            out.append('    {%s},' % ', '.join(repr(v) for v in c))
+        out.append('  },')
     out.append('};')
     print('\n'.join(out))
 

@@ -1,23 +1,32 @@
 /*
-** quad_guess_table.h -- polynomials for quad_time.c's first guess, which
-** inverts the parabola's length in its own variable: G(U) = U sqrt(1 + U^2)
-** + asinh U, and log for the guess's asinh (tools/gen_quad_guess.py fits
-** and checks them; the guess needs ~1e-5, the certified step decides).
+** quad_guess_table.h -- polynomials for quad_time.c, which inverts the
+** parabola's length in its own variable: G(U) = U sqrt(1 + U^2) + asinh U
+** (tools/gen_quad_guess.py fits and checks them).
 */
 #ifndef ARCLEN_QUAD_GUESS_TABLE_H
 #define ARCLEN_QUAD_GUESS_TABLE_H
 
-/* G^-1(y) for y in [2^j, 2^(j+1)), JMIN <= j < JMAX: row j - JMIN holds
-** c0 .. c_DEG of the polynomial in r = m - 3/2, m = y 2^-j (within 2e-6
-** of sqrt(1 + U^2)). */
+/* G^-1(y) for y in [2^j, 2^(j+1)), JMIN <= j < JMAX, the octave cut into
+** NSUB pieces by the mantissa m = y 2^-j: row [j - JMIN][i] holds c0 ..
+** c_DEG of the polynomial in r = (m - 1 - (i + 1/2)/NSUB) 2 NSUB, in [-1,
+** 1], evaluated in Estrin's order within EPS units of 2^-53 of G^-1(y)
+** (its coefficients' own rounding and the evaluation's included). */
 #define ARCLEN_QG_JMIN (-6)
 #define ARCLEN_QG_JMAX 16
-#define ARCLEN_QG_DEG 5
-extern const double
-  arclen_qg_ginv[ARCLEN_QG_JMAX - ARCLEN_QG_JMIN][ARCLEN_QG_DEG + 1];
-
-/* log m for m in [1, 2): c0 .. c_LOG_DEG in r = m - 3/2 (within 2e-6). */
-#define ARCLEN_QG_LOG_DEG 6
-extern const double arclen_qg_log[ARCLEN_QG_LOG_DEG + 1];
+#define ARCLEN_QG_NSUB_BITS 4                 /* NSUB = 2^NSUB_BITS pieces */
+#define ARCLEN_QG_NSUB (1 << ARCLEN_QG_NSUB_BITS)
+#define ARCLEN_QG_DEG 7
+#define ARCLEN_QG_EPS 6
+/* a row of eight doubles on one cache line where the compiler can say so */
+#if defined(__GNUC__)
+#define ARCLEN_QG_ALIGNED __attribute__((aligned(64)))
+#elif defined(_MSC_VER)
+#define ARCLEN_QG_ALIGNED __declspec(align(64))
+#else
+#define ARCLEN_QG_ALIGNED
+#endif
+extern ARCLEN_QG_ALIGNED const double
+  arclen_qg_ginv[ARCLEN_QG_JMAX - ARCLEN_QG_JMIN][ARCLEN_QG_NSUB]
+                [ARCLEN_QG_DEG + 1];
 
 #endif

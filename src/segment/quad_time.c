@@ -36,6 +36,16 @@
 ** only by a length noisier than the tolerance asked for */
 #define MAX_STEPS 100
 
+/* direct_bound out of line: the search's loop keeps its registers (inlined,
+** it slowed the measured path by a few ns) */
+#if defined(__GNUC__)
+#define NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define NOINLINE __declspec(noinline)
+#else
+#define NOINLINE
+#endif
+
 /* The unit roundoff, 2^-53. */
 #define U (DBL_EPSILON / 2)
 
@@ -194,75 +204,130 @@ void arclen_quad_time_setup(const double *p, int dim, arclen_quad_form *F) {
   F->Cs = fabs(F->c[0]) + fabs(F->c[1]) + (dim == 3 ? fabs(F->c[2]) : 0);
 }
 
-/* x = m 2^e with m in [1, 2), for a normal x > 0, from the bits. */
-static double mantissa(double x, int *e) {
-  uint64_t bits;
-  memcpy(&bits, &x, sizeof bits);
-  *e = (int)((bits >> 52) & 0x7ff) - 1023;
-  bits = (bits & ~((uint64_t)0x7ff << 52)) | ((uint64_t)1023 << 52);
-  memcpy(&x, &bits, sizeof x);
-  return x;
-}
-
-/* log x within 2e-6 for a normal x > 0: e log 2 + log m by the table's
-** polynomial (Estrin's order: a short chain; libm's log is a call). */
-static double rough_log(double x) {
-  const double *c = arclen_qg_log;
-  int e;
-  double r = mantissa(x, &e) - 1.5, r2 = r * r;
-  return e * 0.69314718055994530942
-         + ((c[0] + c[1] * r) + r2 * (c[2] + c[3] * r)
-            + r2 * r2 * (c[4] + c[5] * r + r2 * c[6]));
-}
-
 /* G^-1(y) for 0 <= y < 2^ARCLEN_QG_JMAX, G(U) = U sqrt(1 + U^2) + asinh U:
 ** below the table U = y/2 - y^3/48 (G = 2U + U^3/3 - U^5/20 ..., the next
-** term 13 y^5/3840 is below 1e-11 of U there), else the octave's
-** polynomial in its mantissa. */
+** term 13 y^5/3840 is below 1e-11 of U there), else the piece's polynomial
+** (quad_guess_table.h: within ARCLEN_QG_EPS units of U of G^-1(y)). */
 static double g_inverse(double y) {
   const double *c;
+  uint64_t bits, top;
+  double m, centre, r, r2;
   int e;
-  double r, r2;
   if (y < 1.0 / (1 << -ARCLEN_QG_JMIN)) return y / 2 * (1 - y * y / 24);
-  r = mantissa(y, &e) - 1.5;
+  /* from the bits, beside the arithmetic: the octave, the piece (the
+  ** mantissa's top bits), m in [1, 2) and the piece's centre */
+  memcpy(&bits, &y, sizeof bits);
+  e = (int)(bits >> 52) - 1023;
+  top = (bits >> (52 - ARCLEN_QG_NSUB_BITS)) & (ARCLEN_QG_NSUB - 1);
+  bits = (bits & (((uint64_t)1 << 52) - 1)) | ((uint64_t)1023 << 52);
+  memcpy(&m, &bits, sizeof m);
+  bits = (bits >> (52 - ARCLEN_QG_NSUB_BITS) << (52 - ARCLEN_QG_NSUB_BITS))
+         | ((uint64_t)1 << (51 - ARCLEN_QG_NSUB_BITS));
+  memcpy(&centre, &bits, sizeof centre);
+  r = (m - centre) * (2 * ARCLEN_QG_NSUB);                 /* both exact */
+  c = arclen_qg_ginv[e - ARCLEN_QG_JMIN][top];
   r2 = r * r;
-  c = arclen_qg_ginv[e - ARCLEN_QG_JMIN];
-  return (c[0] + c[1] * r) + r2 * (c[2] + c[3] * r)
-         + r2 * r2 * (c[4] + c[5] * r);
+  return ((c[0] + c[1] * r) + r2 * (c[2] + c[3] * r))
+         + r2 * r2 * ((c[4] + c[5] * r) + r2 * (c[6] + c[7] * r));
+}
+
+/* The bound of |s(t) - g| for first_guess's t from the table, where every
+** step from the legs a and c (exact: the curve) to t is a rounding or the
+** table's error, none a measured length.  The form's values against those
+** of the exact a, c (first order, units of U; 3D's dot products the worst):
+** u0 = a.b with b = c - a rounded, du0 = 4 |a||b| (5 S0 q); B = |b|^2,
+** 5 of itself (dB = 6 B); k = |a x c|, dk = 6 S0 Cs (step_from's);
+** Su0 = q S0 against |a||b| = sqrt(u0^2 + k^2) (Lagrange's identity), 7
+** (dR = 8 Su0); g B q against g |b|^3, 10.5.  So Y = H(u0) + g |b|^3,
+** summed as T1 + T3 + T2 (T1 = u0 Su0, T2 = k^2 w, T3 = g B q, two sums:
+** 2.1 of their sizes), is off by dY:
+**   T1: its product (1), dR and du0's share: 11.1 |T1| + du0 Su0;
+**   T2: w = log((|u0| + Su0) k/k^2) = asinh(|u0|/k) with the argument off
+**      by 5.1 U (five roundings) + (du0 + dR)/Su0 + 1.02 dk/k = 18.2 U +
+**      1.02 dk/k relative (dk <= k/64) and log within an ulp, k^2 itself
+**      (2k + dk) dk and its product (1): k^2 (18.4 U + 5.2 U |w|) + 1.03 k
+**      dk + (2k + dk) dk |w|;
+**   T3: 14.2 of itself.
+** u = k U with U = G^-1(y) within ARCLEN_QG_EPS, the product (1), and y =
+** Y/k^2 (three roundings: k^2 y within 3.1 U of Y): u is off from the
+** exact H^-1(Y) by (EPS + 1.01) U |u| + (dY + 3.1 U |Y|)/(2 min R) (H' =
+** 2R, R = sqrt(u^2 + k^2) = |b||v|) and from the true k's by dk k
+** asinh(|u|/k)/R <= dk min(1, 6.4 k/R) (dH/dk = 2k asinh(u/k) at fixed u;
+** |U| < 256 in the table, asinh < 6.4).  t = (u - u0)/B, d = u - u0
+** rounded, moves u0 + t B by 3.2 U |d|, and the true u0, B by du0 + t dB.
+** The true point is within D of the true goal's u, so s(t) within 2 max R
+** D/|b|^3, max R and min R within R +- (2D + dk) on the way, where D and
+** dk are below R/4096: max R/min R < 1 + 2^-9.  R from above without a
+** root, Ru = max(|u|, k) + min(|u|, k)/2 (at most 3/2 of max(|u|, k), so
+** 6.4 k/R <= 9.6 k/Ru), and M = 2 Ru D with no quotient: (1 + 2^-9) M/(B
+** q), 1/(B q) = q/B^2.  The margins the caller takes (2^-10) cover the
+** bound's own roundings.  Infinite where a check fails (the search then
+** measures). */
+static NOINLINE double direct_bound(const arclen_quad_form *F, double Y,
+                                    double w, double Su0, double gBq,
+                                    double u, double d, double t, double iB) {
+  double k = F->k, k2 = k * k, q = F->q, B = F->B, au0 = fabs(F->u0);
+  double du0 = 5 * U * F->S0 * q, dk = 6 * U * F->S0 * F->Cs;
+  double au = fabs(u), R2 = au * au + k2, aw = fabs(w), dY, M;
+  double Ru = au > k ? au + k / 2 : k + au / 2;             /* >= |b||v| */
+  dY = U * (11.1 * au0 * Su0 + 14.2 * gBq + k2 * (18.4 + 5.2 * aw))
+       + du0 * Su0 + 1.03 * k * dk + (2 * k + dk) * dk * aw;
+  M = 2 * Ru * (du0 + t * 6 * U * B + 3.2 * U * fabs(d)
+                + (ARCLEN_QG_EPS + 1.01) * U * au)
+      + (dY + 3.1 * U * fabs(Y)) * (1 + 1.0 / 512)
+      + 2 * dk * (Ru < 9.6 * k ? Ru : 9.6 * k);
+  if (!(64 * dk <= k && 4096 * 4096 * dk * dk <= R2 && 2048 * M <= R2))
+    return HUGE_VAL;
+  M *= (1 + 1.0 / 512) * q * (iB * iB);
+  /* and g below L, or the search decides (t = 1 at L): L >= s(t) + 2 (1 -
+  ** t) min |v| with s(t) >= g - M and |v| from below on [t, 1] (at least
+  ** R/|b| past the vertex, where it grows, and k/|b| anywhere) */
+  if (!((1 - t) * (u >= 0 ? (au > k ? au : k) * (1 - 1.0 / 1024) : k - dk)
+        * q * iB >= M))
+    return HUGE_VAL;
+  return M;
 }
 
 /* The first t for the goal g, without the total: in u = v.b = u0 + t B,
 ** with S = sqrt(u^2 + k^2) (= |b| |v|), s(t) = (H(u) - H(u0))/|b|^3 with
 ** H(u) = u S + k^2 asinh(u/k) (the parabola's length; H' = 2S), so the
 ** goal's u solves H(u) = Y = H(u0) + g |b|^3, that is G(U) = y = Y/k^2
-** for U = u/k.  The asinh and G^-1 are approximations (the table's); an
-** error d in Y moves u by d/(2S), and the log's 2e-6 enters Y times k^2 <=
-** S^2: u is off by about 1e-6 of S, that is t by 1e-6 of |v|/|b|, which
-** the fourth-order step nearly always certifies after one length.  For y
-** past the table U^2 = y - 1/2 - log(2U) - O(1/U^2) with log(2U) = log(4y)/2
-** - O(log y / y): u^2 = |Y| - k^2 (1/2 + log(4|y|)/2), within 1e-9; k = 0
-** (collinear legs) is the case u^2 = |Y| exactly.  b = 0 (uniform speed
-** 2|a|): g/(2|a|). */
-static double first_guess(const arclen_quad_form *F, double g) {
+** for U = u/k.  Where y is in the table's range, t comes with the bound of
+** its length's miss (direct_bound) in *bound, most often the answer
+** without a length where it may be within room (the tol, or its bound from
+** above); else *bound is infinite and t a guess for the search.
+** For y past the table U^2 = y - 1/2 - log(2U) - O(1/U^2) with log(2U) =
+** log(4y)/2 - O(log y / y): u^2 = |Y| - k^2 (1/2 + log(4|y|)/2), within
+** 1e-9; k = 0 (collinear legs) is the case u^2 = |Y| exactly.  Below the
+** table, its series (g_inverse).  b = 0 (uniform speed 2|a|): g/(2|a|). */
+static double first_guess(const arclen_quad_form *F, double g, double room,
+                          double *bound) {
   double u0 = F->u0, k = F->k, k2 = k * k, B = F->B, q = F->q;
-  double Su0 = q * F->S0, Y = u0 * Su0 + g * B * q, y = HUGE_VAL, u, w, iB;
+  double Su0 = q * F->S0, gBq = g * B * q, Y = u0 * Su0 + gBq, y = HUGE_VAL;
+  double u, w = 0, iB, ik2, t;
+  *bound = HUGE_VAL;
   if (B == 0) return g / (2 * F->S0);
   iB = 1 / B;                     /* waits on B only, not on the guess */
   if (k2 >= DBL_MIN) {  /* else k^2 asinh(u0/k) < 1e-305, left out: y huge */
-    w = rough_log(fabs(u0) + Su0) - rough_log(k);
+    ik2 = 1 / k2;         /* y = Y ik2: a product, ik2 waits on k only */
+    w = log((fabs(u0) + Su0) * k * ik2);     /* asinh(|u0|/k); 1/k = k/k^2 */
     Y += k2 * (u0 < 0 ? -w : w);
-    y = Y * (1 / k2);    /* a product: 1/k^2 waits on k only, not on Y */
+    y = Y * ik2;
   }
   if (fabs(y) < (double)(1L << ARCLEN_QG_JMAX)) {
     u = k * g_inverse(fabs(y));
     if (y < 0) u = -u;
-  } else {                    /* far from the vertex, or k^2 below DBL_MIN */
-    w = fabs(Y);
-    if (k2 >= DBL_MIN && isfinite(y))
-      w -= k2 * (0.5 + 0.5 * rough_log(4 * fabs(y)));
-    u = w > 0 ? sqrt(w) : 0;
-    if (Y < 0) u = -u;
+    t = (u - u0) * iB;
+    /* the bound is at least its T3 term, 14.2 U g: not tried past room */
+    if (fabs(y) >= 1.0 / (1 << -ARCLEN_QG_JMIN) && room >= 16 * U * g)
+      *bound = direct_bound(F, Y, w, Su0, gBq, u, u - u0, t, iB);
+    return t;
   }
+  /* far from the vertex, or k^2 below DBL_MIN */
+  w = fabs(Y);
+  if (k2 >= DBL_MIN && isfinite(y)) w -= k2 * (0.5 + 0.5 * log(4 * fabs(y)));
+  u = w > 0 ? sqrt(w) : 0;
+  if (Y < 0) u = -u;
   return (u - u0) * iB;
 }
 
@@ -381,7 +446,12 @@ int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
       return answer(F, lo + e, s, bnd, from, t);
     x = S > 0 ? lo + e : -1;
   } else {
-    x = first_guess(F, g);
+    /* the table's answer where its bound is within tol: in a lazy search
+    ** L >= s(x) >= g - bnd for x < 1 gives tol */
+    x = first_guess(F, g, lazy ? rtol * g : tol, &bnd);
+    if (x >= 0 && x < 1
+        && bnd <= (lazy ? rtol * (g - bnd) : tol) * (1 - 1.0 / 1024))
+      return answer(F, x, s, bnd, from, t);
   }
   if (!(x > lo && x < hi) && lazy) {          /* the fallbacks need T */
     lazy = 0;
