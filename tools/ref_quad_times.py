@@ -50,6 +50,9 @@ HOSTILE = [
     ("hairpin, k^2 below DBL_MIN", [0, 0, 1, 1e-160, 0, 2e-160]),
     ("far from the vertex, U ~ 2e9", [0, 0, 1, 1e-9, 3, 2.5e-9]),
     ("symmetric arch, vertex at L/2", [0, 0, 1, 1, 2, 0]),
+    # far from the origin: legs exact differences of large coordinates
+    ("far from the origin",
+     [1e6, 1e6, 1000003.5, 1000001.25, 1000004.75, 999997.5]),
 ]
 FRACTIONS = ["1e-9", "0.01", "0.25", "0.5", "0.7", "0.999", "0.999999999"]
 
@@ -137,6 +140,25 @@ def main():
         curves.append(("random %d" % (i + 1), [rnd.uniform(-5, 5) for _ in range(6)]))
     for i in range(6):
         curves.append(("random 3D %d" % (i + 1), [rnd.uniform(-5, 5) for _ in range(9)]))
+    # more for quad_time.c's answer from its table (direct_bound), a
+    # generator of their own so that the rows above stay as they were:
+    # plain, nearly collinear legs, hairpins, far from the origin, nearly
+    # straight (where the table's answer loses digits to cancellation and
+    # its bound must say so)
+    more = random.Random(20261204)
+    for i in range(60):
+        kind = i % 5
+        p = [more.uniform(-5, 5) for _ in range(6)]
+        if kind == 1:
+            p[3] = p[1] + (p[5] - p[1]) * (p[2] - p[0]) / (p[4] - p[0]) + more.uniform(-1e-6, 1e-6)
+        elif kind == 2:
+            p[4], p[5] = p[0] + more.uniform(-1e-3, 1e-3), p[1] + more.uniform(-1e-3, 1e-3)
+        elif kind == 3:
+            p = [x + 1e6 for x in p]
+        elif kind == 4:
+            p[2] = (p[0] + p[4]) / 2 + more.uniform(-1e-2, 1e-2)
+            p[3] = (p[1] + p[5]) / 2 + more.uniform(-1e-2, 1e-2)
+        curves.append(("random B %d" % (i + 1), p))
     rows = []
     for name, p in curves:
         dim = 3 if len(p) == 9 else 2
