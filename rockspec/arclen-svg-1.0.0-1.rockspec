@@ -65,7 +65,7 @@ build = {
         "src/segment/invert.c",
         "src/segment/line.c",
         "src/segment/quad.c",
-        "src/segment/quad_guess_table.c",
+        "src/segment/quad_inverse_table.c",
         "src/segment/quad_time.c",
         "src/segment/segment.c",
         "src/svg/decimal.c",

@@ -2,6 +2,10 @@
 ** quad_time.c -- a quadratic's time at a length: the t with |s(t) - g| <=
 ** tol, s(t) = 2 int_0^t |v|, v = a + t b (quad.c's form, set up once).
 **
+** The first t inverts the closed form through a table of the parabola's
+** inverse length (first_guess, quad_inverse_table.c) and is the answer,
+** without any length, where the bound of its miss is within tol
+** (direct_bound: at tol 1e-12 nearly always).  Else it starts the search.
 ** Each length from 0 is quad.c's closed form from the set-up (one square
 ** root, |v(t)|, and one log), and the last step needs none: the speed
 ** sigma = 2|v| has sigma' = 2 v.b/|v| and, since v x b = a x c is
@@ -29,7 +33,7 @@
 
 #include "arclen.h"
 #include "curve/numeric.h"
-#include "segment/quad_guess_table.h"
+#include "segment/quad_inverse_table.h"
 #include "segment/segment.h"
 
 /* 64 halvings take [0, 1] below one ulp of any t, so the cap is reached
@@ -204,28 +208,28 @@ void arclen_quad_time_setup(const double *p, int dim, arclen_quad_form *F) {
   F->Cs = fabs(F->c[0]) + fabs(F->c[1]) + (dim == 3 ? fabs(F->c[2]) : 0);
 }
 
-/* G^-1(y) for 0 <= y < 2^ARCLEN_QG_JMAX, G(U) = U sqrt(1 + U^2) + asinh U:
+/* G^-1(y) for 0 <= y < 2^ARCLEN_QI_JMAX, G(U) = U sqrt(1 + U^2) + asinh U:
 ** below the table U = y/2 - y^3/48 (G = 2U + U^3/3 - U^5/20 ..., the next
 ** term 13 y^5/3840 is below 1e-11 of U there), else the piece's polynomial
-** (quad_guess_table.h: within ARCLEN_QG_EPS units of U of G^-1(y)). */
+** (quad_inverse_table.h: within ARCLEN_QI_EPS units of U of G^-1(y)). */
 static double g_inverse(double y) {
   const double *c;
   uint64_t bits, top;
   double m, centre, r, r2;
   int e;
-  if (y < 1.0 / (1 << -ARCLEN_QG_JMIN)) return y / 2 * (1 - y * y / 24);
+  if (y < 1.0 / (1 << -ARCLEN_QI_JMIN)) return y / 2 * (1 - y * y / 24);
   /* from the bits, beside the arithmetic: the octave, the piece (the
   ** mantissa's top bits), m in [1, 2) and the piece's centre */
   memcpy(&bits, &y, sizeof bits);
   e = (int)(bits >> 52) - 1023;
-  top = (bits >> (52 - ARCLEN_QG_NSUB_BITS)) & (ARCLEN_QG_NSUB - 1);
+  top = (bits >> (52 - ARCLEN_QI_NSUB_BITS)) & (ARCLEN_QI_NSUB - 1);
   bits = (bits & (((uint64_t)1 << 52) - 1)) | ((uint64_t)1023 << 52);
   memcpy(&m, &bits, sizeof m);
-  bits = (bits >> (52 - ARCLEN_QG_NSUB_BITS) << (52 - ARCLEN_QG_NSUB_BITS))
-         | ((uint64_t)1 << (51 - ARCLEN_QG_NSUB_BITS));
+  bits = (bits >> (52 - ARCLEN_QI_NSUB_BITS) << (52 - ARCLEN_QI_NSUB_BITS))
+         | ((uint64_t)1 << (51 - ARCLEN_QI_NSUB_BITS));
   memcpy(&centre, &bits, sizeof centre);
-  r = (m - centre) * (2 * ARCLEN_QG_NSUB);                 /* both exact */
-  c = arclen_qg_ginv[e - ARCLEN_QG_JMIN][top];
+  r = (m - centre) * (2 * ARCLEN_QI_NSUB);                 /* both exact */
+  c = arclen_qi_ginv[e - ARCLEN_QI_JMIN][top];
   r2 = r * r;
   return ((c[0] + c[1] * r) + r2 * (c[2] + c[3] * r))
          + r2 * r2 * ((c[4] + c[5] * r) + r2 * (c[6] + c[7] * r));
@@ -248,7 +252,7 @@ static double g_inverse(double y) {
 **      (2k + dk) dk and its product (1): k^2 (18.4 U + 5.2 U |w|) + 1.03 k
 **      dk + (2k + dk) dk |w|;
 **   T3: 14.2 of itself.
-** u = k U with U = G^-1(y) within ARCLEN_QG_EPS, the product (1), and y =
+** u = k U with U = G^-1(y) within ARCLEN_QI_EPS, the product (1), and y =
 ** Y/k^2 (three roundings: k^2 y within 3.1 U of Y): u is off from the
 ** exact H^-1(Y) by (EPS + 1.01) U |u| + (dY + 3.1 U |Y|)/(2 min R) (H' =
 ** 2R, R = sqrt(u^2 + k^2) = |b||v|) and from the true k's by dk k
@@ -273,7 +277,7 @@ static NOINLINE double direct_bound(const arclen_quad_form *F, double Y,
   dY = U * (11.1 * au0 * Su0 + 14.2 * gBq + k2 * (18.4 + 5.2 * aw))
        + du0 * Su0 + 1.03 * k * dk + (2 * k + dk) * dk * aw;
   M = 2 * Ru * (du0 + t * 6 * U * B + 3.2 * U * fabs(d)
-                + (ARCLEN_QG_EPS + 1.01) * U * au)
+                + (ARCLEN_QI_EPS + 1.01) * U * au)
       + (dY + 3.1 * U * fabs(Y)) * (1 + 1.0 / 512)
       + 2 * dk * (Ru < 9.6 * k ? Ru : 9.6 * k);
   if (!(64 * dk <= k && 4096 * 4096 * dk * dk <= R2 && 2048 * M <= R2))
@@ -314,12 +318,12 @@ static double first_guess(const arclen_quad_form *F, double g, double room,
     Y += k2 * (u0 < 0 ? -w : w);
     y = Y * ik2;
   }
-  if (fabs(y) < (double)(1L << ARCLEN_QG_JMAX)) {
+  if (fabs(y) < (double)(1L << ARCLEN_QI_JMAX)) {
     u = k * g_inverse(fabs(y));
     if (y < 0) u = -u;
     t = (u - u0) * iB;
     /* the bound is at least its T3 term, 14.2 U g: not tried past room */
-    if (fabs(y) >= 1.0 / (1 << -ARCLEN_QG_JMIN) && room >= 16 * U * g)
+    if (fabs(y) >= 1.0 / (1 << -ARCLEN_QI_JMIN) && room >= 16 * U * g)
       *bound = direct_bound(F, Y, w, Su0, gBq, u, u - u0, t, iB);
     return t;
   }
