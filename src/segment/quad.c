@@ -25,14 +25,10 @@
 ** The closed form is inline in the span's one body. */
 #if defined(__GNUC__)
 #define ALWAYS_INLINE __attribute__((always_inline)) inline
-#define ONE_BODY __attribute__((noinline))
-#elif defined(_MSC_VER)
-#define ALWAYS_INLINE inline
-#define ONE_BODY __declspec(noinline)
 #else
 #define ALWAYS_INLINE inline
-#define ONE_BODY
 #endif
+#define ONE_BODY ARCLEN_NOINLINE
 
 /* The 10-point Gauss-Legendre rule on [0, 1], nodes x < 1/2 and their
 ** weights (the other five mirror them). */

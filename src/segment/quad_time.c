@@ -40,18 +40,12 @@
 ** only by a length noisier than the tolerance asked for */
 #define MAX_STEPS 100
 
-/* direct_bound out of line: the search's loop keeps its registers (inlined,
-** it slowed the measured path by a few ns) */
-#if defined(__GNUC__)
-#define NOINLINE __attribute__((noinline))
-#elif defined(_MSC_VER)
-#define NOINLINE __declspec(noinline)
-#else
-#define NOINLINE
-#endif
-
 /* The unit roundoff, 2^-53. */
 #define U (DBL_EPSILON / 2)
+
+/* G^-1's table covers y in [TABLE_MIN, TABLE_MAX) (quad_inverse_table.h) */
+#define TABLE_MIN (1.0 / (1 << -ARCLEN_QI_JMIN))
+#define TABLE_MAX ((double)(1L << ARCLEN_QI_JMAX))
 
 /* The closed form's rounding, in units of U of its value: a sum of
 ** positive terms (quad.c: u1 - u0 set exactly, no difference of nearly
@@ -217,7 +211,7 @@ static double g_inverse(double y) {
   uint64_t bits, top;
   double m, centre, r, r2;
   int e;
-  if (y < 1.0 / (1 << -ARCLEN_QI_JMIN)) return y / 2 * (1 - y * y / 24);
+  if (y < TABLE_MIN) return y / 2 * (1 - y * y / 24);
   /* from the bits, beside the arithmetic: the octave, the piece (the
   ** mantissa's top bits), m in [1, 2) and the piece's centre */
   memcpy(&bits, &y, sizeof bits);
@@ -266,10 +260,12 @@ static double g_inverse(double y) {
 ** 6.4 k/R <= 9.6 k/Ru), and M = 2 Ru D with no quotient: (1 + 2^-9) M/(B
 ** q), 1/(B q) = q/B^2.  The margins the caller takes (2^-10) cover the
 ** bound's own roundings.  Infinite where a check fails (the search then
-** measures). */
-static NOINLINE double direct_bound(const arclen_quad_form *F, double Y,
-                                    double w, double Su0, double gBq,
-                                    double u, double d, double t, double iB) {
+** measures).  Out of line: inlined, it cost the measured search (its
+** registers) a few ns. */
+static ARCLEN_NOINLINE double direct_bound(const arclen_quad_form *F,
+                                           double Y, double w, double Su0,
+                                           double gBq, double u, double d,
+                                           double t, double iB) {
   double k = F->k, k2 = k * k, q = F->q, B = F->B, au0 = fabs(F->u0);
   double du0 = 5 * U * F->S0 * q, dk = 6 * U * F->S0 * F->Cs;
   double au = fabs(u), R2 = au * au + k2, aw = fabs(w), dY, M;
@@ -308,7 +304,7 @@ static double first_guess(const arclen_quad_form *F, double g, double room,
                           double *bound) {
   double u0 = F->u0, k = F->k, k2 = k * k, B = F->B, q = F->q;
   double Su0 = q * F->S0, gBq = g * B * q, Y = u0 * Su0 + gBq, y = HUGE_VAL;
-  double u, w = 0, iB, ik2, t;
+  double u, w = 0, iB, ik2, d, t;
   *bound = HUGE_VAL;
   if (B == 0) return g / (2 * F->S0);
   iB = 1 / B;                     /* waits on B only, not on the guess */
@@ -318,13 +314,14 @@ static double first_guess(const arclen_quad_form *F, double g, double room,
     Y += k2 * (u0 < 0 ? -w : w);
     y = Y * ik2;
   }
-  if (fabs(y) < (double)(1L << ARCLEN_QI_JMAX)) {
+  if (fabs(y) < TABLE_MAX) {
     u = k * g_inverse(fabs(y));
     if (y < 0) u = -u;
-    t = (u - u0) * iB;
+    d = u - u0;
+    t = d * iB;
     /* the bound is at least its T3 term, 14.2 U g: not tried past room */
-    if (fabs(y) >= 1.0 / (1 << -ARCLEN_QI_JMIN) && room >= 16 * U * g)
-      *bound = direct_bound(F, Y, w, Su0, gBq, u, u - u0, t, iB);
+    if (fabs(y) >= TABLE_MIN && room >= 16 * U * g)
+      *bound = direct_bound(F, Y, w, Su0, gBq, u, d, t, iB);
     return t;
   }
   /* far from the vertex, or k^2 below DBL_MIN */

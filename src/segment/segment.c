@@ -388,16 +388,15 @@ static int setup_ctx(int kind, int dim, const double *seg, double *scaled,
   return e;
 }
 
-/* The time at s on the conic of c (scaled by 2^-e) whose length is
-** *total in c's units (NAN: unknown, measured by the search where it
-** needs it and stored), from the known point from = (t, len(0, t), its
-** error bound) at or before it ({0, 0, 0}: afresh), which becomes the
-** answer's.  A first
+/* The time at s on the conic of c (scaled by 2^-e) whose length is *total
+** in c's units (NAN: unknown, measured by the search where it needs it and
+** stored), from the known point from = (t, len(0, t), its error bound) at
+** or before it ({0, 0, 0}: afresh), which becomes the answer's.  A first
 ** search without the total guesses from TOTAL_NODES' rule of it
-** (uncertified: the guess only) and takes its tol from conic_below's
-** lower bounds (invert.c), so that the total's exact length (Carlson's
-** integrals, as much as the search's own) is off its chain.  A line is t
-** = s / L. */
+** (uncertified: the guess only) and takes its tol from conic_below's lower
+** bounds (invert.c), so that the total's exact length (Carlson's
+** integrals, as much as the search's own) is off its chain.  A line is t =
+** s / L. */
 #define TOTAL_NODES 6
 static int ctx_time(int kind, const seg_ctx *c, int e, double *total,
                     double s, double rtol, double from[3], double *t,

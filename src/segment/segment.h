@@ -6,6 +6,15 @@
 #ifndef ARCLEN_SEGMENT_H
 #define ARCLEN_SEGMENT_H
 
+/* A function kept out of line where the compiler can be told so. */
+#if defined(__GNUC__)
+#define ARCLEN_NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define ARCLEN_NOINLINE __declspec(noinline)
+#else
+#define ARCLEN_NOINLINE
+#endif
+
 /* Euclidean norm of v[0 .. dim-1] without overflow or underflow. */
 double arclen_seg_norm(const double *v, int dim);
 

@@ -373,14 +373,14 @@ static int exact_gap(double a, double b, double r) {
 ** point from its piece's ends, each weight from the sweep, so that an arc
 ** of a far centre keeps its digits (arclen_svg_arc_conics).  An arc with
 ** no rotation and no large-arc flag whose ends are exactly rx and ry
-** apart is a quarter of
-** the axis-aligned ellipse (F.6.5: Lambda = 1/2, the centre a corner of
-** the ends' box), and so is every such arc under ARCLEN_PD_ARCS_QUARTERS
-** (the basic shapes, whose ends are rounded): its centre and control
-** point are the two corners of the ends' box, the sweep flag says which
-** is which (positive angle: the centre c has cross(p0 - c, p2 - c) > 0),
-** and w = cos 45 degrees (Floater's eq. 1 for a circular arc of angle 2h:
-** w = cos h) -- the ends are the only rounding. */
+** apart is a quarter of the axis-aligned ellipse (F.6.5: Lambda = 1/2,
+** the centre a corner of the ends' box), and so is every such arc under
+** ARCLEN_PD_ARCS_QUARTERS (the basic shapes, whose ends are rounded): its
+** centre and control point are the two corners of the ends' box, the
+** sweep flag says which is which (positive angle: the centre c has
+** cross(p0 - c, p2 - c) > 0), and w = cos 45 degrees (Floater's eq. 1 for
+** a circular arc of angle 2h: w = cos h) -- the ends are the only
+** rounding. */
 static int arc_conics(reader *r, double x0, double y0, const double *a,
                       double x1, double y1, size_t pos) {
   double c[28], v[6];
