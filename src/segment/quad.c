@@ -17,6 +17,7 @@
 #include <string.h>
 
 #include "arclen.h"
+#include "curve/numeric.h"
 #include "segment/segment.h"
 
 /* The set-up and a span's length each have two callers (the length and
@@ -241,8 +242,10 @@ void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f) {
 ** the vertex (u = 0) is inside. */
 static int straight_enough(const arclen_quad_form *f, double h, double u0,
                            double m0, double m1) {
-  double m = u0 < 0 && u0 + h * f->B > 0 ? f->k * f->k / f->B
-             : m0 < m1 ? m0 : m1;
+  /* branch-free (numeric.h): whether the vertex is inside is a coin toss
+  ** for a time's measured points */
+  int inside = (u0 < 0) & (u0 + h * f->B > 0);
+  double m = arclen_choose(inside, f->k * f->k / f->B, arclen_min(m0, m1));
   return m >= 16 * h * h * f->B;
 }
 

@@ -269,20 +269,22 @@ static ARCLEN_NOINLINE double direct_bound(const arclen_quad_form *F,
   double k = F->k, k2 = k * k, q = F->q, B = F->B, au0 = fabs(F->u0);
   double du0 = 5 * U * F->S0 * q, dk = 6 * U * F->S0 * F->Cs;
   double au = fabs(u), R2 = au * au + k2, aw = fabs(w), dY, M;
-  double Ru = au > k ? au + k / 2 : k + au / 2;             /* >= |b||v| */
+  /* branch-free (numeric.h): |u| against k and u's sign are coin tosses */
+  double Ru = arclen_max(au, k) + arclen_min(au, k) / 2;     /* >= |b||v| */
   dY = U * (11.1 * au0 * Su0 + 14.2 * gBq + k2 * (18.4 + 5.2 * aw))
        + du0 * Su0 + 1.03 * k * dk + (2 * k + dk) * dk * aw;
   M = 2 * Ru * (du0 + t * 6 * U * B + 3.2 * U * fabs(d)
                 + (ARCLEN_QI_EPS + 1.01) * U * au)
       + (dY + 3.1 * U * fabs(Y)) * (1 + 1.0 / 512)
-      + 2 * dk * (Ru < 9.6 * k ? Ru : 9.6 * k);
+      + 2 * dk * arclen_min(Ru, 9.6 * k);
   if (!(64 * dk <= k && 4096 * 4096 * dk * dk <= R2 && 2048 * M <= R2))
     return HUGE_VAL;
   M *= (1 + 1.0 / 512) * q * (iB * iB);
   /* and g below L, or the search decides (t = 1 at L): L >= s(t) + 2 (1 -
   ** t) min |v| with s(t) >= g - M and |v| from below on [t, 1] (at least
   ** R/|b| past the vertex, where it grows, and k/|b| anywhere) */
-  if (!((1 - t) * (u >= 0 ? (au > k ? au : k) * (1 - 1.0 / 1024) : k - dk)
+  if (!((1 - t)
+        * arclen_choose(u >= 0, arclen_max(au, k) * (1 - 1.0 / 1024), k - dk)
         * q * iB >= M))
     return HUGE_VAL;
   return M;
@@ -315,8 +317,9 @@ static double first_guess(const arclen_quad_form *F, double g, double room,
     y = Y * ik2;
   }
   if (fabs(y) < TABLE_MAX) {
-    u = k * g_inverse(fabs(y));
-    if (y < 0) u = -u;
+    /* y's sign without a branch (a coin toss from one segment to the
+    ** next); y = -0 (Y's underflow only) gives u = -0, the same d */
+    u = copysign(k * g_inverse(fabs(y)), y);
     d = u - u0;
     t = d * iB;
     /* the bound is at least its T3 term, 14.2 U g: not tried past room */
@@ -354,9 +357,10 @@ static int know_total(const arclen_quad_form *F, double *total) {
 static double length_below(const arclen_quad_form *F, double x, double len,
                            double S) {
   double m, slack = 32 * U * (F->S0 + F->Cs);
-  if (F->u0 + x * F->B >= 0) m = S - slack;
-  else if (F->u0 + F->B <= 0) m = arclen_quad_form_speed(F, 1) - slack;
-  else m = (F->k - 6 * U * F->S0 * F->Cs) / F->q * (1 - 4 * U);
+  int past = F->u0 + x * F->B >= 0;       /* a coin toss: no branch on it */
+  if (!past & (F->u0 + F->B <= 0)) m = arclen_quad_form_speed(F, 1) - slack;
+  else m = arclen_choose(past, S - slack,
+                         (F->k - 6 * U * F->S0 * F->Cs) / F->q * (1 - 4 * U));
   return (len + 2 * (1 - x) * (m > 0 ? m : 0)) * (1 - 0x1p-30);
 }
 
