@@ -15,8 +15,12 @@
 ** columns times them in a chain (each call's points wait on the last
 ** answer), where what counts is each call's own latency.  A last row measures each quadratic raised to the
 ** cubic (P0, P0 + 2/3 (P1 - P0), P2 + 2/3 (P1 - P2), P2) by the default
-** method: what a path paid for it before the kinds.  Run: make bench (or
-** make -C bench bin/bench_segment).
+** method: what a path paid for it before the kinds.  A second table times
+** passes over the 3000 segments, each call on the next segment as a path's
+** length or resample walks them, so that no branch history carries over
+** from one call to the next (the 64 calls on one segment let the
+** predictor learn a cubic's adaptive path).  Run: make bench (or make -C
+** bench bin/bench_segment).
 */
 #include <stdio.h>
 
@@ -26,6 +30,7 @@
 #define N 3000
 #define REPS 64
 #define BLOCK 50
+#define PASSES 15
 
 static double curves[8 * N];
 static double segs[ARCLEN_SEG_NKINDS][N][ARCLEN_SEG_MAXN];
@@ -34,6 +39,8 @@ static double halves[ARCLEN_SEG_NKINDS][N];
 static volatile double sink;
 /* rtol 1e-12's median lengths of the cubic, line and quadratic */
 static double lens12[3];
+/* the same, from the passes over all segments */
+static double pass12[3];
 
 static double measure(int kind, int i, int want_time, double rtol) {
   arclen_opts o;
@@ -72,6 +79,52 @@ static double chained(int kind, int i, int want_time, double rtol) {
   }
   sink = last;
   return (bench_now() - t0) / REPS * 1e9;
+}
+
+/* ns per call of a pass over all segments of kind (ARCLEN_SEG_NKINDS:
+** the raised quadratics), each call on the next segment. */
+static double one_pass(int kind, int want_time, double rtol) {
+  double t0 = bench_now();
+  int i;
+  for (i = 0; i < N; i++) sink = measure(kind, i, want_time, rtol);
+  return (bench_now() - t0) / N * 1e9;
+}
+
+/* PASSES rounds, each timing every kind's length and time pass in turn
+** (so that the host's state moves them alike): median ns per call. */
+static void passes(double rtol) {
+  static const int order[ARCLEN_SEG_NKINDS] = {
+    ARCLEN_SEG_CUBIC, ARCLEN_SEG_QUAD, ARCLEN_SEG_LINE, ARCLEN_SEG_CONIC};
+  double ns[2][ARCLEN_SEG_NKINDS + 1][PASSES], med[2][ARCLEN_SEG_NKINDS + 1];
+  int r, k, wt;
+  for (r = 0; r < PASSES; r++)
+    for (k = 0; k <= ARCLEN_SEG_NKINDS; k++)
+      for (wt = 0; wt < 2; wt++)
+        if (k < ARCLEN_SEG_NKINDS || wt == 0)
+          ns[wt][k][r] = one_pass(k, wt, rtol);
+  for (k = 0; k <= ARCLEN_SEG_NKINDS; k++)
+    for (wt = 0; wt < 2; wt++)
+      if (k < ARCLEN_SEG_NKINDS || wt == 0)
+        med[wt][k] = bench_median(ns[wt][k], PASSES);
+  printf("passes over the 3000 segments, each call on the next segment, "
+         "rtol %g:\nmedian of %d passes, ns per call\n", rtol, PASSES);
+  printf("%-8s %10s %9s %12s %9s %12s\n", "kind", "length ns", "/cubic",
+         "time(L/2) ns", "/cubic", "time/length");
+  for (k = 0; k < ARCLEN_SEG_NKINDS; k++) {
+    int kind = order[k];
+    printf("%-8s %10.1f %9.2f %12.1f %9.2f %12.2f\n",
+           arclen_segment_kind_name(kind), med[0][kind],
+           med[0][kind] / med[0][ARCLEN_SEG_CUBIC], med[1][kind],
+           med[1][kind] / med[1][ARCLEN_SEG_CUBIC], med[1][kind] / med[0][kind]);
+  }
+  printf("%-8s %10.1f %9.2f  (the quadratics raised to cubics)\n", "raised",
+         med[0][ARCLEN_SEG_NKINDS],
+         med[0][ARCLEN_SEG_NKINDS] / med[0][ARCLEN_SEG_CUBIC]);
+  if (rtol == 1e-12) {
+    pass12[0] = med[0][ARCLEN_SEG_CUBIC];
+    pass12[1] = med[0][ARCLEN_SEG_LINE];
+    pass12[2] = med[0][ARCLEN_SEG_QUAD];
+  }
 }
 
 /* One table at rtol: each kind's median length and time (L/2), their
@@ -162,6 +215,8 @@ int main(void) {
   printf("%-8s %10.1f %9.2f  (the quadratics raised to cubics)\n", "raised",
          bench_median(rt, N), bench_median(rt, N) / lens12[0]);
   table(1e-15);
+  passes(1e-12);
+  passes(1e-15);
   printf("time / length: the goal is <= 2 for every kind at both tolerances "
          "(issue 31 item 8);\nchain len, chain time, ratio: the same calls in a "
          "chain, each waiting on the last answer\n");
@@ -169,5 +224,7 @@ int main(void) {
          "(goal: >= 5x, at 1e-12)\n",
          lens12[0] / lens12[1], lens12[0] / lens12[2],
          bench_median(rt, N) / lens12[2]);
+  printf("in passes: cubic / line: %.1fx   cubic / quad: %.1fx\n",
+         pass12[0] / pass12[1], pass12[0] / pass12[2]);
   return 0;
 }
