@@ -112,10 +112,13 @@ describe("numbers under LC_NUMERIC = de_DE.UTF-8", function()
   end))
 
   it("messages of the document reader write '.' #svgdoc", under_comma(function()
-    local ok, err = pcall(svg.parse, [[<svg xmlns="http://www.w3.org/2000/svg">
-      <rect width="-1.5" height="1"/></svg>]])
+    local text = [[<svg xmlns="http://www.w3.org/2000/svg">
+      <rect width="-1.5" height="1"/></svg>]]
+    local ok, err = pcall(svg.parse, text, {strict = true})
     assert.is_false(ok)
     assert.matches("(-1.5)", tostring(err), 1, true)
+    local doc = svg.parse(text)                  -- the warning, likewise
+    assert.matches("(-1.5)", doc.warnings[1], 1, true)
   end))
 
   it("MetaPost's text: knots in, numbers and paths out", under_comma(function()

@@ -79,10 +79,11 @@ describe("arclen.svg: bad documents, each a clear error naming the file and plac
      "transform='translate%(1%) skewY%(%-90%)': skewY%(%-90%) is undefined .* at character 14$"},
     {"skewX(270)", H .. '<g transform="skewX(270)"/></svg>', "skewX%(270%) is undefined"},
   }
-  -- a renderer passes over these two (doc/svg.md, "Files, and errors a
-  -- renderer passes over"): errors only
-  -- under strict, warnings otherwise (spec/svgfiles_spec.lua)
-  local STRICT = {["bad path data, with its position"] = true, ["a use of a missing id"] = true}
+  -- a renderer passes over these (doc/svg.md, "Files, and errors a
+  -- renderer passes over"): errors only under strict, warnings otherwise
+  -- (below, and spec/svgfiles_spec.lua)
+  local STRICT = {["bad path data, with its position"] = true, ["a use of a missing id"] = true,
+                  ["a negative width"] = true, ["an odd number of coordinates"] = true}
   for _, c in ipairs(cases) do
     it(c[1], function()
       local e = err_of(c[2], nil, STRICT[c[1]] and {strict = true} or nil)
@@ -91,6 +92,40 @@ describe("arclen.svg: bad documents, each a clear error naming the file and plac
       assert.is_nil(e:find("traceback", 1, true))
     end)
   end
+
+  it("negative sizes and bad points: drawn as a renderer draws them, with a warning", function()
+    -- SVG 2 chapter 10 and web-platform-tests (circle-006, ellipse-006,
+    -- ellipse-007, rect-007): a negative length is invalid, taken as not
+    -- given (r, width, height: 0, not drawn; rx, ry: auto, the other
+    -- radius); points with an error: the pairs before it (section 10.6)
+    local cases = {
+      {'<circle r="-1"/>', 0, "<circle>: r must not be negative %(%-1%); not drawn"},
+      {'<rect width="-3" height="1"/>', 0, "<rect>: width must not be negative %(%-3%); not drawn"},
+      {'<rect width="3" height="-1"/>', 0, "<rect>: height must not be negative %(%-1%); not drawn"},
+      -- rx auto: 1 as ry, so corners of radius 1 on a 4 x 2 rect: 2 (4 - 2) + 2 pi
+      {'<rect width="4" height="2" rx="-5" ry="1"/>', 4 + 2 * math.pi, "<rect>: rx must not be negative %(%-5%); taken as auto"},
+      -- both negative: both auto, square corners
+      {'<rect width="4" height="2" rx="-1" ry="-1"/>', 12, "<rect>: rx must not be negative %(%-1%); taken as auto"},
+      -- ry auto: the circle of radius 2
+      {'<ellipse rx="2" ry="-1"/>', 4 * math.pi, "<ellipse>: ry must not be negative %(%-1%); taken as auto"},
+      {'<ellipse rx="-2" ry="-1"/>', 0, "<ellipse>: rx must not be negative %(%-2%); not drawn"},
+      {'<ellipse rx="-2"/>', 0, "<ellipse>: rx must not be negative %(%-2%); not drawn"},
+      {'<polyline points="0 0 3 4 9"/>', 5, "<polyline>: points: an odd number of coordinates; the last one left out"},
+      {'<polygon points="0 0 3 4 3 x 0"/>', 10, "<polygon>: points: not a number at character 11; drawn up to it"},
+      {'<polyline points="0 x"/>', 0, "<polyline>: points: not a number at character 3; nothing drawn"},
+    }
+    for _, c in ipairs(cases) do
+      local text = H .. c[1] .. '<path d="M0 0 L1 0"/></svg>'
+      local e, doc = err_of(text)
+      assert.is_nil(e, c[1])
+      assert.is_true(math.abs(doc.total - (c[2] + 1)) <= 1e-12 * (c[2] + 1), c[1] .. ": " .. doc.total)
+      assert.matches("^bad%.svg:1:" .. COL .. ": " .. c[3] .. "$", doc.warnings[1], 1)
+      -- under strict, the error without the consequence, at the same place
+      e = err_of(text, nil, {strict = true})
+      assert.is_string(e, c[1])
+      assert.matches("^bad%.svg:1:" .. COL .. ": " .. c[3]:gsub("; .*$", "") .. "$", e)
+    end
+  end)
 
   it("a singular transform: not drawn, with a warning naming the place", function()
     local e, doc = err_of(H .. '<path transform="scale(0)" d="M0 0 L1 0"/><path d="M0 0 L2 0"/></svg>')

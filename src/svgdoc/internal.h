@@ -238,6 +238,10 @@ int svgdoc_length_try(const char *s, int kind, const svgdoc_viewport *vp,
 /* A warning at a place, an error under o.strict (memory.c). */
 void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,
                  const char *msg);
+/* What a renderer passes over: the warning "what; consequence", the error
+** "what" under o.strict (memory.c). */
+void svgdoc_lenient(svgdoc *D, unsigned long line, unsigned long col,
+                    const char *what, const char *consequence);
 
 /* ---- the ids of the scan (idbloom.c) ---- */
 

@@ -157,6 +157,15 @@ void svgdoc_free_pool(svgdoc *D) {
   D->keep.blocks = D->tmp.blocks = D->spare = NULL;
 }
 
+/* An error a renderer passes over (a missing reference, bad path data, a
+** negative radius): a warning "what; consequence" and the reading goes on,
+** or under o.strict the error "what". */
+void svgdoc_lenient(svgdoc *D, unsigned long line, unsigned long col,
+                    const char *what, const char *consequence) {
+  if (D->o.strict) svgdoc_fail(D, line, col, "%s", what);
+  svgdoc_warn(D, line, col, svgdoc_format(D, "%s; %s", what, consequence));
+}
+
 /* A warning, its message copied into the document's own pool (msg may
 ** be in the open element's); under o.strict, an error. */
 void svgdoc_warn(svgdoc *D, unsigned long line, unsigned long col,

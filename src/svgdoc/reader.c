@@ -131,15 +131,6 @@ static void *grow(svgdoc *D, void *a, size_t *room, size_t used,
 }
 
 
-/* An error a renderer passes over (a missing reference, bad path data):
-** a warning "what; consequence" and the reading goes on, or under
-** o.strict the error "what". */
-static void lenient(svgdoc *D, unsigned long line, unsigned long col,
-                    const char *what, const char *consequence) {
-  if (D->o.strict) svgdoc_fail(D, line, col, "%s", what);
-  svgdoc_warn(D, line, col, svgdoc_format(D, "%s; %s", what, consequence));
-}
-
 /* ---- ids of kept elements, ids referred to ------------------------------ */
 
 static size_t hash(const char *s, size_t n) {
@@ -391,12 +382,12 @@ static void draw(svgdoc *D, const svgdoc_frame *f, const char *tag,
     while (good > 0 && (svgdoc_space((unsigned char)d[good - 1]) ||
                         d[good - 1] == ','))
       good--;
-    arclen_pathdata_free(pd);          /* lenient may jump (strict) */
+    arclen_pathdata_free(pd);          /* svgdoc_lenient may jump (strict) */
     if (good == 0) {
-      lenient(D, line, col, what, "nothing drawn");
+      svgdoc_lenient(D, line, col, what, "nothing drawn");
       return;
     }
-    lenient(D, line, col, what,
+    svgdoc_lenient(D, line, col, what,
             svgdoc_format(D, "drawn up to position %lu", (unsigned long)good));
     cut = *shape;
     cut.d = svgdoc_strdup(D, d, good);
@@ -786,7 +777,7 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
   const char **chain;
   if (!find_id(&D->ids, u->href, strlen(u->href), &start)) {
     /* SVG 2 section 5.6: a use with an invalid reference is not rendered */
-    lenient(D, u->line, u->col, u->mset
+    svgdoc_lenient(D, u->line, u->col, u->mset
             ? svgdoc_format(D, "%s of '#%s': no <marker> has that id",
                             MARKER_PROPS[u->mset->which], u->href)
             : svgdoc_format(D, "<use> of '#%s': no element has that id",
@@ -796,7 +787,7 @@ static void expand(svgdoc *D, const svgdoc_use *u) {
   if (u->mset && (!D->events[start].svgns || D->events[start].mdef == NULL ||
                   strcmp(D->events[start].tag, "marker") != 0)) {
     /* kept for a <use>, but no marker: an invalid reference (SVG 2 11.6.2) */
-    lenient(D, u->line, u->col, svgdoc_format(D, "%s of '#%s': the element "
+    svgdoc_lenient(D, u->line, u->col, svgdoc_format(D, "%s of '#%s': the element "
             "with that id is not a <marker>", MARKER_PROPS[u->mset->which],
             u->href), "nothing drawn");
     return;

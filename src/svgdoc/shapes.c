@@ -33,9 +33,28 @@ static int radius(svgdoc *D, unsigned long line, unsigned long col,
   return svgdoc_len_attr(D, line, col, atts, name, kind, vp, v);
 }
 
-/* The numbers of points="" into the pool; their count. */
+/* A negative length of a shape (v < 0): invalid, so a renderer takes it
+** as not given (SVG 2 section 10: the property's invalid value is
+** ignored; web-platform-tests' circle-006, ellipse-006, rect-007) -- a
+** warning "consequence", an error under o.strict.  1 when negative. */
+static int negative(svgdoc *D, unsigned long line, unsigned long col,
+                    const char *tag, const char *name, double v,
+                    const char *consequence) {
+  char num[32];
+  if (!(v < 0)) return 0;
+  svgdoc_num(num, v);
+  svgdoc_lenient(D, line, col, svgdoc_format(D, "<%s>: %s must not be "
+                 "negative (%s)", tag, name, num), consequence);
+  return 1;
+}
+
+/* The numbers of points="" into the pool; their count.  An error in them
+** (SVG 2 section 10.6: a number that is not one, an odd count) is what a
+** renderer passes over: the pairs before it are drawn, with a warning
+** (an error under o.strict), as for path data. */
 static size_t points(svgdoc *D, unsigned long line, unsigned long col,
-                     const char **atts, const double **out) {
+                     const char *tag, const char **atts,
+                     const double **out) {
   const char *s = svgdoc_attr(atts, "points");
   svgdoc_buffer *b = &D->scratch;
   size_t n, i, count = 0;
@@ -46,15 +65,23 @@ static size_t points(svgdoc *D, unsigned long line, unsigned long col,
   b->len = 0;
   for (i = arclen_decimal_list_start(s, n); i < n;) {
     size_t e = arclen_decimal_list_next(s, n, i, &v);
-    if (e == i)
-      svgdoc_fail(D, line, col, "points: not a number at character %lu",
-                  (unsigned long)(i + 1));
+    if (e == i) {
+      svgdoc_lenient(D, line, col, svgdoc_format(D, "<%s>: points: not a "
+                     "number at character %lu", tag, (unsigned long)(i + 1)),
+                     count >= 2 ? "drawn up to it" : "nothing drawn");
+      count -= count % 2;
+      break;
+    }
     i = e;
     svgdoc_append(D, b, (const char *)&v, sizeof v);
     count++;
   }
-  if (count % 2 == 1)      /* SVG 2 section 10.6: an error */
-    svgdoc_fail(D, line, col, "points: an odd number of coordinates");
+  if (count % 2 == 1) {
+    svgdoc_lenient(D, line, col, svgdoc_format(D, "<%s>: points: an odd "
+                   "number of coordinates", tag),
+                   count >= 3 ? "the last one left out" : "nothing drawn");
+    count--;
+  }
   copy = svgdoc_alloc(D, count * sizeof *copy + 1);
   if (count) memcpy(copy, b->s, count * sizeof *copy);
   *out = copy;
@@ -75,7 +102,7 @@ int svgdoc_shape_get(svgdoc *D, unsigned long line, unsigned long col,
   }
   if (strcmp(tag, "polyline") == 0 || strcmp(tag, "polygon") == 0) {
     s->kind = tag[4] == 'l' ? SVGDOC_SHAPE_POLYLINE : SVGDOC_SHAPE_POLYGON;
-    s->n = points(D, line, col, atts, &s->v);
+    s->n = points(D, line, col, tag, atts, &s->v);
     return s->n >= 2;
   }
   v = svgdoc_alloc(D, 6 * sizeof *v);
@@ -86,13 +113,16 @@ int svgdoc_shape_get(svgdoc *D, unsigned long line, unsigned long col,
     svgdoc_len_attr(D, line, col, atts, "x", 'x', vp, &x);
     svgdoc_len_attr(D, line, col, atts, "y", 'y', vp, &y);
     svgdoc_len_attr(D, line, col, atts, "width", 'x', vp, &w);
-    svgdoc_nonneg(D, line, col, w, "width");
     svgdoc_len_attr(D, line, col, atts, "height", 'y', vp, &h);
-    svgdoc_nonneg(D, line, col, h, "height");
+    /* a negative size is taken as not given: 0, the rect not drawn; a
+    ** negative radius as auto */
+    if (negative(D, line, col, tag, "width", w, "not drawn") ||
+        negative(D, line, col, tag, "height", h, "not drawn"))
+      return 0;
     hx = radius(D, line, col, atts, "rx", 'x', vp, &rx);
     hy = radius(D, line, col, atts, "ry", 'y', vp, &ry);
-    if (hx) svgdoc_nonneg(D, line, col, rx, "rx");
-    if (hy) svgdoc_nonneg(D, line, col, ry, "ry");
+    if (hx && negative(D, line, col, tag, "rx", rx, "taken as auto")) hx = 0;
+    if (hy && negative(D, line, col, tag, "ry", ry, "taken as auto")) hy = 0;
     if (w == 0 || h == 0) return 0;
     /* auto: the other radius, else 0; then each clamped to half the side */
     if (!hx) rx = hy ? ry : 0;
@@ -108,14 +138,19 @@ int svgdoc_shape_get(svgdoc *D, unsigned long line, unsigned long col,
     double cx = 0, cy = 0, rx = 0, ry = 0;
     svgdoc_len_attr(D, line, col, atts, "cx", 'x', vp, &cx);
     svgdoc_len_attr(D, line, col, atts, "cy", 'y', vp, &cy);
-    if (tag[0] == 'c') {
+    if (tag[0] == 'c') {            /* a negative r is taken as 0 */
       svgdoc_len_attr(D, line, col, atts, "r", 'o', vp, &rx);
-      ry = svgdoc_nonneg(D, line, col, rx, "r");
-    } else {
+      if (negative(D, line, col, tag, "r", rx, "not drawn")) return 0;
+      ry = rx;
+    } else {                        /* a negative radius is taken as auto */
       int hx = radius(D, line, col, atts, "rx", 'x', vp, &rx);
       int hy = radius(D, line, col, atts, "ry", 'y', vp, &ry);
-      if (hx) svgdoc_nonneg(D, line, col, rx, "rx");
-      if (hy) svgdoc_nonneg(D, line, col, ry, "ry");
+      if (hx && negative(D, line, col, tag, "rx", rx,
+                         hy && ry >= 0 ? "taken as auto" : "not drawn"))
+        hx = 0;
+      if (hy && negative(D, line, col, tag, "ry", ry,
+                         hx ? "taken as auto" : "not drawn"))
+        hy = 0;
       if (!hx) rx = hy ? ry : 0;             /* auto: the other one */
       if (!hy) ry = hx ? rx : 0;
     }
