@@ -25,11 +25,6 @@
 ** inlined, so that no compiler contracts their products differently at
 ** two sites (clang -ffp-contract=fast did: a time at L read 1 - 2^-50).
 ** The closed form is inline in the span's one body. */
-#if defined(__GNUC__)
-#define ALWAYS_INLINE __attribute__((always_inline)) inline
-#else
-#define ALWAYS_INLINE inline
-#endif
 #define ONE_BODY ARCLEN_NOINLINE
 
 /* The 10-point Gauss-Legendre rule on [0, 1], nodes x < 1/2 and their
@@ -55,7 +50,7 @@ static double norm(const double *v, int dim) {
 }
 
 /* |u x v| (2D: the scalar cross product's size). */
-static ALWAYS_INLINE double cross_norm(const double *u, const double *v,
+static ARCLEN_INLINE double cross_norm(const double *u, const double *v,
                                        int dim) {
   double w[3];
   if (dim == 2) return fabs(u[0] * v[1] - u[1] * v[0]);
@@ -134,7 +129,7 @@ static double log_ratio(double N, double D, double w) {
 ** drift), k = K |b| (given), B = |b|^2, q = |b| and S0, S1 = |v| at the ends
 ** (given: no quotient before the log).  Every part is a sum of positive
 ** terms; |b| >= 0.1 here (near_straight takes the rest). */
-static ALWAYS_INLINE double closed_form(double u0, double S0, double S1,
+static ARCLEN_INLINE double closed_form(double u0, double S0, double S1,
                                         double h, double B, double q,
                                         double k) {
   double u1 = u0 + h * B, k2 = k * k, t1, w, N, D;
@@ -174,7 +169,7 @@ static ALWAYS_INLINE double closed_form(double u0, double S0, double S1,
 
 /* arclen_quad_setup's body for a constant dim, its loops unrolled: over a
 ** run-time dim they were 90 of a 2D length's 635 instructions. */
-static ALWAYS_INLINE void setup_dim(const double *p, int dim,
+static ARCLEN_INLINE void setup_dim(const double *p, int dim,
                                     arclen_quad_form *f) {
   double *a = f->a, *c = f->c, *b = f->b, mx = 0;
   int k, e, half = 0;

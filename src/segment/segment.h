@@ -6,13 +6,17 @@
 #ifndef ARCLEN_SEGMENT_H
 #define ARCLEN_SEGMENT_H
 
-/* A function kept out of line where the compiler can be told so. */
+/* A function kept out of line, or inlined at each call, where the
+** compiler can be told so. */
 #if defined(__GNUC__)
 #define ARCLEN_NOINLINE __attribute__((noinline))
+#define ARCLEN_INLINE __attribute__((always_inline)) inline
 #elif defined(_MSC_VER)
 #define ARCLEN_NOINLINE __declspec(noinline)
+#define ARCLEN_INLINE __forceinline
 #else
 #define ARCLEN_NOINLINE
+#define ARCLEN_INLINE inline
 #endif
 
 /* Euclidean norm of v[0 .. dim-1] without overflow or underflow. */
