@@ -37,6 +37,9 @@ static double segs[ARCLEN_SEG_NKINDS][N][ARCLEN_SEG_MAXN];
 static double raised[N][8];          /* the quadratics as cubics */
 static double halves[ARCLEN_SEG_NKINDS][N];
 static volatile double sink;
+/* the kinds in the tables' order, the cubic first */
+static const int order[ARCLEN_SEG_NKINDS] = {
+  ARCLEN_SEG_CUBIC, ARCLEN_SEG_QUAD, ARCLEN_SEG_LINE, ARCLEN_SEG_CONIC};
 /* rtol 1e-12's median lengths of the cubic, line and quadratic */
 static double lens12[3];
 /* the same, from the passes over all segments */
@@ -93,8 +96,6 @@ static double one_pass(int kind, int want_time, double rtol) {
 /* PASSES rounds, each timing every kind's length and time pass in turn
 ** (so that the host's state moves them alike): median ns per call. */
 static void passes(double rtol) {
-  static const int order[ARCLEN_SEG_NKINDS] = {
-    ARCLEN_SEG_CUBIC, ARCLEN_SEG_QUAD, ARCLEN_SEG_LINE, ARCLEN_SEG_CONIC};
   double ns[2][ARCLEN_SEG_NKINDS + 1][PASSES], med[2][ARCLEN_SEG_NKINDS + 1];
   int r, k, wt;
   for (r = 0; r < PASSES; r++)
@@ -131,8 +132,6 @@ static void passes(double rtol) {
 ** ratios to the cubic's, the median evaluations and time / length. */
 static void table(double rtol) {
   static double times[4][ARCLEN_SEG_NKINDS][N], evals[2][ARCLEN_SEG_NKINDS][N];
-  static const int order[ARCLEN_SEG_NKINDS] = {
-    ARCLEN_SEG_CUBIC, ARCLEN_SEG_QUAD, ARCLEN_SEG_LINE, ARCLEN_SEG_CONIC};
   double med[4][ARCLEN_SEG_NKINDS];
   int i, k, b, r, wt;
   for (i = 0; i < N; i++)
