@@ -226,7 +226,7 @@ describe("a quadratic's time against 40-digit references", function()
 end)
 
 describe("a quadratic's time: the measure does not change", function()
-  it("segment_time clamps at segment_length's total (one set-up for both)", function()
+  it("segment_time clamps at segment_length's total (the one whole length)", function()
     -- the time at exactly L is 1 and just below L is below 1: the total the
     -- search clamps against is the closed form's own
     for _, c in ipairs(cases()) do
@@ -247,5 +247,46 @@ describe("a quadratic's time: the measure does not change", function()
     assert.are.equal(0, ts[1])
     assert.are.equal(1, ts[3])
     assert(max(ts[2], 0) > 0 and ts[2] < 1)
+  end)
+end)
+
+-- The set-up scales the legs by a power of two only where their largest
+-- component lies outside [2^-100, 2^100] (quad.c setup_dim); inside it
+-- takes them as they are, because every operation the length and the time
+-- take commutes exactly with a power of two.  So a quadratic scaled by 2^k
+-- has the length times 2^k and the same times, bit for bit, on both sides
+-- of the range's ends: a claim the two paths must keep.
+describe("a quadratic scaled by a power of two", function()
+  local ks = {-300, -160, -101, -100, -99, -50, -1, 0, 1, 50, 99, 100, 101, 160, 300}
+  it("has its length times 2^k and the same times, bit for bit", function()
+    local gen = H.uniform(777)
+    for i = 1, 40 do
+      local dim = i % 4 == 0 and 3 or 2
+      local q = {}
+      for k = 1, 3 * dim do q[k] = 10 * gen() - 5 end
+      local L = arclen.segment_length("quad", q)
+      local sub = arclen.segment_length("quad", q, {t0 = 0.25, t1 = 0.8})
+      local fr = {gen(), 0.5, 1 - 2 ^ -20}
+      local times = {}
+      for j, f in ipairs(fr) do
+        times[j] = arclen.segment_time("quad", q, f * L, {tol = 1e-12})
+        times[j + 3] = arclen.segment_time("quad", q, f * L, {tol = 1e-15})
+      end
+      for _, k in ipairs(ks) do
+        local p, sc = {}, 2 ^ k
+        for j = 1, #q do p[j] = q[j] * sc end
+        local Lk = arclen.segment_length("quad", p)
+        assert(Lk == L * sc, ("quad %d at 2^%d: length %.17g, want %.17g"):format(i, k, Lk, L * sc))
+        assert.are.equal(sub * sc, arclen.segment_length("quad", p, {t0 = 0.25, t1 = 0.8}))
+        for j, f in ipairs(fr) do
+          for m, tol in ipairs({1e-12, 1e-15}) do
+            local t = arclen.segment_time("quad", p, f * L * sc, {tol = tol})
+            assert(t == times[j + 3 * (m - 1)],
+                   ("quad %d at 2^%d, s = %.3g L, tol %g: t %.17g, want %.17g")
+                     :format(i, k, f, tol, t, times[j + 3 * (m - 1)]))
+          end
+        end
+      end
+    end
   end)
 end)

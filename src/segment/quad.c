@@ -20,11 +20,12 @@
 #include "curve/numeric.h"
 #include "segment/segment.h"
 
-/* The set-up and a span's length each have two callers (the length and
-** the time's set-up) and must give both the same bits: one body each, not
-** inlined, so that no compiler contracts their products differently at
-** two sites (clang -ffp-contract=fast did: a time at L read 1 - 2^-50).
-** The closed form is inline in the span's one body. */
+/* The set-up and a span's length each have two callers (a sub-range's
+** length and the time) and must give both the same bits: one body each,
+** not inlined, so that no compiler contracts their products differently
+** at two sites (clang -ffp-contract=fast did: a time at L read 1 -
+** 2^-50).  The whole length, inlined for speed (arclen_quad_whole), is
+** the time's total too, so it needs no twin. */
 #define ONE_BODY ARCLEN_NOINLINE
 
 /* The 10-point Gauss-Legendre rule on [0, 1], nodes x < 1/2 and their
@@ -69,6 +70,9 @@ static void speed_vector(const double *a, const double *c, int dim, double t,
   v[1] = s * a[1] + t * c[1];
   if (dim == 3) v[2] = s * a[2] + t * c[2];
 }
+
+/* The largest leg component that the set-up takes as it is (setup_dim). */
+#define UNSCALED 0x1p100
 
 /* 2^e for e in [-1022, 1023], from its bits (ldexp costs a call and a
 ** rounding-mode-proof path that exact powers of two do not need). */
@@ -167,69 +171,102 @@ static ARCLEN_INLINE double closed_form(double u0, double S0, double S1,
   return t1 + k2 / (B * q) * log_ratio(N, D, w);
 }
 
+/* The legs' k-th components P1 - P0 and P2 - P1 of the points times s (1,
+** or 1/2 where a difference overflows: exact), and the largest size. */
+static ARCLEN_INLINE void leg_pair(const double *p, int dim, int k, double s,
+                                   double *la, double *lc, double *mx) {
+  la[k] = p[dim + k] * s - p[k] * s;
+  lc[k] = p[2 * dim + k] * s - p[dim + k] * s;
+  *mx = arclen_max(*mx, arclen_max(fabs(la[k]), fabs(lc[k])));
+}
+
+/* The k-th components of the legs times sc = 2^-e (ldexp where sc = 0:
+** 2^-e is not a double).  Like leg_pair, called with a constant k: la and
+** lc then live in registers, where a loop over k kept them in memory and
+** the vectorizer reloaded two scalar stores as one (a stalled forward). */
+static ARCLEN_INLINE void scale_pair(const double *la, const double *lc,
+                                     int k, double sc, int e, double *a,
+                                     double *c) {
+  a[k] = sc > 0 ? la[k] * sc : ldexp(la[k], -e);
+  c[k] = sc > 0 ? lc[k] * sc : ldexp(lc[k], -e);
+}
+
 /* arclen_quad_setup's body for a constant dim, its loops unrolled: over a
 ** run-time dim they were 90 of a 2D length's 635 instructions. */
 static ARCLEN_INLINE void setup_dim(const double *p, int dim,
                                     arclen_quad_form *f) {
-  double *a = f->a, *c = f->c, *b = f->b, mx = 0;
-  int k, e, half = 0;
+  double *a = f->a, *c = f->c, *b = f->b, mx = 0, la[3], lc[3], sc;
+  int e, half = 0;
   f->dim = dim;
-  for (k = 0; k < dim; k++) {
-    a[k] = p[dim + k] - p[k];
-    c[k] = p[2 * dim + k] - p[dim + k];
-    if (fabs(a[k]) > mx) mx = fabs(a[k]);
-    if (fabs(c[k]) > mx) mx = fabs(c[k]);
-  }
+  f->p = p;
+  f->scale = 0;
+  f->up = f->down = 1;
+  f->S0 = f->Cs = -1;
+  /* the unscaled legs in locals (unrolled: registers), stored once
+  ** scaled: a store of each before the scaling's wide reload of two
+  ** stalled store forwarding */
+  leg_pair(p, dim, 0, 1, la, lc, &mx);
+  leg_pair(p, dim, 1, 1, la, lc, &mx);
+  if (dim == 3) leg_pair(p, dim, 2, 1, la, lc, &mx);
   /* the points are finite (the callers check), so a leg is infinite only
   ** where its difference overflowed: halves then, exact and finite */
   if (mx > DBL_MAX) {
     half = 1;
     mx = 0;
-    for (k = 0; k < dim; k++) {
-      a[k] = p[dim + k] / 2 - p[k] / 2;
-      c[k] = p[2 * dim + k] / 2 - p[dim + k] / 2;
-      if (fabs(a[k]) > mx) mx = fabs(a[k]);
-      if (fabs(c[k]) > mx) mx = fabs(c[k]);
-    }
+    leg_pair(p, dim, 0, 0.5, la, lc, &mx);
+    leg_pair(p, dim, 1, 0.5, la, lc, &mx);
+    if (dim == 3) leg_pair(p, dim, 2, 0.5, la, lc, &mx);
   }
   f->zero = mx == 0;
-  f->scale = 0;
   if (f->zero) return;
-  /* by a power of two to [1/2, 1): no square over- or underflows (a
-  ** product by 2^-e where that is a double, ldexp's rounding otherwise) */
-  e = exponent_of(mx);
-  if (e > -1000 && e < 1000) {
-    double sc = pow2(-e);
-    for (k = 0; k < dim; k++) { a[k] *= sc; c[k] *= sc; }
+  /* by a power of two to [1/2, 1) where the legs are far from 1: no
+  ** square over- or underflows (a product by 2^-e where that is a double,
+  ** ldexp's rounding otherwise).  Within UNSCALED they are taken as they
+  ** are: every product the closed form and the time's bounds take has at
+  ** most six legs' factors (2^+-600), inside the double range, and each
+  ** of +, -, *, /, sqrt (of even powers) and the log of a ratio commutes
+  ** exactly with a power of two, so the results are the scaled form's bit
+  ** for bit (quad_time_spec: 2^k copies), but where a term underflows or
+  ** k^2 meets DBL_MIN (quad_time.c's first guess): terms far below the
+  ** rounding of the rest, a guess the search certifies either way.  The
+  ** scaling's chain (the largest leg, its exponent, the product) took 4
+  ** of a length's 33 ns (bench_segment). */
+  if (mx >= 1 / UNSCALED && mx <= UNSCALED) {
+    e = 0;
+    sc = 1;       /* a product by 1, not a copy: no wide reload of la */
   } else {
-    for (k = 0; k < dim; k++) { a[k] = ldexp(a[k], -e); c[k] = ldexp(c[k], -e); }
+    e = exponent_of(mx);
+    sc = e > -1000 && e < 1000 ? pow2(-e) : 0;
   }
+  scale_pair(la, lc, 0, sc, e, a, c);
+  scale_pair(la, lc, 1, sc, e, a, c);
+  if (dim == 3) scale_pair(la, lc, 2, sc, e, a, c);
   f->scale = e + half;
-  for (k = 0; k < dim; k++) b[k] = c[k] - a[k];
-  f->B = dot(b, b, dim);
-  f->q = sqrt(f->B);
-  f->k = cross_norm(a, c, dim);                  /* a x b = a x c */
-  /* the start's terms for lengths from 0: v(0) = a exactly; |v(0)| only
-  ** where asked (the time's set-up): a sub-range's length has no use for it */
-  f->u0 = dot(a, b, dim);
-  f->m0 = dot(a, a, dim);
-}
-
-/* The set-up's one body, both dimensions. */
-static ONE_BODY void setup_form(const double *p, int dim,
-                                arclen_quad_form *f) {
-  if (dim == 2) setup_dim(p, 2, f);
-  else setup_dim(p, 3, f);
-}
-
-void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f) {
-  setup_form(p, dim, f);
-  f->S0 = f->Cs = -1;
-  f->up = f->down = 1;
-  if (!f->zero && f->scale > -1000 && f->scale < 1000) {
+  if (f->scale > -1000 && f->scale < 1000) {
     f->up = pow2(f->scale);
     f->down = pow2(-f->scale);
   }
+  b[0] = c[0] - a[0];
+  b[1] = c[1] - a[1];
+  if (dim == 3) b[2] = c[2] - a[2];
+  f->B = dot(b, b, dim);
+  f->q = sqrt(f->B);
+  f->k = cross_norm(a, c, dim);                  /* a x b = a x c */
+  /* the start's terms for lengths from 0: v(0) = a exactly */
+  f->u0 = dot(a, b, dim);
+  f->m0 = dot(a, a, dim);
+  f->S0 = sqrt(f->m0);
+  /* |c| from above, for the time's roundings' bounds and its lazy
+  ** search's test: a square root fewer (|c| itself only in length_below;
+  ** unused, the length's copy drops it) */
+  f->Cs = fabs(c[0]) + fabs(c[1]) + (dim == 3 ? fabs(c[2]) : 0);
+}
+
+/* The set-up's one body for a sub-range's length and the time, both
+** dimensions. */
+ONE_BODY void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f) {
+  if (dim == 2) setup_dim(p, 2, f);
+  else setup_dim(p, 3, f);
 }
 
 /* Whether near_straight() serves the span of h from v.b = u0, |v|^2 = m0
@@ -248,9 +285,10 @@ static int straight_enough(const arclen_quad_form *f, double h, double u0,
 ** |v|^2 and S0 = |v| given (S0 < 0: not yet taken), the end's |v|^2 and
 ** |v| into *m1 and *S1 (the latter only where the closed form took it,
 ** else -1).  *gauss: whether the short Gauss rule served. */
-static ONE_BODY double span(const arclen_quad_form *f, double lo,
-                                 double h, double u0, double m0, double S0,
-                                 double *m1, double *S1, int *gauss) {
+static ARCLEN_INLINE double span_body(const arclen_quad_form *f, double lo,
+                                      double h, double u0, double m0,
+                                      double S0, double *m1, double *S1,
+                                      int *gauss) {
   double v1[3];
   const double *a = f->a, *c = f->c;
   int dim = f->dim;
@@ -267,10 +305,35 @@ static ONE_BODY double span(const arclen_quad_form *f, double lo,
   return closed_form(u0, S0 < 0 ? sqrt(m0) : S0, *S1, h, f->B, f->q, f->k);
 }
 
+/* span's one body for a sub-range and the time's measured points. */
+static ONE_BODY double span(const arclen_quad_form *f, double lo, double h,
+                            double u0, double m0, double S0, double *m1,
+                            double *S1, int *gauss) {
+  return span_body(f, lo, h, u0, m0, S0, m1, S1, gauss);
+}
+
 /* L (of the scaled form) times 2^scale, in user units. */
 static double unscaled(const arclen_quad_form *f, double L) {
   return f->scale > -1000 && f->scale < 1000 ? L * pow2(f->scale)
                                              : ldexp(L, f->scale);
+}
+
+/* The whole segment's length in user units, set-up and span inlined for
+** a constant dim: no call between them spills the form (a quadratic's
+** arclen_segment_length took 522 instructions through the out-of-line
+** set-up and span).  The length over [0, 1] and the time's total both
+** come from here, so that a time at the length is 1. */
+static ARCLEN_INLINE double whole_dim(const double *p, int dim, int *gauss) {
+  arclen_quad_form f;
+  double m1, S1;
+  setup_dim(p, dim, &f);
+  *gauss = 0;
+  if (f.zero) return 0;
+  return unscaled(&f, span_body(&f, 0, 1, f.u0, f.m0, f.S0, &m1, &S1, gauss));
+}
+
+ONE_BODY double arclen_quad_whole(const double *p, int dim, int *gauss) {
+  return dim == 2 ? whole_dim(p, 2, gauss) : whole_dim(p, 3, gauss);
 }
 
 double arclen_quad_form_length(const arclen_quad_form *f, double t,
@@ -286,38 +349,46 @@ int arclen_quad_form_gauss(const arclen_quad_form *f) {
          && straight_enough(f, 1, f->u0, f->m0, dot(f->c, f->c, f->dim));
 }
 
-double arclen_quad_form_unscale(const arclen_quad_form *f, double L) {
-  return unscaled(f, L);
-}
-
 double arclen_quad_form_speed(const arclen_quad_form *f, double t) {
   double v[3];
   speed_vector(f->a, f->c, f->dim, t, v);
   return norm(v, f->dim);
 }
 
-int arclen_quad_length(const double *p, int dim, double t0, double t1,
-                       double *len, int *gauss) {
+/* The length over [t0, t1], h = |t1 - t0| in (0, 1), in user units
+** (negative for t1 < t0; 0 for a point): out of line, so that the whole's
+** calls keep a small frame. */
+static ARCLEN_NOINLINE double part_length(const double *p, int dim, double t0,
+                                          double t1, double h, int *gauss) {
   arclen_quad_form f;
-  double lo = t0 < t1 ? t0 : t1, h = fabs(t1 - t0), L, m1, S1, u0, m0;
-  double v0[3];
-  int g = 0;
-  setup_form(p, dim, &f);
-  *len = 0;
-  if (gauss) *gauss = 0;
-  if (f.zero || h == 0) return ARCLEN_OK;
+  double lo = t0 < t1 ? t0 : t1, m1, S1, u0, m0, S0, v0[3], L;
+  arclen_quad_setup(p, dim, &f);
+  if (f.zero) return 0;
   if (lo == 0) {                /* v(0) = a: the set-up's terms */
     u0 = f.u0;
     m0 = f.m0;
+    S0 = f.S0;
   } else {
     speed_vector(f.a, f.c, dim, lo, v0);
     u0 = dot(v0, f.b, dim);
     m0 = dot(v0, v0, dim);
+    S0 = -1;
   }
-  L = span(&f, lo, h, u0, m0, -1, &m1, &S1, &g);
+  L = unscaled(&f, span(&f, lo, h, u0, m0, S0, &m1, &S1, gauss));
+  return t1 < t0 ? -L : L;
+}
+
+int arclen_quad_length(const double *p, int dim, double t0, double t1,
+                       double *len, int *gauss) {
+  double h = fabs(t1 - t0), L = 0;
+  int g = 0;
+  if (h == 1) {                                      /* [0, 1] or [1, 0] */
+    L = arclen_quad_whole(p, dim, &g);
+    if (t1 < t0 && L != 0) L = -L;                   /* a point's is +0 */
+  } else if (h > 0) {
+    L = part_length(p, dim, t0, t1, h, &g);
+  }
   if (gauss) *gauss = g;
-  L = unscaled(&f, L);
-  if (t1 < t0) L = -L;
   *len = L;
   return isfinite(L) ? ARCLEN_OK : ARCLEN_EOVERFLOW;
 }

@@ -193,15 +193,6 @@ static double measure(const arclen_quad_form *F, double x, double *S,
   return len;
 }
 
-void arclen_quad_time_setup(const double *p, int dim, arclen_quad_form *F) {
-  arclen_quad_setup(p, dim, F);
-  if (F->zero) return;
-  F->S0 = sqrt(F->m0);
-  /* |c| from above, for the roundings' bounds and the lazy search's test:
-  ** a square root fewer on the call (|c| itself only in length_below) */
-  F->Cs = fabs(F->c[0]) + fabs(F->c[1]) + (dim == 3 ? fabs(F->c[2]) : 0);
-}
-
 /* G^-1(y) for 0 <= y < 2^ARCLEN_QI_JMAX, G(U) = U sqrt(1 + U^2) + asinh U:
 ** below the table U = y/2 - y^3/48 (G = 2U + U^3/3 - U^5/20 ..., the next
 ** term 13 y^5/3840 is below 1e-11 of U there), else the piece's polynomial
@@ -338,11 +329,9 @@ static double first_guess(const arclen_quad_form *F, double g, double room,
 /* The segment's length in its units, measured where the caller has none
 ** (*total not positive and finite); 0 where it overflows. */
 static int know_total(const arclen_quad_form *F, double *total) {
-  double m1, S1;
   int gauss;
   if (*total > 0 && isfinite(*total)) return 1;
-  *total = arclen_quad_form_unscale(F, arclen_quad_form_length(F, 1, &m1,
-                                                               &S1, &gauss));
+  *total = arclen_quad_whole(F->p, F->dim, &gauss);  /* the length's bits */
   return isfinite(*total);
 }
 
@@ -405,7 +394,7 @@ int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
                      double rtol, double from[3], double *t, long *evals) {
   int e2 = -F->scale, i, lazy, ok, rc;
   double down = F->down, up = F->up;
-  double g, T = NAN, tol = 0, lo, hi = 1, x, f, err, S, e = 0, bnd, len, r;
+  double g, T = NAN, tol = 0, lo, hi = 1, x = -1, f, err, S, e = 0, bnd, len, r;
   double best, bestf, bestlen, besterr, last = HUGE_VAL;
   *evals = 0;
   if (F->zero) {                     /* a point: every length is 0 */
@@ -438,10 +427,17 @@ int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
     tol = times_pow2(tol, e2, down);
   }
   lo = from[0];
-  best = lo;
+  if (!(lo > 0)) {
+    /* the table's answer where its bound is within tol: in a lazy search
+    ** L >= s(x) >= g - bnd for x < 1 gives tol */
+    x = first_guess(F, g, lazy ? rtol * g : tol, &bnd);
+    if (x >= 0 && x < 1
+        && bnd <= (lazy ? rtol * (g - bnd) : tol) * (1 - 1.0 / 1024))
+      return answer(F, x, s, bnd, from, t);
+  }
+  /* the search's start: the last answer's length and its bound */
   bestlen = times_pow2(from[1], e2, down);
   besterr = times_pow2(from[2], e2, down);
-  bestf = fabs(bestlen - g);
   if (lo > 0) {
     /* a sweep's last answer: the step from it, its bound carried */
     S = arclen_quad_form_speed(F, lo);     /* no length measured there */
@@ -450,14 +446,9 @@ int arclen_quad_time(const arclen_quad_form *F, double *total, double s,
         && lo + e > lo && lo + e < 1)
       return answer(F, lo + e, s, bnd, from, t);
     x = S > 0 ? lo + e : -1;
-  } else {
-    /* the table's answer where its bound is within tol: in a lazy search
-    ** L >= s(x) >= g - bnd for x < 1 gives tol */
-    x = first_guess(F, g, lazy ? rtol * g : tol, &bnd);
-    if (x >= 0 && x < 1
-        && bnd <= (lazy ? rtol * (g - bnd) : tol) * (1 - 1.0 / 1024))
-      return answer(F, x, s, bnd, from, t);
   }
+  best = lo;
+  bestf = fabs(bestlen - g);
   if (!(x > lo && x < hi) && lazy) {          /* the fallbacks need T */
     lazy = 0;
     if (!settle(F, total, rtol, s, &T, &tol, from, t, &rc)) return rc;

@@ -537,7 +537,7 @@ static int plain_times(int kind, int dim, const double *seg, double total,
   int rc, e;
   if (kind == ARCLEN_SEG_QUAD) {
     arclen_quad_form f;
-    arclen_quad_time_setup(seg, dim, &f);
+    arclen_quad_setup(seg, dim, &f);
     return quad_times(&f, total, s, n, rtol, t, evals);
   }
   e = kind == ARCLEN_SEG_LINE ? 0 : setup_ctx(kind, dim, seg, scaled, &c);
@@ -568,15 +568,16 @@ static int plain_times(int kind, int dim, const double *seg, double total,
   return ARCLEN_OK;
 }
 
-/* A quadratic's time at s: one set-up for its length (bit for bit
-** arclen_quad_length's over [0, 1]) and the search. */
+/* A quadratic's time at s: the set-up and one search (its total, where
+** it needs one, arclen_quad_length's over [0, 1]). */
 static int quad_time(int dim, const double *seg, double s, double rtol,
                      double *t, arclen_info *info) {
   arclen_quad_form f;
+  double total = NAN, from[3] = {0, 0, 0};
   long evals = 0;
   int gauss, rc;
-  arclen_quad_time_setup(seg, dim, &f);
-  rc = quad_times(&f, NAN, &s, 1, rtol, t, &evals);
+  arclen_quad_setup(seg, dim, &f);
+  rc = arclen_quad_time(&f, &total, s, rtol, from, t, &evals);
   if (info) {
     gauss = arclen_quad_form_gauss(&f);
     info->branch = gauss ? "quad-gauss" : "quad";

@@ -34,38 +34,41 @@ void arclen_line_sub(const double *p, int dim, double t0, double t1,
 ** when the short Gauss rule was used instead of the closed form. */
 int arclen_quad_length(const double *p, int dim, double t0, double t1,
                        double *len, int *gauss);
+/* Its length over [0, 1] (arclen_quad_length's, and the time's total):
+** infinite where it overflows. */
+double arclen_quad_whole(const double *p, int dim, int *gauss);
 /* A quadratic set up once for its lengths from 0 (quad.c) and its time at
-** a length (quad_time.c): the legs a = P1 - P0, c = P2 - P1 scaled by a
-** power of two into [1/2, 1) (halved first where a difference overflows),
-** b = c - a, B = |b|^2, q = |b|, k = |a x c|, and v(0) = a's u0 = a.b, m0 =
-** |a|^2; for the time (arclen_quad_setup; -1 until quad_time.c's set-up
-** takes them) S0 = |a| and Cs = |c_1| + |c_2| (+ |c_3|) >= |c| = |v(1)|;
-** up = 2^scale, down = 2^-scale where both are doubles (|scale| < 1000).
-** Lengths of the scaled form times 2^scale are the segment's.  zero: all
-** three points equal. */
+** a length (quad_time.c): the legs a = P1 - P0, c = P2 - P1, scaled by a
+** power of two into [1/2, 1) where their largest component lies outside
+** [2^-100, 2^100] (halved first where a difference overflows), b = c - a,
+** B = |b|^2, q = |b|, k = |a x c|, and v(0) = a's u0 = a.b, m0 = |a|^2, S0
+** = |a|; Cs = |c_1| + |c_2| (+ |c_3|) >= |c| = |v(1)|; up = 2^scale, down
+** = 2^-scale where both are doubles (|scale| < 1000; else 1).  Lengths of
+** the scaled form times 2^scale are the segment's.  zero: all three
+** points equal (S0, Cs -1).  p: the points, for the total
+** (arclen_quad_whole). */
 typedef struct arclen_quad_form {
   double a[3], c[3], b[3], B, q, k, u0, m0, S0, Cs, up, down;
+  const double *p;
   int dim, scale, zero;
 } arclen_quad_form;
 void arclen_quad_setup(const double *p, int dim, arclen_quad_form *f);
-/* The scaled form's length over [0, t], t in (0, 1], bit for bit
-** arclen_quad_length's (before the scale): |v(t)|^2 into *m1 and |v(t)|
-** into *S1 where the closed form took it (else -1); *gauss as below. */
+/* The scaled form's length over [0, t], t in (0, 1), bit for bit
+** arclen_quad_length's over [0, t] (before the scale): |v(t)|^2 into *m1
+** and |v(t)| into *S1 where the closed form took it (else -1); *gauss as
+** below. */
 double arclen_quad_form_length(const arclen_quad_form *f, double t,
                                double *m1, double *S1, int *gauss);
-/* L of the scaled form in the segment's units (times 2^scale). */
-double arclen_quad_form_unscale(const arclen_quad_form *f, double L);
 /* |v(t)| of the scaled form, v = (1 - t) a + t c (half the speed). */
 double arclen_quad_form_speed(const arclen_quad_form *f, double t);
 /* Whether the form's length over [0, 1] takes the short Gauss rule. */
 int arclen_quad_form_gauss(const arclen_quad_form *f);
-/* quad_time.c: the set-up above with S0 and Sc, and the time at the
-** length s (*total: the segment's length as the caller has it, or NAN:
-** measured and stored where the search needs it; rtol relative to it;
-** from: as arclen_seg_invert's, below; *evals: the lengths measured at
-** points inside), all in the segment's units; ARCLEN_EOVERFLOW where the
-** length overflows. */
-void arclen_quad_time_setup(const double *p, int dim, arclen_quad_form *f);
+/* quad_time.c: the time at the length s on the set-up form (*total: the
+** segment's length as the caller has it, or NAN: measured and stored
+** where the search needs it; rtol relative to it; from: as
+** arclen_seg_invert's, below; *evals: the lengths measured at points
+** inside), all in the segment's units; ARCLEN_EOVERFLOW where the length
+** overflows. */
 int arclen_quad_time(const arclen_quad_form *f, double *total, double s,
                      double rtol, double from[3], double *t, long *evals);
 void arclen_quad_point(const double *p, int dim, double t, double *out);
