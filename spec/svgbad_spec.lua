@@ -113,6 +113,9 @@ describe("arclen.svg: bad documents, each a clear error naming the file and plac
       {'<polyline points="0 0 3 4 9"/>', 5, "<polyline>: points: an odd number of coordinates; the last one left out"},
       {'<polygon points="0 0 3 4 3 x 0"/>', 10, "<polygon>: points: not a number at character 11; drawn up to it"},
       {'<polyline points="0 x"/>', 0, "<polyline>: points: not a number at character 3; nothing drawn"},
+      -- a nested viewport's width auto: 100% of the 10 x 10 parent's, so
+      -- the path in it as drawn (it was an error)
+      {'<svg width="-5" height="4"><path d="M0 0 L3 0"/></svg>', 3, "<svg>: width must not be negative %(%-5%); taken as auto"},
     }
     for _, c in ipairs(cases) do
       local text = H .. c[1] .. '<path d="M0 0 L1 0"/></svg>'
@@ -125,6 +128,27 @@ describe("arclen.svg: bad documents, each a clear error naming the file and plac
       assert.is_string(e, c[1])
       assert.matches("^bad%.svg:1:" .. COL .. ": " .. c[3]:gsub("; .*$", "") .. "$", e)
     end
+  end)
+
+  it("a negative width of a <use> or of the root: auto, with a warning", function()
+    -- <use width="-2" height="5"> of a 1 x 1 symbol: width auto, 100% of
+    -- the 10 x 10 viewport, so the symbol meets 10 x 5: scale 5
+    local use = '<symbol id="s" viewBox="0 0 1 1"><path d="M0 0 L1 0"/></symbol>'
+    local at = #H + #use + 1
+    local text = H .. use .. '<use href="#s" width="-2" height="5"/></svg>'
+    local e, doc = err_of(text)
+    assert.is_nil(e)
+    assert.is_true(math.abs(doc.total - 5) <= 1e-12 * 5, doc.total)
+    assert.matches("^bad%.svg:1:" .. at .. ": <use>: width must not be negative %(%-2%); taken as auto$", doc.warnings[1])
+    e = err_of(text, nil, {strict = true})
+    assert.matches("^bad%.svg:1:" .. at .. ": <use>: width must not be negative %(%-2%)$", e)
+    -- the root's height auto: the viewBox's own size, as without one
+    text = '<svg xmlns="http://www.w3.org/2000/svg" width="20" height="-1" viewBox="0 0 10 10"><path d="M0 0 L1 0"/></svg>'
+    e, doc = err_of(text)
+    assert.is_nil(e)
+    assert.are.equal(1, doc.total)
+    assert.matches("^bad%.svg:1:1: <svg>: height must not be negative %(%-1%); taken as auto$", doc.warnings[1])
+    assert.matches("^bad%.svg:1:1: <svg>: height must not be negative %(%-1%)$", err_of(text, nil, {strict = true}))
   end)
 
   it("a singular transform: not drawn, with a warning naming the place", function()

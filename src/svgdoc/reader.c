@@ -477,6 +477,21 @@ static int shown(const svgdoc *D, const svgdoc_paint *p, const char *tag) {
   return 1;
 }
 
+/* Whether a width or height of an <svg>, <symbol> or <use> is given: a
+** negative one is invalid, taken as not given (auto, 100% of the
+** viewport: SVG 2 reads an invalid geometry property as its initial
+** value) with a warning, an error under o.strict. */
+static int size_given(svgdoc *D, unsigned long line, unsigned long col,
+                      const char *tag, const char *name, int has,
+                      double v) {
+  char num[32];
+  if (!has || !(v < 0)) return has;
+  svgdoc_num(num, v);
+  svgdoc_lenient(D, line, col, svgdoc_format(D, "<%s>: %s must not be "
+                 "negative (%s)", tag, name, num), "taken as auto");
+  return 0;
+}
+
 /* Is the CTM's linear part [[a c] [b d]] singular: is its smaller
 ** singular value zero?  Judged on the matrix scaled by a power of two so
 ** that its largest entry is in [1/2, 1) (exact), where the determinant
@@ -626,17 +641,23 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
     svgdoc_matrix V;
     svgdoc_len_attr(D, line, col, atts, "x", 'x', vp, &x);
     svgdoc_len_attr(D, line, col, atts, "y", 'y', vp, &y);
-    if (sh && sh->root && sh->u->has_w) hw = 1, w = sh->u->w;
-    else hw = svgdoc_len_attr(D, line, col, atts, "width", 'x', vp, &w);
-    if (sh && sh->root && sh->u->has_h) hh = 1, h = sh->u->h;
-    else hh = svgdoc_len_attr(D, line, col, atts, "height", 'y', vp, &h);
+    if (sh && sh->root && sh->u->has_w) {
+      hw = 1, w = sh->u->w;
+    } else {
+      hw = svgdoc_len_attr(D, line, col, atts, "width", 'x', vp, &w);
+      hw = size_given(D, line, col, tag, "width", hw, w);
+    }
+    if (sh && sh->root && sh->u->has_h) {
+      hh = 1, h = sh->u->h;
+    } else {
+      hh = svgdoc_len_attr(D, line, col, atts, "height", 'y', vp, &h);
+      hh = size_given(D, line, col, tag, "height", hh, h);
+    }
     if ((!hw || !hh) && !vp->has)
       svgdoc_fail(D, line, col, "<%s> without width and height needs a "
                   "viewport", tag);
     if (!hw) w = vp->w;
     if (!hh) h = vp->h;
-    svgdoc_nonneg(D, line, col, w, "width");
-    svgdoc_nonneg(D, line, col, h, "height");
     if (w == 0 || h == 0) { f->skip = 1; return; }
     svgdoc_translate(x, y, V);
     f->vp.has = 1, f->vp.w = w, f->vp.h = h;
@@ -693,6 +714,8 @@ static void open_element(svgdoc *D, svgdoc_frame *parent, svgdoc_frame *f,
     svgdoc_len_attr(D, line, col, atts, "y", 'y', vp, &uy);
     hw = svgdoc_len_attr(D, line, col, atts, "width", 'x', vp, &uw);
     hh = svgdoc_len_attr(D, line, col, atts, "height", 'y', vp, &uh);
+    hw = size_given(D, line, col, "use", "width", hw, uw);
+    hh = size_given(D, line, col, "use", "height", hh, uh);
     s = href;
     while (s && svgdoc_space((unsigned char)*s)) s++;
     if (href == NULL) {
@@ -1007,8 +1030,8 @@ static void open_root(svgdoc *D, const char **atts, unsigned long line,
     hw = svgdoc_len_attr(D, line, col, atts, "width", 'x', &none, &w);
   if (hs && !strchr(hs, '%'))
     hh = svgdoc_len_attr(D, line, col, atts, "height", 'y', &none, &h);
-  if (hw) svgdoc_nonneg(D, line, col, w, "width");
-  if (hh) svgdoc_nonneg(D, line, col, h, "height");
+  hw = size_given(D, line, col, "svg", "width", hw, w);
+  hh = size_given(D, line, col, "svg", "height", hh, h);
   memset(f, 0, sizeof *f);
   f->depth = 1;
   f->vp.em = f->vp.rem = none.em;
