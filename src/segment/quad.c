@@ -202,9 +202,9 @@ static ARCLEN_INLINE void setup_dim(const double *p, int dim,
   f->scale = 0;
   f->up = f->down = 1;
   f->S0 = f->Cs = -1;
-  /* the unscaled legs in locals (unrolled: registers), stored once
-  ** scaled: a store of each before the scaling's wide reload of two
-  ** stalled store forwarding */
+  /* the legs unscaled in locals (constant indices: registers) and stored
+  ** once scaled; stored first and scaled in place, two scalar stores came
+  ** back as one wide load, a stalled store forward */
   leg_pair(p, dim, 0, 1, la, lc, &mx);
   leg_pair(p, dim, 1, 1, la, lc, &mx);
   if (dim == 3) leg_pair(p, dim, 2, 1, la, lc, &mx);
@@ -223,7 +223,7 @@ static ARCLEN_INLINE void setup_dim(const double *p, int dim,
   ** square over- or underflows (a product by 2^-e where that is a double,
   ** ldexp's rounding otherwise).  Within UNSCALED they are taken as they
   ** are: every product the closed form and the time's bounds take has at
-  ** most six legs' factors (2^+-600), inside the double range, and each
+  ** most six legs' factors (within 2^+-610), inside the double range, and each
   ** of +, -, *, /, sqrt (of even powers) and the log of a ratio commutes
   ** exactly with a power of two, so the results are the scaled form's bit
   ** for bit (quad_time_spec: 2^k copies), but where a term underflows or
