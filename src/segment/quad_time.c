@@ -43,6 +43,11 @@
 /* The unit roundoff, 2^-53. */
 #define U (DBL_EPSILON / 2)
 
+/* The mantissa's bits below a piece's (PIECE_BITS) and their weight in
+** the piece's r in [-1, 1): 2 NSUB 2^-52 */
+#define PIECE_BITS (52 - ARCLEN_QI_NSUB_BITS)
+#define PIECE_SCALE (2.0 * ARCLEN_QI_NSUB / 4503599627370496.0)
+
 /* G^-1's table covers y in [TABLE_MIN, TABLE_MAX) (quad_inverse_table.h) */
 #define TABLE_MIN (1.0 / (1 << -ARCLEN_QI_JMIN))
 #define TABLE_MAX ((double)(1L << ARCLEN_QI_JMAX))
@@ -199,22 +204,19 @@ static double measure(const arclen_quad_form *F, double x, double *S,
 ** (quad_inverse_table.h: within ARCLEN_QI_EPS units of U of G^-1(y)). */
 static double g_inverse(double y) {
   const double *c;
-  uint64_t bits, top;
-  double m, centre, r, r2;
-  int e;
+  uint64_t bits, row;
+  double r, r2;
   if (y < TABLE_MIN) return y / 2 * (1 - y * y / 24);
-  /* from the bits, beside the arithmetic: the octave, the piece (the
-  ** mantissa's top bits), m in [1, 2) and the piece's centre */
+  /* from the bits: the row (the exponent and the mantissa's top bits,
+  ** octave and piece counted on from the table's first) and r, the other
+  ** bits as the place in the piece: an integer below 2^48 times 2^-47,
+  ** less 1, all exact (the piece's centre at 0) */
   memcpy(&bits, &y, sizeof bits);
-  e = (int)(bits >> 52) - 1023;
-  top = (bits >> (52 - ARCLEN_QI_NSUB_BITS)) & (ARCLEN_QI_NSUB - 1);
-  bits = (bits & (((uint64_t)1 << 52) - 1)) | ((uint64_t)1023 << 52);
-  memcpy(&m, &bits, sizeof m);
-  bits = (bits >> (52 - ARCLEN_QI_NSUB_BITS) << (52 - ARCLEN_QI_NSUB_BITS))
-         | ((uint64_t)1 << (51 - ARCLEN_QI_NSUB_BITS));
-  memcpy(&centre, &bits, sizeof centre);
-  r = (m - centre) * (2 * ARCLEN_QI_NSUB);                 /* both exact */
-  c = arclen_qi_ginv[e - ARCLEN_QI_JMIN][top];
+  row = (bits >> PIECE_BITS) - ((uint64_t)(1023 + ARCLEN_QI_JMIN)
+                                << ARCLEN_QI_NSUB_BITS);
+  c = arclen_qi_ginv[row >> ARCLEN_QI_NSUB_BITS][row & (ARCLEN_QI_NSUB - 1)];
+  r = (double)(int64_t)(bits & (((uint64_t)1 << PIECE_BITS) - 1)) * PIECE_SCALE
+      - 1;
   r2 = r * r;
   return ((c[0] + c[1] * r) + r2 * (c[2] + c[3] * r))
          + r2 * r2 * ((c[4] + c[5] * r) + r2 * (c[6] + c[7] * r));
