@@ -201,7 +201,6 @@ static ARCLEN_INLINE void setup_dim(const double *p, int dim,
   f->p = p;
   f->scale = 0;
   f->up = f->down = 1;
-  f->S0 = f->Cs = -1;
   /* the legs unscaled in locals (constant indices: registers) and stored
   ** once scaled; stored first and scaled in place, two scalar stores came
   ** back as one wide load, a stalled store forward */
@@ -218,7 +217,10 @@ static ARCLEN_INLINE void setup_dim(const double *p, int dim,
     if (dim == 3) leg_pair(p, dim, 2, 0.5, la, lc, &mx);
   }
   f->zero = mx == 0;
-  if (f->zero) return;
+  if (f->zero) {
+    f->S0 = f->Cs = -1;
+    return;
+  }
   /* by a power of two to [1/2, 1) where the legs are far from 1: no
   ** square over- or underflows (a product by 2^-e where that is a double,
   ** ldexp's rounding otherwise).  Within UNSCALED they are taken as they
@@ -242,7 +244,7 @@ static ARCLEN_INLINE void setup_dim(const double *p, int dim,
   scale_pair(la, lc, 1, sc, e, a, c);
   if (dim == 3) scale_pair(la, lc, 2, sc, e, a, c);
   f->scale = e + half;
-  if (f->scale > -1000 && f->scale < 1000) {
+  if (f->scale != 0 && f->scale > -1000 && f->scale < 1000) {
     f->up = pow2(f->scale);
     f->down = pow2(-f->scale);
   }
