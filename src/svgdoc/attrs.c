@@ -54,6 +54,17 @@ double svgdoc_nonneg(svgdoc *D, unsigned long line, unsigned long col,
   return v;
 }
 
+int svgdoc_negative(svgdoc *D, unsigned long line, unsigned long col,
+                    const char *tag, const char *name, double v,
+                    const char *consequence) {
+  char num[32];
+  if (!(v < 0)) return 0;
+  svgdoc_num(num, v);
+  svgdoc_lenient(D, line, col, svgdoc_format(D, "<%s>: %s must not be "
+                 "negative (%s)", tag, name, num), consequence);
+  return 1;
+}
+
 /* ---- lengths -------------------------------------------------------- */
 
 /* A length's unit and what it is in px, px / div (CSS: 1in = 96px); px 0

@@ -188,6 +188,14 @@ void svgdoc_num(char buf[32], double x);
 /* v, or a located error "what must not be negative (v)". */
 double svgdoc_nonneg(svgdoc *D, unsigned long line, unsigned long col,
                      double v, const char *what);
+/* A negative length of an element (v < 0): invalid, so a renderer takes
+** it as not given (SVG 2: a property's invalid value is ignored;
+** web-platform-tests' circle-006, ellipse-006, rect-007) -- the warning
+** "<tag>: name must not be negative (v); consequence", an error under
+** o.strict.  1 when negative. */
+int svgdoc_negative(svgdoc *D, unsigned long line, unsigned long col,
+                    const char *tag, const char *name, double v,
+                    const char *consequence);
 
 /* A <length> (SVG 2 section 4.3) in user units; kind 'x', 'y' or 'o' for
 ** percentages of vp.  what: the attribute's name for messages. */

@@ -484,12 +484,7 @@ static int shown(const svgdoc *D, const svgdoc_paint *p, const char *tag) {
 static int size_given(svgdoc *D, unsigned long line, unsigned long col,
                       const char *tag, const char *name, int has,
                       double v) {
-  char num[32];
-  if (!has || !(v < 0)) return has;
-  svgdoc_num(num, v);
-  svgdoc_lenient(D, line, col, svgdoc_format(D, "<%s>: %s must not be "
-                 "negative (%s)", tag, name, num), "taken as auto");
-  return 0;
+  return has && !svgdoc_negative(D, line, col, tag, name, v, "taken as auto");
 }
 
 /* Is the CTM's linear part [[a c] [b d]] singular: is its smaller

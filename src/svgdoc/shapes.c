@@ -33,21 +33,6 @@ static int radius(svgdoc *D, unsigned long line, unsigned long col,
   return svgdoc_len_attr(D, line, col, atts, name, kind, vp, v);
 }
 
-/* A negative length of a shape (v < 0): invalid, so a renderer takes it
-** as not given (SVG 2 section 10: the property's invalid value is
-** ignored; web-platform-tests' circle-006, ellipse-006, rect-007) -- a
-** warning "consequence", an error under o.strict.  1 when negative. */
-static int negative(svgdoc *D, unsigned long line, unsigned long col,
-                    const char *tag, const char *name, double v,
-                    const char *consequence) {
-  char num[32];
-  if (!(v < 0)) return 0;
-  svgdoc_num(num, v);
-  svgdoc_lenient(D, line, col, svgdoc_format(D, "<%s>: %s must not be "
-                 "negative (%s)", tag, name, num), consequence);
-  return 1;
-}
-
 /* The numbers of points="" into the pool; their count.  An error in them
 ** (SVG 2 section 10.6: a number that is not one, an odd count) is what a
 ** renderer passes over: the pairs before it are drawn, with a warning
@@ -116,13 +101,15 @@ int svgdoc_shape_get(svgdoc *D, unsigned long line, unsigned long col,
     svgdoc_len_attr(D, line, col, atts, "height", 'y', vp, &h);
     /* a negative size is taken as not given: 0, the rect not drawn; a
     ** negative radius as auto */
-    if (negative(D, line, col, tag, "width", w, "not drawn") ||
-        negative(D, line, col, tag, "height", h, "not drawn"))
+    if (svgdoc_negative(D, line, col, tag, "width", w, "not drawn") ||
+        svgdoc_negative(D, line, col, tag, "height", h, "not drawn"))
       return 0;
     hx = radius(D, line, col, atts, "rx", 'x', vp, &rx);
     hy = radius(D, line, col, atts, "ry", 'y', vp, &ry);
-    if (hx && negative(D, line, col, tag, "rx", rx, "taken as auto")) hx = 0;
-    if (hy && negative(D, line, col, tag, "ry", ry, "taken as auto")) hy = 0;
+    if (hx && svgdoc_negative(D, line, col, tag, "rx", rx, "taken as auto"))
+      hx = 0;
+    if (hy && svgdoc_negative(D, line, col, tag, "ry", ry, "taken as auto"))
+      hy = 0;
     if (w == 0 || h == 0) return 0;
     /* auto: the other radius, else 0; then each clamped to half the side */
     if (!hx) rx = hy ? ry : 0;
@@ -140,16 +127,16 @@ int svgdoc_shape_get(svgdoc *D, unsigned long line, unsigned long col,
     svgdoc_len_attr(D, line, col, atts, "cy", 'y', vp, &cy);
     if (tag[0] == 'c') {            /* a negative r is taken as 0 */
       svgdoc_len_attr(D, line, col, atts, "r", 'o', vp, &rx);
-      if (negative(D, line, col, tag, "r", rx, "not drawn")) return 0;
+      if (svgdoc_negative(D, line, col, tag, "r", rx, "not drawn")) return 0;
       ry = rx;
     } else {                        /* a negative radius is taken as auto */
       int hx = radius(D, line, col, atts, "rx", 'x', vp, &rx);
       int hy = radius(D, line, col, atts, "ry", 'y', vp, &ry);
-      if (hx && negative(D, line, col, tag, "rx", rx,
-                         hy && ry >= 0 ? "taken as auto" : "not drawn"))
+      if (hx && svgdoc_negative(D, line, col, tag, "rx", rx,
+                                hy && ry >= 0 ? "taken as auto" : "not drawn"))
         hx = 0;
-      if (hy && negative(D, line, col, tag, "ry", ry,
-                         hx ? "taken as auto" : "not drawn"))
+      if (hy && svgdoc_negative(D, line, col, tag, "ry", ry,
+                                hx ? "taken as auto" : "not drawn"))
         hy = 0;
       if (!hx) rx = hy ? ry : 0;             /* auto: the other one */
       if (!hy) ry = hx ? rx : 0;
