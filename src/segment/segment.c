@@ -92,11 +92,12 @@ int arclen_segment_check(int kind, int dim, const double *seg) {
   return check_segment(kind, dim, seg);
 }
 
-/* The options' shared checks for the kinds that are not cubics. */
+/* Whether rtol is one the kinds that are not cubics take. */
 static int rtol_ok(double rtol) {
   return rtol >= ARCLEN_RTOL_MIN && rtol <= ARCLEN_RTOL_MAX;
 }
 
+/* The options' shared checks for the kinds that are not cubics. */
 static int check_opts(const arclen_opts *o) {
   if (!rtol_ok(o->rtol)) return ARCLEN_ETOL;
   if (!(o->t0 >= 0 && o->t0 <= 1 && o->t1 >= 0 && o->t1 <= 1))
