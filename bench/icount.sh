@@ -16,7 +16,8 @@ count() {   # count MODE: "calls instructions"
 gl=$(count gl24)
 echo "instructions per call, 3000 random cubics in [0,10]^2 (mean)"
 printf '%-40s %7s %12s %7s\n' what calls instructions ratio
-for m in gl24 one multi all all15 time time15 times10 segcubic quad; do
+for m in gl24 one multi all all15 time time15 times10 segcubic quad quadtime \
+    quadtime15; do
   if [ $m = gl24 ]; then r=$gl; else r=$(count $m); fi
   echo "$m $r $gl"
 done | awk '
@@ -30,4 +31,6 @@ done | awk '
   $1 == "times10" { name = "arclen_times, 10 distances a curve (per)" }
   $1 == "segcubic" { name = "arclen_segment_length, the cubic" }
   $1 == "quad" { name = "arclen_segment_length, its quadratic" }
+  $1 == "quadtime" { name = "arclen_segment_time L/2 1e-12, quadratic" }
+  $1 == "quadtime15" { name = "arclen_segment_time L/2 1e-15, quadratic" }
   { per = $3 / $2; printf "%-40s %7d %12.0f %7.2f\n", name, $2, per, per / ($5 / $4) }'
