@@ -337,10 +337,11 @@ static ARCLEN_INLINE double first_guess(const arclen_quad_form *F, double g,
       /* over every t in [0, 1), so that it waits on Y, not on the
       ** table's answer, and runs beside it: u in [u0, u0 + B (1 + 3U)],
       ** so |u| at most umax, at least umin (0 where the vertex may lie
-      ** inside), t B and |d| each below 1.01 B; and |u| <= sqrt(|Y|)
-      ** (G(U) >= U^2), with |Y| from above before the log: |w| <= z (the
-      ** log's argument) where z >= 1, and |w| < 0.02 where z < 1 (z >=
-      ** (1 - 1/64)(1 - 4U) where 64 dk <= k, direct_bound's first check) */
+      ** inside); |u| <= sqrt(|Y|) (G(U) >= U^2), with |Y| from above
+      ** before the log: |w| <= z (the log's argument) where z >= 1, and
+      ** |w| < 0.02 where z < 1 (z >= (1 - 1/64)(1 - 4U) where 64 dk <= k,
+      ** direct_bound's first check); t B and |d| each within 1.01 of
+      ** min(B, umax - u0), so dd below 9.3 of it */
       double slack = 0x1p-40 * (fabs(u0) + B);
       double umax = arclen_max(fabs(u0), fabs(u0 + B)) + slack;
       double umin = arclen_max(arclen_max(u0, -(u0 + B) - slack), 0);
