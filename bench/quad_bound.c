@@ -8,7 +8,7 @@
 ** middle (nearly straight), and far from the origin (times 1e5, plus 3e7);
 ** 19 distances j L/20 each, at the tol given.  Prints the points, the
 ** distance, t and the bound (user units) of every answer the table gave
-** without a length.  Run: make -C bench quad-bound.
+** without a length.  Run: sh tools/check-quad-bound.sh (CI runs it).
 **
 **   quad_bound N RTOL
 */

@@ -8,7 +8,7 @@ u sqrt(u^2 + k^2) + k^2 asinh(u/k), on the legs as the C core has them (the
 differences of the points rounded to doubles: the curve it measures).
 Prints the count and the ratios miss / bound (median, 99th percentile,
 largest); exits 1 where a ratio exceeds 1 or no answer was read.
-Run: make -C bench quad-bound.
+Run: sh tools/check-quad-bound.sh (CI runs it).
 """
 import sys
 

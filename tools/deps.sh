@@ -10,8 +10,9 @@
 #           (make rock: git archive, the rockspec put back; make ctan),
 #           pgf from texlive-pictures (the TikZ library), poppler-utils to
 #           render the TeX examples, python3 for the check of the core's
-#           layers, locales with de_DE.UTF-8 and tr_TR.UTF-8 made by
-#           localedef for spec/locale_spec.lua and spec/ctype_spec.lua
+#           layers, python3-mpmath for tools/check-quad-bound.sh, locales
+#           with de_DE.UTF-8 and tr_TR.UTF-8 made by localedef for
+#           spec/locale_spec.lua and spec/ctype_spec.lua
 #           (base has libexpat1-dev for the SVG document reader,
 #           arclen.svgdoc, zlib1g-dev for its gzip input (.svgz), and
 #           lua-dkjson for --json)
@@ -82,7 +83,7 @@ other_system() {
   return 0
 }
 BASE="gcc make libc6-dev lua5.4 liblua5.4-dev lua-busted libexpat1-dev zlib1g-dev lua-dkjson"
-MATRIX="lua5.1 liblua5.1-0-dev lua5.2 liblua5.2-dev lua5.3 liblua5.3-dev luajit libluajit-5.1-dev texlive-binaries texlive-base texlive-luatex texlive-latex-base texlive-metapost luarocks poppler-utils python3 locales git zip texlive-pictures"
+MATRIX="lua5.1 liblua5.1-0-dev lua5.2 liblua5.2-dev lua5.3 liblua5.3-dev luajit libluajit-5.1-dev texlive-binaries texlive-base texlive-luatex texlive-latex-base texlive-metapost luarocks poppler-utils python3 python3-mpmath locales git zip texlive-pictures"
 REFS="python3 python3-mpmath python3-svgelements python3-tinycss2 python3-cssselect2 gir1.2-rsvg-2.0 python3-gi python3-gi-cairo python3-cairo python3-lxml texlive-binaries texlive-base python3-fonttools fonts-urw-base35"
 case "${1:-base}" in
   base) WANT="$BASE" ;;
