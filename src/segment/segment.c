@@ -388,14 +388,26 @@ static double conic_guess(const seg_ctx *c, double total, double s) {
 /* invert.c's context for a conic: seg,
 ** or its copy scaled by 2^-e into `scaled` where its points lie far from 1
 ** (subnormal lengths come in steps of 2^-1074; exact but for parts below
-** 2^-1022 of the largest), and its legs.  Returns e. */
+** 2^-1022 of the largest), and its legs.  A conic whose legs are below
+** 2^-500 while its points are not (far smaller than its distance from the
+** origin) is moved to P0 = 0 first, so that its legs are not subnormal:
+** each difference from P0 is exact (Sterbenz) or one rounding of a tiny
+** one, as the legs themselves.  Returns e. */
 static int setup_ctx(int kind, int dim, const double *seg, double *scaled,
                      seg_ctx *c) {
-  double mx = 0;
+  double mx = 0, ml = 0;
   int i, e = 0, n = arclen_segment_count(kind, dim) - (kind == ARCLEN_SEG_CONIC);
   c->kind = kind; c->dim = dim; c->seg = seg;
-  for (i = 0; i < n; i++) mx = fmax(mx, fabs(seg[i]));
-  if (mx > 0 && (mx < 0x1p-500 || mx > 0x1p500)) {
+  for (i = 0; i < n; i++) {
+    mx = fmax(mx, fabs(seg[i]));
+    ml = fmax(ml, fabs(seg[i] - seg[i % dim]));       /* |P_j - P0| */
+  }
+  if (ml > 0 && ml < 0x1p-500 && mx >= 0x1p-500) {
+    frexp(ml, &e);
+    for (i = 0; i < n; i++) scaled[i] = ldexp(seg[i] - seg[i % dim], -e);
+    if (kind == ARCLEN_SEG_CONIC) scaled[n] = seg[n];
+    c->seg = scaled;
+  } else if (mx > 0 && (mx < 0x1p-500 || mx > 0x1p500)) {
     frexp(mx, &e);
     for (i = 0; i < n; i++) scaled[i] = ldexp(seg[i], -e);
     if (kind == ARCLEN_SEG_CONIC) scaled[n] = seg[n];
