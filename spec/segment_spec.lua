@@ -431,6 +431,30 @@ describe("segments of four kinds (issue 31)", function()
     end)
   end)
 
+  describe("a conic far smaller than its distance from the origin", function()
+    -- found by fuzz/fuzz_segment: a 3D conic of legs 1.5e-323 at z =
+    -- 6.7e-16 (w = 1e8) was searched on its legs as they were (its points,
+    -- not its legs, set the scale), subnormal, and a time went back (2.4e-9
+    -- after 3.0e-9).  Moved to P0 = 0 and scaled, a conic of subnormal legs
+    -- at z = 1 is its copy at the origin 2^1070 times larger, to the bit:
+    -- its times at the (subnormal) distances s are the copy's at s 2^1070
+    for _, w in ipairs({0.7, 1e8}) do
+      local seg = {0, 0, 1, 2^-1072, 2^-1072, 1, 2^-1071, 0, 1, w}
+      local copy = {0, 0, 0, 0.25, 0.25, 0, 0.5, 0, 0, w}
+      it("w = " .. w .. ": its times are its copy's, ascending", function()
+        local Lc, prev = arclen.segment_length("conic", copy), 0
+        for k = 1, 7 do
+          local s = Lc * k / 8 * 2^-1070          -- subnormal: rounded
+          local t = arclen.segment_time("conic", seg, s)
+          local tc = arclen.segment_time("conic", copy, s * 2^535 * 2^535)
+          assert(t == tc, k .. ": " .. t .. " against the copy's " .. tc)
+          assert(t >= prev, k .. ": " .. t .. " after " .. prev)
+          prev = t
+        end
+      end)
+    end
+  end)
+
   describe("the walk's sweep over one segment's distances", function()
     -- times.c hands a run of sorted distances to arclen_segment_times_of
     -- with the path's length of the segment; each search starts at the

@@ -645,25 +645,43 @@ end
 -- The segment c scaled by a power of two (exact: the lengths scale with
 -- it) where the largest of its first n numbers (its coordinates) lies
 -- outside (lo, hi), the rest (a conic's weight) kept; returns the segment
--- to measure and the factor its lengths carry.  Ordinary sizes are left as
--- they are.
+-- to measure and the factor its lengths carry, as two doubles whose
+-- product it is (up to 2^1074: a subnormal segment).  Ordinary sizes are
+-- left as they are.
 local function pow2_scaled(c, n, lo, hi)
   local m = 0
   for j = 1, n do
     local v = abs(c[j])
     if v > m then m = v end
   end
-  if m == 0 or (m > lo and m < hi) then return c, 1 end
-  local f = 2 ^ -floor(log(m) / LN2)
+  if m == 0 or (m > lo and m < hi) then return c, 1, 1 end
+  local e = -floor(log(m) / LN2)
+  local h = floor(e / 2)
+  local f, f2 = 2 ^ h, 2 ^ (e - h)
   local out = {}
-  for j = 1, #c do out[j] = j <= n and c[j] * f or c[j] end
-  return out, f
+  for j = 1, #c do out[j] = j <= n and c[j] * f * f2 or c[j] end
+  return out, f, f2
 end
 
 -- A conic far from 1 in size, so that the squares of its speed neither
--- underflow nor overflow.
+-- underflow nor overflow.  One far smaller than its distance from the
+-- origin (its legs below 2^-200, its points not) is moved to P0 = 0
+-- first, so that its legs are not subnormal: each difference from P0 is
+-- exact (Sterbenz) or one rounding of a tiny one, as the legs themselves.
 local function conic_scaled(c, d)
-  return pow2_scaled(c, 3 * d, 2 ^ -200, 2 ^ 200)
+  local n, m, ml = 3 * d, 0, 0
+  for j = 1, n do
+    local v, l = abs(c[j]), abs(c[j] - c[(j - 1) % d + 1])
+    if v > m then m = v end
+    if l > ml then ml = l end
+  end
+  if ml > 0 and ml < 2 ^ -200 and m >= 2 ^ -200 then
+    local moved = {}
+    for j = 1, n do moved[j] = c[j] - c[(j - 1) % d + 1] end
+    moved[n + 1] = c[n + 1]
+    c = moved
+  end
+  return pow2_scaled(c, n, 2 ^ -200, 2 ^ 200)
 end
 
 -- A line or quadratic whose legs may overflow (points from 2^1000; the C
@@ -734,31 +752,31 @@ end
 -- The length; the second result counts the speed evaluations.
 function M.length(kind, c, d, rtol)
   if rtol > CONIC_RTOL then rtol = CONIC_RTOL end
-  local f
-  if kind == "line" or kind == "quad" then c, f = big_scaled(kind, c, d) end
-  if kind == "line" then return line_length(c, d) / f, 1 end
-  if kind == "quad" then return quad_length(quad_setup(c, d), 0, 1) / f, 1 end
-  c, f = conic_scaled(c, d)
+  local f, f2
+  if kind == "line" or kind == "quad" then c, f, f2 = big_scaled(kind, c, d) end
+  if kind == "line" then return line_length(c, d) / f / f2, 1 end
+  if kind == "quad" then return quad_length(quad_setup(c, d), 0, 1) / f / f2, 1 end
+  c, f, f2 = conic_scaled(c, d)
   local k = conic_setup(c, d)
-  if k.quad then return quad_length(k.quad, 0, 1) / f, 1 end
+  if k.quad then return quad_length(k.quad, 0, 1) / f / f2, 1 end
   local v, e = conic_length_th(k, -k.al, k.al, rtol)
-  return v / f, e
+  return v / f / f2, e
 end
 
 -- The length from t0 to t1 (t0 < t1); the second result counts the
 -- evaluations.
 function M.length_range(kind, c, d, rtol, t0, t1)
   if rtol > CONIC_RTOL then rtol = CONIC_RTOL end
-  local f
-  if kind == "line" or kind == "quad" then c, f = big_scaled(kind, c, d) end
-  if kind == "line" then return (t1 - t0) * line_length(c, d) / f, 1 end
-  if kind == "quad" then return quad_length(quad_setup(c, d), t0, t1) / f, 1 end
-  c, f = conic_scaled(c, d)
-  if c[3 * d + 1] == 1 then return quad_length(quad_setup(c, d), t0, t1) / f, 1 end
+  local f, f2
+  if kind == "line" or kind == "quad" then c, f, f2 = big_scaled(kind, c, d) end
+  if kind == "line" then return (t1 - t0) * line_length(c, d) / f / f2, 1 end
+  if kind == "quad" then return quad_length(quad_setup(c, d), t0, t1) / f / f2, 1 end
+  c, f, f2 = conic_scaled(c, d)
+  if c[3 * d + 1] == 1 then return quad_length(quad_setup(c, d), t0, t1) / f / f2, 1 end
   local k = conic_setup(piece_legs(c, d, t0, t1), d)
-  if k.quad then return quad_length(k.quad, 0, 1) / f, 1 end
+  if k.quad then return quad_length(k.quad, 0, 1) / f / f2, 1 end
   local v, e = conic_length_th(k, -k.al, k.al, rtol)
-  return v / f, e
+  return v / f / f2, e
 end
 
 -- The times of the ascending distances s[1..] (each in [0, L], L the
@@ -775,13 +793,13 @@ function M.times(kind, c, d, L, s, rtol)
   end
   local len, speed, lo0, hi0, to_t
   do                                      -- in the scaled segment's units
-    local f
-    if kind == "conic" then c, f = conic_scaled(c, d) else c, f = big_scaled(kind, c, d) end
-    if f ~= 1 then
+    local f, f2
+    if kind == "conic" then c, f, f2 = conic_scaled(c, d) else c, f, f2 = big_scaled(kind, c, d) end
+    if f ~= 1 or f2 ~= 1 then
       local scaled = {}
-      for q = 1, #s do scaled[q] = s[q] * f end
+      for q = 1, #s do scaled[q] = s[q] * f * f2 end
       -- a length beyond the doubles (L = inf) is finite there
-      s, L = scaled, L < huge and L * f or M.length(kind, c, d, rtol)
+      s, L = scaled, L < huge and L * f * f2 or M.length(kind, c, d, rtol)
     end
   end
   local goal_tol = 0.5 * rtol * L
