@@ -396,20 +396,18 @@ static double conic_guess(const seg_ctx *c, double total, double s) {
 static int setup_ctx(int kind, int dim, const double *seg, double *scaled,
                      seg_ctx *c) {
   double mx = 0, ml = 0;
-  int i, e = 0, n = arclen_segment_count(kind, dim) - (kind == ARCLEN_SEG_CONIC);
+  int i, e = 0, moved;
+  int n = arclen_segment_count(kind, dim) - (kind == ARCLEN_SEG_CONIC);
   c->kind = kind; c->dim = dim; c->seg = seg;
   for (i = 0; i < n; i++) {
     mx = fmax(mx, fabs(seg[i]));
     ml = fmax(ml, fabs(seg[i] - seg[i % dim]));       /* |P_j - P0| */
   }
-  if (ml > 0 && ml < 0x1p-500 && mx >= 0x1p-500) {
-    frexp(ml, &e);
-    for (i = 0; i < n; i++) scaled[i] = ldexp(seg[i] - seg[i % dim], -e);
-    if (kind == ARCLEN_SEG_CONIC) scaled[n] = seg[n];
-    c->seg = scaled;
-  } else if (mx > 0 && (mx < 0x1p-500 || mx > 0x1p500)) {
-    frexp(mx, &e);
-    for (i = 0; i < n; i++) scaled[i] = ldexp(seg[i], -e);
+  moved = ml > 0 && ml < 0x1p-500 && mx >= 0x1p-500;
+  if (moved || (mx > 0 && (mx < 0x1p-500 || mx > 0x1p500))) {
+    frexp(moved ? ml : mx, &e);
+    for (i = 0; i < n; i++)
+      scaled[i] = ldexp(moved ? seg[i] - seg[i % dim] : seg[i], -e);
     if (kind == ARCLEN_SEG_CONIC) scaled[n] = seg[n];
     c->seg = scaled;
   }
